@@ -1,0 +1,51 @@
+// MeshSettings: the case's system/meshDict — which mesh file the case uses, the names of its
+// numeric labels, and which patches are fractures. Validated completely (unknown keys are
+// errors) before any work is done.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "friction/core/InputError.hpp"
+#include "friction/fracture/SplitMesh.hpp"
+#include "friction/mesh/Mesh.hpp"
+
+namespace friction {
+
+struct MeshSettings {
+  std::string caseDir;
+  std::string dictPath;  ///< caseDir/system/meshDict, as used in messages
+  std::string meshFile;  ///< path of the mesh file (caseDir joined with the 'mesh' entry)
+  SourceLocation meshWhere;
+
+  struct PatchName {
+    std::string name;
+    int label = 0;
+    SourceLocation where;
+  };
+  /// Entries of the optional 'patches' block: name -> numeric label.
+  std::vector<PatchName> patches;
+
+  struct FractureName {
+    std::string name;
+    SourceLocation where;
+  };
+  /// Entries of 'fractures': patch names whose nodes are split.
+  std::vector<FractureName> fractures;
+
+  /// Read and validate caseDir/system/meshDict. Throws InputError (file:line:key) on any
+  /// problem, including a mesh file that does not exist.
+  static MeshSettings read(const std::string& caseDir);
+
+  /// Give every label that occurs in the mesh a name: the 'patches' block first, then the
+  /// names the mesh file carries (gmsh physical names), else "patch<label>". Errors: a
+  /// 'patches' label absent from the mesh, one label with two names, one name for two labels.
+  void nameLabels(Mesh& mesh) const;
+
+  /// The fractures as labels of the (named) mesh. Error if a name is not a patch of the mesh
+  /// (the message lists the patches and suggests the nearest).
+  std::vector<FractureSpec> fractureSpecs(const Mesh& mesh) const;
+};
+
+}  // namespace friction

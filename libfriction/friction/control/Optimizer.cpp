@@ -1,0 +1,154 @@
+// Optimizers of the control problem (METHOD.md §5) and their selection table.
+#include "friction/control/Optimizer.hpp"
+
+#include <cmath>
+
+#include "friction/core/Suggest.hpp"
+#include "friction/dict/Dictionary.hpp"
+
+namespace friction {
+
+const char* toString(OptimizerStatus s) {
+  switch (s) {
+    case OptimizerStatus::converged: return "converged";
+    case OptimizerStatus::maxIterations: return "maxIterations";
+    case OptimizerStatus::diverged: return "diverged";
+    case OptimizerStatus::stalled: return "stalled";
+  }
+  return "?";
+}
+
+namespace {
+
+struct OptimizerEntry {
+  const char* name;
+  std::unique_ptr<Optimizer> (*make)(const Dictionary&);
+};
+
+// The one table of optimizers: adding one is one line here.
+const OptimizerEntry optimizerTable[] = {
+    {"steepestDescent",
+     [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
+       // The paper's reference step; units m/Pa, so it depends on the case's scaling.
+       return std::make_unique<SteepestDescent>(d.getScalarOr("alpha", 2e-4, Bounds::positive()));
+     }},
+    {"armijo",
+     [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
+       return std::make_unique<Armijo>(d.getScalarOr("alpha", 1.0, Bounds::positive()),
+                                       d.getScalarOr("armijoC", 1e-4, {0, 1, true, true}),
+                                       static_cast<int>(d.getIntOr("maxBacktracks", 60, {1, 200})));
+     }},
+};
+
+}  // namespace
+
+std::vector<std::string> Optimizer::names() {
+  std::vector<std::string> n;
+  for (const auto& e : optimizerTable) n.push_back(e.name);
+  return n;
+}
+
+std::unique_ptr<Optimizer> Optimizer::New(const Dictionary& dict) {
+  const std::string type = dict.getChoice("type", names());
+  std::unique_ptr<Optimizer> opt;
+  for (const auto& e : optimizerTable)
+    if (type == e.name) opt = e.make(dict);
+  StopRule s;
+  s.on = dict.getChoiceOr("stopOn", {"residual", "step"}, "residual") == "step" ? StopRule::On::step
+                                                                               : StopRule::On::residual;
+  s.tolerance = dict.getScalarOr("tolerance", s.tolerance, Bounds::positive());
+  s.maxIterations = static_cast<int>(dict.getIntOr("maxIterations", s.maxIterations, {0, 1e9}));
+  opt->setStopRule(s);
+  return opt;
+}
+
+IterationRecord Optimizer::record(ControlProblem& p, const ControlState& s, int k,
+                                  double stepNorm) const {
+  const double tauNorm = p.norm(s.tau.cwiseProduct(p.freeMask()));
+  const double dNorm = p.norm(s.D);
+  return {k, s.J, tauNorm > 0 ? dNorm / tauNorm : dNorm, stepNorm};
+}
+
+bool Optimizer::converged(ControlProblem& p, const ControlState& s, double stepNorm) const {
+  const double dNorm = p.norm(s.D);
+  if (dNorm == 0) return true;  // the friction law holds exactly (e.g. zero load)
+  if (stop_.on == StopRule::On::step) return stepNorm >= 0 && stepNorm <= stop_.tolerance;
+  return dNorm <= stop_.tolerance * p.norm(s.tau.cwiseProduct(p.freeMask()));
+}
+
+OptimizerReport SteepestDescent::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
+  OptimizerReport r;
+  ControlState s = p.evaluate(beta);
+  r.history.push_back(record(p, s, 0, -1));
+  const double J0 = s.J;
+  for (int k = 1; k <= stop_.maxIterations; ++k) {
+    if (converged(p, s, k == 1 ? -1 : r.history.back().stepNorm)) {
+      r.status = OptimizerStatus::converged;
+      break;
+    }
+    const Eigen::VectorXd g = p.gradient(s);
+    const Eigen::VectorXd next = s.beta - alpha_ * g;
+    const double step = p.norm(next - s.beta);
+    s = p.evaluate(next);
+    r.iterations = k;
+    r.history.push_back(record(p, s, k, step));
+    // A fixed step that makes J grow a thousandfold is not going to come back.
+    if (!std::isfinite(s.J) || s.J > 1e3 * std::max(J0, 1e-300)) {
+      r.status = OptimizerStatus::diverged;
+      break;
+    }
+  }
+  if (r.status != OptimizerStatus::diverged && converged(p, s, r.history.back().stepNorm))
+    r.status = OptimizerStatus::converged;
+  beta = s.beta;
+  return r;
+}
+
+OptimizerReport Armijo::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
+  OptimizerReport r;
+  ControlState s = p.evaluate(beta);
+  r.history.push_back(record(p, s, 0, -1));
+  double alpha = alpha0_;
+  double lastStep = -1;
+  for (int k = 1; k <= stop_.maxIterations; ++k) {
+    if (converged(p, s, lastStep)) {
+      r.status = OptimizerStatus::converged;
+      break;
+    }
+    const Eigen::VectorXd g = p.gradient(s);
+    const double g2 = p.dot(g, g);
+    if (g2 == 0) {  // stationary but not converged: a kink
+      r.status = OptimizerStatus::stalled;
+      beta = s.beta;
+      return r;
+    }
+    bool accepted = false;
+    for (int b = 0; b < maxBacktracks_; ++b) {
+      const Eigen::VectorXd next = s.beta - alpha * g;
+      ControlState trial = p.evaluate(next);
+      if (std::isfinite(trial.J) && trial.J <= s.J - c_ * alpha * g2) {
+        lastStep = p.norm(trial.beta - s.beta);
+        s = std::move(trial);
+        accepted = true;
+        break;
+      }
+      alpha *= 0.5;
+    }
+    r.iterations = k;
+    if (!accepted) {
+      // No decrease along −g down to tiny steps: J is at a kink or at round-off level.
+      r.status = OptimizerStatus::stalled;
+      r.history.push_back(record(p, s, k, 0));
+      beta = s.beta;
+      if (converged(p, s, 0)) r.status = OptimizerStatus::converged;
+      return r;
+    }
+    r.history.push_back(record(p, s, k, lastStep));
+    alpha *= 2;  // let the step grow back after a backtrack
+  }
+  if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
+  beta = s.beta;
+  return r;
+}
+
+}  // namespace friction

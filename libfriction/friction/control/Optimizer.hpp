@@ -1,0 +1,97 @@
+// Optimizer: minimises J(β) of one time step (METHOD.md §5). Run-time selectable by name
+// from one table in Optimizer.cpp (STYLE.md "Run-time selection"); a later issue adds
+// barzilaiBorwein, lbfgs and semismoothNewton to the same table.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "friction/control/ControlProblem.hpp"
+
+namespace friction {
+
+class Dictionary;
+
+/// How a step's iteration ended (a value the caller acts on, never a silent pass).
+enum class OptimizerStatus {
+  converged,      ///< the stop rule holds
+  maxIterations,  ///< the iteration limit came first
+  diverged,       ///< J grew without bound (fixed step too large)
+  stalled         ///< the line search found no decrease (J at a kink or at round-off)
+};
+const char* toString(OptimizerStatus s);
+
+/// One line of the convergence history.
+struct IterationRecord {
+  int iteration = 0;
+  double J = 0;
+  double relResidual = 0;  ///< ‖D‖_M / ‖τ‖_M
+  double stepNorm = 0;     ///< ‖β^{k+1} − β^k‖_M
+};
+
+struct OptimizerReport {
+  OptimizerStatus status = OptimizerStatus::maxIterations;
+  int iterations = 0;
+  std::vector<IterationRecord> history;
+};
+
+/// Settings every optimizer shares (keys of the case's 'solver' dictionary).
+struct StopRule {
+  enum class On { residual, step };
+  On on = On::residual;    ///< residual: ‖D‖_M ≤ tol ‖τ‖_M; step: ‖Δβ‖_M ≤ tol (paper)
+  double tolerance = 1e-6;  ///< relative (residual) or in m·√m (step, the paper's L²(Γ) norm)
+  int maxIterations = 2000;
+};
+
+class Optimizer {
+ public:
+  virtual ~Optimizer() = default;
+
+  /// Names in the selection table, for messages, -listModels and the README.
+  static std::vector<std::string> names();
+  /// Reads 'type' (and the type's own keys plus the StopRule keys) from dict.
+  static std::unique_ptr<Optimizer> New(const Dictionary& dict);
+
+  /// Minimise from beta (in: start, out: result).
+  virtual OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) = 0;
+  virtual std::string name() const = 0;
+
+  const StopRule& stopRule() const { return stop_; }
+  void setStopRule(const StopRule& s) { stop_ = s; }
+
+ protected:
+  /// True when the stop rule holds at state s (stepNorm: of the step that led to s).
+  bool converged(ControlProblem& p, const ControlState& s, double stepNorm) const;
+  IterationRecord record(ControlProblem& p, const ControlState& s, int k, double stepNorm) const;
+
+  StopRule stop_;
+};
+
+/// The paper's (54): β ← β − α g with a fixed step α [m/Pa].
+class SteepestDescent : public Optimizer {
+ public:
+  explicit SteepestDescent(double alpha) : alpha_(alpha) {}
+  OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
+  std::string name() const override { return "steepestDescent"; }
+
+ private:
+  double alpha_;
+};
+
+/// Steepest descent with Armijo backtracking (paper §4.2): accept α when
+/// J(β − αg) ≤ J(β) − c α ‖g‖²_M, else halve α; the next step starts from 2α.
+class Armijo : public Optimizer {
+ public:
+  Armijo(double alpha0, double c, int maxBacktracks)
+      : alpha0_(alpha0), c_(c), maxBacktracks_(maxBacktracks) {}
+  OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
+  std::string name() const override { return "armijo"; }
+
+ private:
+  double alpha0_, c_;
+  int maxBacktracks_;
+};
+
+}  // namespace friction

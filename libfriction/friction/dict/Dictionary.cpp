@@ -1,0 +1,1000 @@
+// Dictionary: the OpenFOAM-syntax reader (one pass over each file, see Tokenizer.hpp), the
+// entry store with file:line and read flags, typed and range-checked access, and the check for
+// entries the program never read. Grammar and semantics: Dictionary.hpp.
+#include "friction/dict/Dictionary.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "friction/dict/Tokenizer.hpp"
+
+namespace friction {
+
+namespace fs = std::filesystem;
+
+namespace detail {
+
+/// One entry: a key with either value items or a sub-dictionary.
+struct DictEntry {
+  std::string key;
+  SourceLocation where;
+  std::vector<Value> items;
+  std::unique_ptr<Dictionary> dict;  // set for dictionary entries
+  mutable bool read = false;
+
+  DictEntry() = default;
+  DictEntry(DictEntry&&) = default;
+  DictEntry& operator=(DictEntry&&) = default;
+  DictEntry(const DictEntry& o)
+      : key(o.key),
+        where(o.where),
+        items(o.items),
+        dict(o.dict ? std::make_unique<Dictionary>(*o.dict) : nullptr),
+        read(o.read) {}
+  DictEntry& operator=(const DictEntry& o) {
+    DictEntry copy(o);
+    return *this = std::move(copy);
+  }
+};
+
+}  // namespace detail
+
+using detail::DictEntry;
+using detail::Token;
+using detail::Tokenizer;
+
+struct Dictionary::Impl {
+  std::string scope;
+  SourceLocation where;
+  std::vector<DictEntry> entries;  // file order
+  std::unordered_map<std::string, std::size_t> index;
+  /// Keys the program asked about: the valid keys offered in "did you mean" suggestions.
+  mutable std::set<std::string> asked;
+
+  static Impl& of(Dictionary& d) { return *d.impl_; }
+  static const Impl& of(const Dictionary& d) { return *d.impl_; }
+
+  DictEntry* find(const std::string& key) {
+    const auto it = index.find(key);
+    return it == index.end() ? nullptr : &entries[it->second];
+  }
+  const DictEntry* find(const std::string& key) const { return const_cast<Impl*>(this)->find(key); }
+  /// find() that records key as one the program asks for.
+  const DictEntry* ask(const std::string& key) const {
+    asked.insert(key);
+    return find(key);
+  }
+
+  /// Adds an entry with OpenFOAM's rules for a repeated key: a dictionary repeated as a
+  /// dictionary is merged into the first, anything else replaces the earlier entry in its
+  /// place (the key keeps its first position, value and location come from the last).
+  void add(DictEntry&& e) {
+    DictEntry* old = find(e.key);
+    if (!old) {
+      index.emplace(e.key, entries.size());
+      entries.push_back(std::move(e));
+    } else if (old->dict && e.dict) {
+      Impl& into = of(*old->dict);
+      for (DictEntry& sub : of(*e.dict).entries) into.add(std::move(sub));
+    } else {
+      *old = std::move(e);
+    }
+  }
+
+  /// Gives this dictionary (and its sub-dictionaries) the scope of a new place, after a copy.
+  void rescope(const std::string& newScope) {
+    scope = newScope;
+    for (DictEntry& e : entries)
+      if (e.dict) of(*e.dict).rescope(newScope + "/" + e.key);
+  }
+
+  void setRead(bool read) const {
+    for (const DictEntry& e : entries) {
+      e.read = read;
+      if (e.dict) of(*e.dict).setRead(read);
+    }
+    if (!read) asked.clear();
+  }
+};
+
+namespace {
+
+using Kind = Value::Kind;
+
+// ---------------------------------------------------------------------------------------
+// Messages
+// ---------------------------------------------------------------------------------------
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+/// The candidate nearest to word in edit distance (first one on ties), or "" if none.
+template <typename Range>
+std::string nearest(const std::string& word, const Range& candidates) {
+  std::string best;
+  std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
+  for (const std::string& c : candidates) {
+    const std::size_t d = editDistance(word, c);
+    if (d < bestDistance) best = c, bestDistance = d;
+  }
+  return best;
+}
+
+template <typename Range>
+std::string joined(const Range& words) {
+  std::string s;
+  for (const std::string& w : words) s += (s.empty() ? "" : ", ") + w;
+  return s;
+}
+
+/// A value for an error message, cut short: a 10^6-item list must not become the message.
+std::string shown(const Value& v) {
+  std::string s = v.kind == Kind::Word ? "'" + v.text + "'" : v.str();
+  constexpr std::size_t kMax = 60;
+  if (s.size() > kMax) s = s.substr(0, kMax) + " ...";
+  return s;
+}
+
+/// What an entry holds, for "got ..." in messages. Items spread over several lines usually
+/// mean a missing ';', so the message says where one probably belongs.
+std::string shown(const std::vector<Value>& items) {
+  if (items.empty()) return "nothing";
+  if (items.size() == 1) return shown(items[0]);
+  std::string s;
+  for (const Value& v : items) {
+    if (!s.empty()) s += ' ';
+    s += v.str();
+    if (s.size() > 60) {
+      s = s.substr(0, 60) + " ...";
+      break;
+    }
+  }
+  s = "'" + s + "'";
+  for (std::size_t i = 1; i < items.size(); ++i)
+    if (items[i].line > items[i - 1].line && items[i - 1].line > 0)
+      return s + " (missing ';' at the end of line " + std::to_string(items[i - 1].line) + "?)";
+  return s;
+}
+
+std::string withBounds(const std::string& what, const Bounds& b) {
+  const std::string range = b.str();
+  return range.empty() ? what : what + " " + range;
+}
+
+[[noreturn]] void failEntry(const DictEntry& e, const std::string& expected,
+                            const std::string& got) {
+  throw InputError(e.where, "key '" + e.key + "': expected " + expected + ", got " + got);
+}
+
+/// Error about item i of a list entry, located at the item's own line.
+[[noreturn]] void failItem(const DictEntry& e, std::size_t i, const Value& item,
+                           const std::string& expected) {
+  throw InputError(SourceLocation{e.where.file, item.line > 0 ? item.line : e.where.line},
+                   "key '" + e.key + "': item " + std::to_string(i) + ": expected " + expected +
+                       ", got " + shown(item));
+}
+
+// ---------------------------------------------------------------------------------------
+// Access helpers
+// ---------------------------------------------------------------------------------------
+
+/// The entry for key, marked read; InputError if missing or a dictionary.
+const DictEntry& requireValue(const Dictionary::Impl& d, const std::string& key,
+                              const std::string& expected) {
+  const DictEntry* e = d.ask(key);
+  if (!e) {
+    std::string msg = "missing key '" + key + "' in " + d.scope + " (expected " + expected + ")";
+    // A near miss among the keys present is most likely a misspelling of this one.
+    std::vector<std::string> present;
+    for (const DictEntry& p : d.entries)
+      if (!p.read && editDistance(key, p.key) <= std::max<std::size_t>(1, key.size() / 3))
+        present.push_back(p.key);
+    if (!present.empty()) {
+      const DictEntry& p = *d.find(nearest(key, present));
+      msg += "; is '" + p.key + "' at " + p.where.str() + " a misspelling of it?";
+    }
+    throw InputError(d.where, msg);
+  }
+  e->read = true;
+  if (e->dict) failEntry(*e, expected, "a dictionary");
+  return *e;
+}
+
+/// Items without a leading "uniform", "nonuniform" or "List<type>" word, which OpenFOAM
+/// writes before fields and sized lists.
+std::pair<const Value*, const Value*> stripped(const std::vector<Value>& items) {
+  const Value* b = items.data();
+  const Value* e = b + items.size();
+  while (e - b > 1 && b->isWord() &&
+         (b->text == "uniform" || b->text == "nonuniform" || b->text.rfind("List<", 0) == 0))
+    ++b;
+  return {b, e};
+}
+
+/// The one list an entry holds (after a "uniform"/"List<...>" prefix).
+const Value& singleList(const DictEntry& e, const std::string& expected) {
+  const auto [b, end] = stripped(e.items);
+  if (end - b != 1 || !b->isList()) failEntry(e, expected, shown(e.items));
+  return *b;
+}
+
+bool toLong(const Value& v, long& out) {
+  if (!v.isNumber()) return false;
+  // Plain integers convert exactly; a double would round beyond 2^53.
+  const std::string& t = v.text;
+  if (!t.empty() && t.find_first_of(".eE") == std::string::npos) {
+    const char* first = t[0] == '+' ? t.data() + 1 : t.data();
+    const auto r = std::from_chars(first, t.data() + t.size(), out);
+    return r.ec == std::errc() && r.ptr == t.data() + t.size();
+  }
+  // 2.0 or 1e3: accepted when the value is a whole number a double holds exactly.
+  if (std::floor(v.number) != v.number || std::fabs(v.number) > 9007199254740992.0) return false;
+  out = static_cast<long>(v.number);
+  return true;
+}
+
+double scalarOf(const DictEntry& e, const Bounds& bounds) {
+  const std::string expected = withBounds("a number", bounds);
+  const auto [b, end] = stripped(e.items);
+  if (end - b != 1 || !b->isNumber()) failEntry(e, expected, shown(e.items));
+  if (!bounds.contains(b->number)) failEntry(e, expected, b->str());
+  return b->number;
+}
+
+long intOf(const DictEntry& e, const Bounds& bounds) {
+  const std::string expected = withBounds("an integer", bounds);
+  long x = 0;
+  if (e.items.size() != 1 || !toLong(e.items[0], x)) failEntry(e, expected, shown(e.items));
+  if (!bounds.contains(static_cast<double>(x))) failEntry(e, expected, e.items[0].str());
+  return x;
+}
+
+bool boolOf(const DictEntry& e) {
+  static const char* const kTrue[] = {"true", "yes", "on"};
+  static const char* const kFalse[] = {"false", "no", "off"};
+  if (e.items.size() == 1 && e.items[0].isWord()) {
+    for (const char* w : kTrue)
+      if (e.items[0].text == w) return true;
+    for (const char* w : kFalse)
+      if (e.items[0].text == w) return false;
+  }
+  failEntry(e, "true/false, yes/no or on/off", shown(e.items));
+}
+
+std::string wordOf(const DictEntry& e, const std::string& expected) {
+  if (e.items.size() != 1 || !(e.items[0].isWord() || e.items[0].isString()))
+    failEntry(e, expected, shown(e.items));
+  return e.items[0].text;
+}
+
+std::string choiceOf(const DictEntry& e, const std::vector<std::string>& choices) {
+  const std::string noun = e.key == "type" ? "type" : "value";
+  const std::string w = wordOf(e, "one of: " + joined(choices));
+  if (std::find(choices.begin(), choices.end(), w) != choices.end()) return w;
+  throw InputError(e.where, "key '" + e.key + "': unknown " + noun + " '" + w +
+                                "'; did you mean '" + nearest(w, choices) + "'? (valid " + noun +
+                                "s are: " + joined(choices) + ")");
+}
+
+/// (x y) as a vector, or nullopt.
+std::optional<Vector2> toVector(const Value& v) {
+  if (!v.isList() || v.items.size() != 2 || !v.items[0].isNumber() || !v.items[1].isNumber())
+    return std::nullopt;
+  return Vector2(v.items[0].number, v.items[1].number);
+}
+
+/// Template for a required get: registers and reads key, converts with f.
+template <typename F>
+auto getRequired(const Dictionary::Impl& d, const std::string& key, const std::string& expected,
+                 F f) {
+  return f(requireValue(d, key, expected));
+}
+
+/// Template for an optional get: def when absent, otherwise as getRequired.
+template <typename T, typename F>
+T getOptional(const Dictionary::Impl& d, const std::string& key, const std::string& expected, T def,
+              F f) {
+  if (!d.ask(key)) return def;
+  return f(requireValue(d, key, expected));
+}
+
+// ---------------------------------------------------------------------------------------
+// Parser
+// ---------------------------------------------------------------------------------------
+
+/// Nesting deeper than this is an error rather than a stack overflow.
+constexpr std::size_t kMaxDepth = 256;
+
+/// The whole file; errors are located at from and start with prefix.
+std::string readWholeFile(const std::string& path, const SourceLocation& from,
+                          const std::string& prefix) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(from, prefix + ": no such file");
+  if (fs::is_directory(path, ec)) throw InputError(from, prefix + ": it is a folder, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(from, prefix + ": " + std::strerror(errno));
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  std::string text(size > 0 ? static_cast<std::size_t>(size) : 0, '\0');
+  if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
+    throw InputError(from, prefix + ": read error");
+  return text;
+}
+
+class Parser {
+ public:
+  using Impl = Dictionary::Impl;
+
+  /// Parses the file at path (as named in messages) into dict. includedFrom is the
+  /// '#include' that asked for it, or null for the file given to Dictionary::read.
+  void parseFile(const std::string& path, Impl& dict, const SourceLocation* includedFrom,
+                 bool optional) {
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(path, ec);
+    const std::string id = ec ? path : canonical.string();
+    const SourceLocation from = includedFrom ? *includedFrom : SourceLocation{path, 0};
+    for (std::size_t i = 0; i < includeIds_.size(); ++i)
+      if (includeIds_[i] == id) {
+        std::string chain;
+        for (std::size_t j = i; j < includeNames_.size(); ++j) chain += includeNames_[j] + " -> ";
+        throw InputError(from, "#include cycle: " + chain + path);
+      }
+    if (optional && !fs::exists(path, ec)) return;
+    const std::string text = readWholeFile(
+        path, from, includedFrom ? "#include: cannot open '" + path + "'" : "cannot open");
+
+    includeIds_.push_back(id);
+    includeNames_.push_back(path);
+    fs::path dir = fs::path(path).parent_path();
+    parseText(text, path, dir.empty() ? "." : dir.string(), dict, includedFrom != nullptr);
+    includeIds_.pop_back();
+    includeNames_.pop_back();
+  }
+
+  /// Parses text (from file, with #include relative to baseDir) into dict.
+  void parseText(std::string_view text, const std::string& file, const std::string& baseDir,
+                 Impl& dict, bool included) {
+    Tokenizer tz(text, file);
+    const bool outermost = scopes_.empty();
+    if (outermost) scopes_.push_back(&dict);
+    const Source src{tz, file, baseDir, included};
+    parseEntries(src, dict, 0, "");
+    if (outermost) scopes_.pop_back();
+  }
+
+ private:
+  struct Source {
+    Tokenizer& tz;
+    const std::string& file;
+    std::string baseDir;
+    bool included;
+  };
+
+  /// Entries up to the '}' that closes the dictionary opened at openLine (0: to the end of
+  /// the file).
+  void parseEntries(const Source& src, Impl& dict, int openLine, const std::string& openKey) {
+    Tokenizer& tz = src.tz;
+    for (;;) {
+      Token t = tz.next();
+      switch (t.type) {
+        case Token::Type::End:
+          if (openLine)
+            tz.fail(openLine, "unterminated dictionary '" + openKey +
+                                  "': expected '}' to close the '{' opened here, got end of file");
+          return;
+        case Token::Type::Punct:
+          if (t.isPunct('}')) {
+            if (!openLine) tz.fail(t.line, "unexpected '}': no dictionary is open here");
+            return;
+          }
+          if (t.isPunct(';')) continue;  // a stray ';' is harmless; OpenFOAM skips it too
+          tz.fail(t.line, "expected a key (a word), got '" + std::string(t.text) + "'");
+        case Token::Type::Directive:
+          directive(src, t, dict);
+          continue;
+        case Token::Type::Variable:
+          mergeVariable(src, t, dict);
+          continue;
+        case Token::Type::Word:
+          entry(src, t, dict, openLine == 0 && src.included);
+          continue;
+        case Token::Type::Number:
+          tz.fail(t.line, "expected a key (a word), got the number " + std::string(t.text));
+        case Token::Type::String:
+          tz.fail(t.line, "expected a key (a word), got the string \"" + t.string + "\"");
+      }
+    }
+  }
+
+  void entry(const Source& src, const Token& keyToken, Impl& dict, bool includedFileLevel) {
+    Tokenizer& tz = src.tz;
+    DictEntry e;
+    e.key = std::string(keyToken.text);
+    e.where = {src.file, keyToken.line};
+    Token t = tz.next();
+    if (t.isPunct('{')) {
+      e.dict = std::make_unique<Dictionary>();
+      Impl& sub = Impl::of(*e.dict);
+      sub.scope = dict.scope + "/" + e.key;
+      sub.where = {src.file, t.line};
+      if (scopes_.size() >= kMaxDepth) tz.fail(t.line, "dictionaries nested too deeply");
+      scopes_.push_back(&sub);
+      parseEntries(src, sub, t.line, e.key);
+      scopes_.pop_back();
+    } else {
+      valueItems(src, std::move(t), e, dict);
+    }
+    // An included file's header describes that file, not the dictionary it is included in.
+    if (includedFileLevel && e.key == "FoamFile") return;
+    dict.add(std::move(e));
+  }
+
+  /// The items of a value entry, from token t up to ';'.
+  void valueItems(const Source& src, Token t, DictEntry& e, const Impl& dict) {
+    Tokenizer& tz = src.tz;
+    for (;; t = tz.next()) {
+      if (t.isPunct(';')) return;
+      if (t.type == Token::Type::Variable) {
+        const DictEntry& ref = lookup(src, t, e.key);
+        if (ref.dict) {
+          // 'key $dict;' makes key a copy of that dictionary.
+          if (!e.items.empty() || !tz.peekPunct(';'))
+            tz.fail(t.line, "key '" + e.key + "': '$" + std::string(t.text) +
+                                "' is a dictionary; it can only stand alone ('" + e.key + " $" +
+                                std::string(t.text) + ";')");
+          e.dict = copyOf(*ref.dict, dict.scope + "/" + e.key);
+          tz.next();
+          return;
+        }
+        appendCopies(ref.items, t.line, e.items);
+        continue;
+      }
+      if (item(src, t, e.items, e.key, 0)) continue;
+      switch (t.type) {
+        case Token::Type::End:
+          tz.fail(e.where.line,
+                  "key '" + e.key + "': expected ';' to end the entry, got end of file");
+        case Token::Type::Directive:
+          tz.fail(t.line, "key '" + e.key + "': unexpected directive '#" + std::string(t.text) +
+                              "' inside a value (directives start an entry)");
+        default:
+          if (t.isPunct(')'))
+            tz.fail(t.line, "key '" + e.key + "': unexpected ')': no list is open");
+          tz.fail(e.where.line, "key '" + e.key + "': expected ';' to end the entry, got '" +
+                                    std::string(t.text) + "' at line " + std::to_string(t.line));
+      }
+    }
+  }
+
+  /// Adds the item starting with token t to out; false if t does not start an item.
+  bool item(const Source& src, Token& t, std::vector<Value>& out, const std::string& key,
+            std::size_t depth) {
+    switch (t.type) {
+      case Token::Type::Number: {
+        if (t.plainInteger && src.tz.sizedListFollows()) {
+          long n = 0;
+          std::from_chars(t.text.data(), t.text.data() + t.text.size(), n);
+          const Token open = src.tz.next();  // the '('
+          Value& v = out.emplace_back();
+          list(src, v, open.line, n, t.line, key, depth + 1);
+          return true;
+        }
+        Value& v = out.emplace_back();
+        v.kind = Kind::Number;
+        v.text.assign(t.text.data(), t.text.size());
+        v.number = t.number;
+        v.line = t.line;
+        return true;
+      }
+      case Token::Type::Word: {
+        Value& v = out.emplace_back();
+        v.text.assign(t.text.data(), t.text.size());
+        v.line = t.line;
+        return true;
+      }
+      case Token::Type::String: {
+        Value& v = out.emplace_back();
+        v.kind = Kind::String;
+        v.text = std::move(t.string);
+        v.line = t.line;
+        return true;
+      }
+      case Token::Type::Variable: {
+        const DictEntry& ref = lookup(src, t, key);
+        if (ref.dict)
+          src.tz.fail(t.line, "key '" + key + "': '$" + std::string(t.text) +
+                                  "' is a dictionary and cannot be part of a list");
+        appendCopies(ref.items, t.line, out);
+        return true;
+      }
+      case Token::Type::Punct:
+        if (!t.isPunct('(')) return false;
+        list(src, out.emplace_back(), t.line, -1, t.line, key, depth + 1);
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  /// A list after its '(' (opened at openLine) up to the matching ')'. size >= 0 is the
+  /// item count given before the '(' at sizeLine.
+  void list(const Source& src, Value& v, int openLine, long size, int sizeLine,
+            const std::string& key, std::size_t depth) {
+    Tokenizer& tz = src.tz;
+    if (depth + scopes_.size() >= kMaxDepth) tz.fail(openLine, "lists nested too deeply");
+    v.kind = Kind::List;
+    v.line = size >= 0 ? sizeLine : openLine;
+    // The size given in the file is a hint: capped by what the rest of the text can hold,
+    // so a wrong size costs an error, not the memory.
+    if (size > 0) v.items.reserve(std::min(static_cast<std::size_t>(size), tz.remaining() / 2 + 1));
+    for (;;) {
+      Token t = tz.next();
+      if (t.isPunct(')')) break;
+      if (item(src, t, v.items, key, depth)) continue;
+      const std::string got =
+          t.type == Token::Type::End
+              ? "end of file"
+              : "'" + std::string(t.text) + "' at line " + std::to_string(t.line);
+      tz.fail(openLine, "key '" + key +
+                            "': unterminated list: expected ')' to close the '(' "
+                            "opened here, got " +
+                            got);
+    }
+    if (size >= 0 && static_cast<std::size_t>(size) != v.items.size())
+      tz.fail(sizeLine, "key '" + key + "': the list is declared with " + std::to_string(size) +
+                            " items but has " + std::to_string(v.items.size()) +
+                            " (the count before '(' must match)");
+  }
+
+  void directive(const Source& src, const Token& t, Impl& dict) {
+    Tokenizer& tz = src.tz;
+    const bool optional = t.text == "includeIfPresent";
+    if (t.text != "include" && !optional)
+      tz.fail(t.line, "unknown directive '#" + std::string(t.text) +
+                          "' (expected #include or #includeIfPresent)");
+    Token name = tz.next();
+    std::string file;
+    if (name.type == Token::Type::String)
+      file = name.string;
+    else if (name.type == Token::Type::Word)
+      file = std::string(name.text);
+    else
+      tz.fail(t.line, "#" + std::string(t.text) + ": expected a file name in quotes after it");
+    if (file.empty()) tz.fail(t.line, "#" + std::string(t.text) + ": empty file name");
+    fs::path path(file);
+    if (path.is_relative()) path = fs::path(src.baseDir) / path;
+    const SourceLocation from{src.file, t.line};
+    if (scopes_.size() + includeIds_.size() >= kMaxDepth)
+      tz.fail(t.line, "#include nested too deeply");
+    parseFile(path.lexically_normal().string(), dict, &from, optional);
+  }
+
+  /// '$name' at the start of an entry: merges dictionary 'name' into dict.
+  void mergeVariable(const Source& src, const Token& t, Impl& dict) {
+    const DictEntry& ref = lookup(src, t, "");
+    if (!ref.dict)
+      src.tz.fail(t.line, "'$" + std::string(t.text) +
+                              "' at the start of an entry merges a dictionary, but '" + ref.key +
+                              "' is a value (write 'key $" + ref.key + ";' to copy a value)");
+    std::unique_ptr<Dictionary> copy = copyOf(*ref.dict, dict.scope);
+    for (DictEntry& e : Impl::of(*copy).entries) dict.add(std::move(e));
+    if (src.tz.peekPunct(';')) src.tz.next();
+  }
+
+  /// The entry '$name' refers to: in the dictionary being read or an enclosing one, defined
+  /// before this point. It counts as read: it served its purpose by being copied.
+  const DictEntry& lookup(const Source& src, const Token& t, const std::string& key) {
+    const std::string name(t.text);
+    const std::string where = key.empty() ? "" : "key '" + key + "': ";
+    if (name.empty()) src.tz.fail(t.line, where + "expected a name after '$'");
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+      if (const DictEntry* e = (*it)->find(name)) {
+        e->read = true;
+        if (e->dict) Impl::of(*e->dict).setRead(true);
+        return *e;
+      }
+    std::vector<std::string> known;
+    for (const Impl* s : scopes_)
+      for (const DictEntry& e : s->entries) known.push_back(e.key);
+    std::string msg = where + "undefined variable '$" + name + "': no entry '" + name +
+                      "' before it in this or an enclosing dictionary";
+    if (!known.empty()) msg += "; did you mean '$" + nearest(name, known) + "'?";
+    src.tz.fail(t.line, msg);
+  }
+
+  /// A copy of d for a new place: unread (the copy's entries are checked where they are
+  /// used) and scoped to its new place.
+  static std::unique_ptr<Dictionary> copyOf(const Dictionary& d, const std::string& scope) {
+    auto copy = std::make_unique<Dictionary>(d);
+    Impl::of(*copy).setRead(false);
+    Impl::of(*copy).rescope(scope);
+    return copy;
+  }
+
+  /// Appends copies of items, placed at line (the '$name' they replace), so that errors
+  /// point into the file being read.
+  static void appendCopies(const std::vector<Value>& items, int line, std::vector<Value>& out) {
+    for (const Value& v : items) {
+      Value& c = out.emplace_back(v);
+      relocate(c, line);
+    }
+  }
+  static void relocate(Value& v, int line) {
+    v.line = line;
+    for (Value& i : v.items) relocate(i, line);
+  }
+
+  std::vector<Impl*> scopes_;              // dictionaries being read, innermost last
+  std::vector<std::string> includeIds_;    // canonical paths of the files being read
+  std::vector<std::string> includeNames_;  // the same, as named in messages
+};
+
+void finishTopLevel(Dictionary::Impl& d) {
+  // The header is for OpenFOAM's tools; it counts as read so that checkAllRead passes it.
+  if (const DictEntry* header = d.find("FoamFile")) {
+    header->read = true;
+    if (header->dict) Dictionary::Impl::of(*header->dict).setRead(true);
+  }
+}
+
+void checkRead(const Dictionary::Impl& d) {
+  for (const DictEntry& e : d.entries) {
+    if (!e.read) {
+      if (d.asked.count(e.key))
+        throw InputError(e.where, "key '" + e.key + "' in " + d.scope +
+                                      " is never used (the program checks that it is there "
+                                      "but does not read it)");
+      std::string msg = "unknown key '" + e.key + "' in " + d.scope;
+      if (d.asked.empty()) {
+        msg += " (no keys are read from " + d.scope + ")";
+      } else {
+        // Prefer the keys the program asked for and did not find: the likely intended ones.
+        std::vector<std::string> missing;
+        for (const std::string& k : d.asked)
+          if (!d.find(k)) missing.push_back(k);
+        const std::string guess =
+            missing.empty() ? nearest(e.key, d.asked) : nearest(e.key, missing);
+        msg += "; did you mean '" + guess + "'? (valid keys: " + joined(d.asked) + ")";
+      }
+      throw InputError(e.where, msg);
+    }
+    if (e.dict) checkRead(Dictionary::Impl::of(*e.dict));
+  }
+}
+
+}  // namespace
+
+// -----------------------------------------------------------------------------------------
+// Bounds
+// -----------------------------------------------------------------------------------------
+
+bool Bounds::contains(double x) const {
+  const bool aboveMin = minExclusive ? x > min : x >= min;
+  const bool belowMax = maxExclusive ? x < max : x <= max;
+  return aboveMin && belowMax;  // false for NaN
+}
+
+std::string Bounds::str() const {
+  const bool hasMin = min > -std::numeric_limits<double>::infinity();
+  const bool hasMax = max < std::numeric_limits<double>::infinity();
+  const std::string lo = detail::shortestNumber(min);
+  const std::string hi = detail::shortestNumber(max);
+  if (hasMin && hasMax)
+    return "in " + std::string(minExclusive ? "(" : "[") + lo + ", " + hi +
+           (maxExclusive ? ")" : "]");
+  if (hasMin) return (minExclusive ? "> " : ">= ") + lo;
+  if (hasMax) return (maxExclusive ? "< " : "<= ") + hi;
+  return "";
+}
+
+// -----------------------------------------------------------------------------------------
+// Dictionary
+// -----------------------------------------------------------------------------------------
+
+Dictionary::Dictionary() : impl_(std::make_unique<Impl>()) {}
+Dictionary::~Dictionary() = default;
+Dictionary::Dictionary(Dictionary&&) noexcept = default;
+Dictionary& Dictionary::operator=(Dictionary&&) noexcept = default;
+Dictionary::Dictionary(const Dictionary& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
+Dictionary& Dictionary::operator=(const Dictionary& o) {
+  if (this != &o) impl_ = std::make_unique<Impl>(*o.impl_);
+  return *this;
+}
+
+Dictionary Dictionary::read(const std::string& path) {
+  Dictionary d;
+  d.impl_->scope = path;
+  d.impl_->where = {path, 0};
+  Parser().parseFile(path, *d.impl_, nullptr, false);
+  finishTopLevel(*d.impl_);
+  return d;
+}
+
+Dictionary Dictionary::parse(const std::string& text, const std::string& sourceName,
+                             const std::string& baseDir) {
+  Dictionary d;
+  d.impl_->scope = sourceName;
+  d.impl_->where = {sourceName, 0};
+  Parser().parseText(text, sourceName, baseDir.empty() ? "." : baseDir, *d.impl_, false);
+  finishTopLevel(*d.impl_);
+  return d;
+}
+
+const std::string& Dictionary::scope() const { return impl_->scope; }
+
+SourceLocation Dictionary::location() const { return impl_->where; }
+
+SourceLocation Dictionary::location(const std::string& key) const {
+  const DictEntry* e = impl_->find(key);
+  if (!e) throw std::out_of_range("Dictionary::location: no key '" + key + "' in " + impl_->scope);
+  return e->where;
+}
+
+std::vector<std::string> Dictionary::keys() const {
+  std::vector<std::string> k;
+  k.reserve(impl_->entries.size());
+  for (const DictEntry& e : impl_->entries) k.push_back(e.key);
+  return k;
+}
+
+bool Dictionary::found(const std::string& key) const { return impl_->ask(key) != nullptr; }
+
+bool Dictionary::isDict(const std::string& key) const {
+  const DictEntry* e = impl_->ask(key);
+  return e && e->dict;
+}
+
+const Dictionary& Dictionary::subDict(const std::string& key) const {
+  const Dictionary* d = findDict(key);
+  if (!d)
+    throw InputError(impl_->where, "missing sub-dictionary '" + key + "' in " + impl_->scope +
+                                       " (expected '" + key + " { ... }')");
+  return *d;
+}
+
+const Dictionary* Dictionary::findDict(const std::string& key) const {
+  const DictEntry* e = impl_->ask(key);
+  if (!e) return nullptr;
+  e->read = true;
+  if (!e->dict) failEntry(*e, "a dictionary { ... }", shown(e->items));
+  return e->dict.get();
+}
+
+const std::vector<Value>& Dictionary::values(const std::string& key) const {
+  return requireValue(*impl_, key, "a value").items;
+}
+
+double Dictionary::getScalar(const std::string& key, Bounds bounds) const {
+  return getRequired(*impl_, key, withBounds("a number", bounds),
+                     [&](const DictEntry& e) { return scalarOf(e, bounds); });
+}
+
+double Dictionary::getScalarOr(const std::string& key, double def, Bounds bounds) const {
+  return getOptional(*impl_, key, withBounds("a number", bounds), def,
+                     [&](const DictEntry& e) { return scalarOf(e, bounds); });
+}
+
+long Dictionary::getInt(const std::string& key, Bounds bounds) const {
+  return getRequired(*impl_, key, withBounds("an integer", bounds),
+                     [&](const DictEntry& e) { return intOf(e, bounds); });
+}
+
+long Dictionary::getIntOr(const std::string& key, long def, Bounds bounds) const {
+  return getOptional(*impl_, key, withBounds("an integer", bounds), def,
+                     [&](const DictEntry& e) { return intOf(e, bounds); });
+}
+
+bool Dictionary::getBool(const std::string& key) const {
+  return getRequired(*impl_, key, "true/false, yes/no or on/off", boolOf);
+}
+
+bool Dictionary::getBoolOr(const std::string& key, bool def) const {
+  return getOptional(*impl_, key, "true/false, yes/no or on/off", def, boolOf);
+}
+
+std::string Dictionary::getWord(const std::string& key) const {
+  return getRequired(*impl_, key, "a word", [](const DictEntry& e) { return wordOf(e, "a word"); });
+}
+
+std::string Dictionary::getWordOr(const std::string& key, const std::string& def) const {
+  return getOptional(*impl_, key, "a word", def,
+                     [](const DictEntry& e) { return wordOf(e, "a word"); });
+}
+
+std::string Dictionary::getChoice(const std::string& key,
+                                  const std::vector<std::string>& choices) const {
+  return getRequired(*impl_, key, "one of: " + joined(choices),
+                     [&](const DictEntry& e) { return choiceOf(e, choices); });
+}
+
+std::string Dictionary::getChoiceOr(const std::string& key, const std::vector<std::string>& choices,
+                                    const std::string& def) const {
+  return getOptional(*impl_, key, "one of: " + joined(choices), def,
+                     [&](const DictEntry& e) { return choiceOf(e, choices); });
+}
+
+std::string Dictionary::getFileName(const std::string& key) const {
+  const std::string expected = "a file name (in quotes if it has spaces)";
+  return getRequired(*impl_, key, expected,
+                     [&](const DictEntry& e) { return wordOf(e, expected); });
+}
+
+Vector2 Dictionary::getVector(const std::string& key) const {
+  const std::string expected = "a vector (x y)";
+  return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
+    const auto [b, end] = stripped(e.items);
+    std::optional<Vector2> v;
+    if (end - b == 1) v = toVector(*b);
+    if (!v) failEntry(e, expected, shown(e.items));
+    return *v;
+  });
+}
+
+std::vector<double> Dictionary::getScalarList(const std::string& key) const {
+  const std::string expected = "a list of numbers, e.g. (1 2 3)";
+  return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
+    const Value& list = singleList(e, expected);
+    std::vector<double> out;
+    out.reserve(list.items.size());
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+      if (!list.items[i].isNumber()) failItem(e, i, list.items[i], "a number");
+      out.push_back(list.items[i].number);
+    }
+    return out;
+  });
+}
+
+std::vector<long> Dictionary::getIntList(const std::string& key) const {
+  const std::string expected = "a list of integers, e.g. (1 2 3)";
+  return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
+    const Value& list = singleList(e, expected);
+    std::vector<long> out(list.items.size());
+    for (std::size_t i = 0; i < list.items.size(); ++i)
+      if (!toLong(list.items[i], out[i])) failItem(e, i, list.items[i], "an integer");
+    return out;
+  });
+}
+
+std::vector<std::string> Dictionary::getWordList(const std::string& key) const {
+  const std::string expected = "a list of words, e.g. (a b c)";
+  return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
+    const Value& list = singleList(e, expected);
+    std::vector<std::string> out;
+    out.reserve(list.items.size());
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+      const Value& v = list.items[i];
+      if (!v.isWord() && !v.isString()) failItem(e, i, v, "a word");
+      out.push_back(v.text);
+    }
+    return out;
+  });
+}
+
+std::vector<Vector2> Dictionary::getVectorList(const std::string& key) const {
+  const std::string expected = "a list of vectors, e.g. ((0 0) (1 0))";
+  return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
+    const Value& list = singleList(e, expected);
+    std::vector<Vector2> out;
+    out.reserve(list.items.size());
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+      const std::optional<Vector2> v = toVector(list.items[i]);
+      if (!v) failItem(e, i, list.items[i], "a vector (x y)");
+      out.push_back(*v);
+    }
+    return out;
+  });
+}
+
+template <std::size_t N>
+std::vector<std::array<long, N>> Dictionary::getIntTupleList(const std::string& key) const {
+  const std::string tuple = "(" + std::to_string(N) + " integers)";
+  const std::string expected = "a list of tuples of " + std::to_string(N) + " integers";
+  return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
+    const Value& list = singleList(e, expected);
+    std::vector<std::array<long, N>> out(list.items.size());
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+      const Value& t = list.items[i];
+      if (!t.isList() || t.items.size() != N) failItem(e, i, t, "a tuple " + tuple);
+      for (std::size_t k = 0; k < N; ++k)
+        if (!toLong(t.items[k], out[i][k])) failItem(e, i, t, "a tuple " + tuple);
+    }
+    return out;
+  });
+}
+
+template std::vector<std::array<long, 2>> Dictionary::getIntTupleList<2>(const std::string&) const;
+template std::vector<std::array<long, 3>> Dictionary::getIntTupleList<3>(const std::string&) const;
+
+Table Dictionary::getTable(const std::string& key) const {
+  const std::string expected = "a table ((x0 y0) (x1 y1) ...)";
+  return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
+    const Value& list = singleList(e, expected);
+    if (list.items.empty()) failEntry(e, "a table with at least one row", "()");
+    const std::string row = "a row (x y) with y a number or a list of numbers";
+    Table table;
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+      const Value& r = list.items[i];
+      if (!r.isList() || r.items.size() != 2 || !r.items[0].isNumber()) failItem(e, i, r, row);
+      const Value& y = r.items[1];
+      std::vector<double> values;
+      if (y.isNumber()) {
+        values.push_back(y.number);
+      } else if (y.isList() && !y.items.empty()) {
+        for (const Value& c : y.items) {
+          if (!c.isNumber()) failItem(e, i, r, row);
+          values.push_back(c.number);
+        }
+      } else {
+        failItem(e, i, r, row);
+      }
+      if (i > 0 && values.size() != table.y[0].size())
+        failItem(e, i, r,
+                 "y with " + std::to_string(table.y[0].size()) + " components like the first row");
+      const double x = r.items[0].number;
+      if (i > 0 && !(x > table.x.back()))
+        failItem(e, i, r,
+                 "x greater than " + detail::shortestNumber(table.x.back()) +
+                     " (x must increase strictly from row to row)");
+      table.x.push_back(x);
+      table.y.push_back(std::move(values));
+    }
+    return table;
+  });
+}
+
+void Dictionary::checkAllRead() const { checkRead(*impl_); }
+
+void Dictionary::markAllRead() const { impl_->setRead(true); }
+
+void Dictionary::set(const std::string& key, std::vector<Value> items, SourceLocation where) {
+  DictEntry e;
+  e.key = key;
+  e.where = where.file.empty() ? impl_->where : std::move(where);
+  e.items = std::move(items);
+  impl_->add(std::move(e));
+}
+
+Dictionary& Dictionary::setDict(const std::string& key, SourceLocation where) {
+  DictEntry e;
+  e.key = key;
+  e.where = where.file.empty() ? impl_->where : std::move(where);
+  e.dict = std::make_unique<Dictionary>();
+  Impl& sub = Impl::of(*e.dict);
+  sub.scope = impl_->scope + "/" + key;
+  sub.where = e.where;
+  // Replace, not merge: the caller asked for a fresh sub-dictionary.
+  if (DictEntry* old = impl_->find(key)) {
+    *old = std::move(e);
+    return *old->dict;
+  }
+  impl_->add(std::move(e));
+  return *impl_->find(key)->dict;
+}
+
+void Dictionary::fail(const std::string& key, const std::string& message) const {
+  const DictEntry* e = impl_->find(key);
+  throw InputError(e ? e->where : impl_->where, message);
+}
+
+}  // namespace friction

@@ -1,0 +1,152 @@
+// Dictionary: reader for OpenFOAM-syntax dictionaries, with typed, range-checked access and
+// detection of entries the program never reads (STYLE.md "dict/").
+//
+// Grammar accepted (OpenFOAM's, restricted to what cases need):
+//   file       := [FoamFile-dict] entry*
+//   entry      := key value-item* ';'  |  key '{' entry* '}'  |  directive  |  '$' name ';'
+//   value-item := word | number | "string" | list | '$' name
+//   list       := [N] '(' value-item* ')'            N, if given, must equal the item count
+//   directive  := '#include' "file"                  (relative to the including file)
+//   comments   := '//' to end of line, '/* ... */'
+// A word may contain letters, digits and _ . : < > , - + (so "List<scalar>" and "uniform"
+// are words). '$name' expands to the value of entry 'name' in the current or an enclosing
+// dictionary (a dictionary-valued '$name;' entry merges that dictionary's entries). A later
+// entry with the same key replaces an earlier one, as in OpenFOAM.
+//
+// Every entry keeps its file:line. Accessors mark an entry as read; checkAllRead() then
+// reports the first entry the program never read, naming its file:line and the nearest
+// valid key (the keys the program asked for in that dictionary).
+#pragma once
+
+#include <array>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "friction/core/InputError.hpp"
+#include "friction/core/Types.hpp"
+#include "friction/dict/Value.hpp"
+
+namespace friction {
+
+/// Closed interval [min, max] for range checks; use minExclusive for "> 0" bounds.
+struct Bounds {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool minExclusive = false;
+  bool maxExclusive = false;
+
+  static Bounds positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+  static Bounds nonNegative() { return {0.0, std::numeric_limits<double>::infinity()}; }
+  static Bounds closed(double lo, double hi) { return {lo, hi}; }
+  bool contains(double x) const;
+  /// Human-readable description, e.g. "> 0", "in [0, 0.5)".
+  std::string str() const;
+};
+
+/// A table of (time, vector) rows, e.g. ((0 (0 0)) (1 (-0.02 -0.025))). Scalar rows
+/// ((0 1) (1 2)) give vectors of size 1.
+struct Table {
+  std::vector<double> x;
+  std::vector<std::vector<double>> y;
+};
+
+class Dictionary {
+ public:
+  Dictionary();
+  ~Dictionary();
+  Dictionary(Dictionary&&) noexcept;
+  Dictionary& operator=(Dictionary&&) noexcept;
+  Dictionary(const Dictionary&);
+  Dictionary& operator=(const Dictionary&);
+
+  /// Parse a file (following #include). Throws InputError naming file:line on syntax errors
+  /// and "cannot open" when the file is missing. The FoamFile header, if present, is kept as
+  /// the sub-dictionary "FoamFile" and counts as read.
+  static Dictionary read(const std::string& path);
+  /// Parse text; sourceName stands in for the file name in messages; includes are resolved
+  /// relative to baseDir.
+  static Dictionary parse(const std::string& text, const std::string& sourceName,
+                          const std::string& baseDir = ".");
+
+  /// Scope name for messages: the file path, plus "/sub/dict" for sub-dictionaries.
+  const std::string& scope() const;
+  /// Where this dictionary starts (file:line of its '{', or the file).
+  SourceLocation location() const;
+  /// Where an entry starts. Throws std::out_of_range if absent (internal use).
+  SourceLocation location(const std::string& key) const;
+
+  /// Keys in file order (does not mark anything as read).
+  std::vector<std::string> keys() const;
+
+  /// True if the key exists. Registers the key as valid (for suggestions) but does not mark
+  /// the entry as read.
+  bool found(const std::string& key) const;
+  bool isDict(const std::string& key) const;
+
+  /// Required sub-dictionary; error if missing or not a dictionary.
+  const Dictionary& subDict(const std::string& key) const;
+  /// Optional sub-dictionary (nullptr if absent; error if present but not a dictionary).
+  const Dictionary* findDict(const std::string& key) const;
+
+  /// Raw items of a value entry (marks it read). Error if missing or if it is a dictionary.
+  const std::vector<Value>& values(const std::string& key) const;
+
+  // Typed access. Each marks the entry as read and throws InputError with file:line, the
+  // key and what was expected. Vector/list accessors accept a leading "uniform" word.
+  double getScalar(const std::string& key, Bounds bounds = {}) const;
+  double getScalarOr(const std::string& key, double def, Bounds bounds = {}) const;
+  long getInt(const std::string& key, Bounds bounds = {}) const;
+  long getIntOr(const std::string& key, long def, Bounds bounds = {}) const;
+  bool getBool(const std::string& key) const;  // true/false, yes/no, on/off
+  bool getBoolOr(const std::string& key, bool def) const;
+  /// A single word (or quoted string).
+  std::string getWord(const std::string& key) const;
+  std::string getWordOr(const std::string& key, const std::string& def) const;
+  /// A word that must be one of choices; error lists them ("valid types are: ...").
+  std::string getChoice(const std::string& key, const std::vector<std::string>& choices) const;
+  std::string getChoiceOr(const std::string& key, const std::vector<std::string>& choices,
+                          const std::string& def) const;
+  /// A file name (quoted string or word).
+  std::string getFileName(const std::string& key) const;
+  /// (x y)
+  Vector2 getVector(const std::string& key) const;
+  std::vector<double> getScalarList(const std::string& key) const;
+  std::vector<long> getIntList(const std::string& key) const;
+  std::vector<std::string> getWordList(const std::string& key) const;
+  std::vector<Vector2> getVectorList(const std::string& key) const;
+  /// List of fixed-size integer tuples, e.g. ((0 1 2) (2 3 4)).
+  template <std::size_t N>
+  std::vector<std::array<long, N>> getIntTupleList(const std::string& key) const;
+  /// ((t0 y0) (t1 y1) ...) with y a number or a list of numbers, all of the same size;
+  /// x strictly increasing.
+  Table getTable(const std::string& key) const;
+
+  /// Throws InputError for the first entry (depth first, file order) that no accessor read:
+  /// "file:line: unknown key 'Youngs' in <scope>; did you mean 'E'? (valid keys: E, nu)".
+  /// Sub-dictionaries that were read are checked recursively.
+  void checkAllRead() const;
+  /// Mark everything in this dictionary (recursively) as read, e.g. for a block that
+  /// belongs to another program.
+  void markAllRead() const;
+
+  // ---- building (used by tests and by code that assembles dictionaries) ----
+  /// Add or replace a value entry.
+  void set(const std::string& key, std::vector<Value> items, SourceLocation where = {});
+  /// Add or replace a sub-dictionary; returns it.
+  Dictionary& setDict(const std::string& key, SourceLocation where = {});
+
+  /// Throw an InputError located at the entry 'key' (or at the dictionary if key is absent).
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace friction

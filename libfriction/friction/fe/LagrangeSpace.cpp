@@ -1,0 +1,137 @@
+// LagrangeSpace: node and dof numbering of continuous P1 / P2 (METHOD.md §2). See the header
+// for the numbering conventions.
+#include "friction/fe/LagrangeSpace.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "friction/core/Assert.hpp"
+#include "friction/core/InputError.hpp"
+
+namespace friction {
+
+namespace {
+// Local vertex pairs of the three P2 midpoints, in local order 3, 4, 5.
+constexpr int kEdgeVertex[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+}  // namespace
+
+LagrangeSpace::LagrangeSpace(const Mesh& mesh, int degree) : mesh_(&mesh), degree_(degree) {
+  FRICTION_ASSERT(degree == 1 || degree == 2, "Lagrange degree must be 1 or 2");
+  const Index np = mesh.numPoints();
+  const Index nt = mesh.numTriangles();
+
+  // Edge table without hashing or sorting of all edges: bucket every triangle side by its
+  // smaller node, then sort and deduplicate each (short) bucket. Linear in the mesh size.
+  std::vector<Index> count(static_cast<std::size_t>(np) + 1, 0);
+  for (const auto& t : mesh.triangles)
+    for (const auto& e : kEdgeVertex) ++count[std::min(t[e[0]], t[e[1]]) + 1];
+  for (Index a = 0; a < np; ++a) count[a + 1] += count[a];
+  std::vector<Index> other(static_cast<std::size_t>(3) * nt);
+  {
+    std::vector<Index> fill(count.begin(), count.end() - 1);
+    for (const auto& t : mesh.triangles)
+      for (const auto& e : kEdgeVertex) {
+        const Index a = t[e[0]], b = t[e[1]];
+        other[fill[std::min(a, b)]++] = std::max(a, b);
+      }
+  }
+  edgeStart_.assign(static_cast<std::size_t>(np) + 1, 0);
+  edgeOther_.reserve(static_cast<std::size_t>(3) * nt / 2 + np);
+  for (Index a = 0; a < np; ++a) {
+    const auto first = other.begin() + count[a], last = other.begin() + count[a + 1];
+    std::sort(first, last);
+    edgeOther_.insert(edgeOther_.end(), first, std::unique(first, last));
+    edgeStart_[a + 1] = static_cast<Index>(edgeOther_.size());
+  }
+  edgeOther_.shrink_to_fit();
+
+  // Node coordinates: mesh points, then edge midpoints in edge-table order.
+  coordinates_ = mesh.points;
+  if (degree_ == 2) {
+    coordinates_.reserve(coordinates_.size() + edgeOther_.size());
+    for (Index a = 0; a < np; ++a)
+      for (Index k = edgeStart_[a]; k < edgeStart_[a + 1]; ++k)
+        coordinates_.push_back(0.5 * (mesh.points[a] + mesh.points[edgeOther_[k]]));
+  }
+
+  const int npc = nodesPerCell();
+  cellNodes_.resize(static_cast<std::size_t>(npc) * nt);
+  for (Index c = 0; c < nt; ++c) {
+    const auto& t = mesh.triangles[c];
+    Index* out = &cellNodes_[static_cast<std::size_t>(npc) * c];
+    out[0] = t[0];
+    out[1] = t[1];
+    out[2] = t[2];
+    if (degree_ == 2)
+      for (int e = 0; e < 3; ++e) out[3 + e] = np + findEdge(t[kEdgeVertex[e][0]], t[kEdgeVertex[e][1]]);
+  }
+
+  // A labelled edge that no triangle has would get no midpoint and no stiffness: the mesh is
+  // inconsistent, and the user must hear about it now rather than see a singular matrix.
+  for (std::size_t i = 0; i < mesh.edges.size(); ++i) {
+    const auto& e = mesh.edges[i];
+    const bool inRange = e[0] >= 0 && e[0] < np && e[1] >= 0 && e[1] < np;
+    if (!inRange || findEdge(e[0], e[1]) < 0)
+      throw InputError(mesh.source, "labelled edge " + std::to_string(i) + " (nodes " +
+                                        std::to_string(e[0]) + ", " + std::to_string(e[1]) +
+                                        ", label " + std::to_string(mesh.edgeLabel[i]) +
+                                        ") is not a side of any triangle");
+  }
+}
+
+Index LagrangeSpace::findEdge(Index a, Index b) const {
+  if (a > b) std::swap(a, b);
+  if (a < 0 || a + 1 >= static_cast<Index>(edgeStart_.size())) return -1;
+  const auto first = edgeOther_.begin() + edgeStart_[a];
+  const auto last = edgeOther_.begin() + edgeStart_[a + 1];
+  const auto it = std::lower_bound(first, last, b);
+  return (it != last && *it == b) ? static_cast<Index>(it - edgeOther_.begin()) : -1;
+}
+
+NodeList LagrangeSpace::cellNodes(Index cell) const {
+  NodeList list;
+  list.size = nodesPerCell();
+  const Index* in = &cellNodes_[static_cast<std::size_t>(list.size) * cell];
+  std::copy(in, in + list.size, list.node.begin());
+  return list;
+}
+
+Index LagrangeSpace::midpointNode(Index a, Index b) const {
+  if (degree_ != 2) return -1;
+  const Index k = findEdge(a, b);
+  return k < 0 ? -1 : mesh_->numPoints() + k;
+}
+
+NodeList LagrangeSpace::edgeNodes(Index a, Index b) const {
+  FRICTION_ASSERT(isEdge(a, b), "edgeNodes: (a, b) is not a triangle side");
+  NodeList list;
+  if (degree_ == 1) {
+    list.node[0] = a;
+    list.node[1] = b;
+    list.size = 2;
+  } else {
+    list.node[0] = a;
+    list.node[1] = midpointNode(a, b);
+    list.node[2] = b;
+    list.size = 3;
+  }
+  return list;
+}
+
+std::vector<std::array<Index, 2>> LagrangeSpace::labelledEdges(int label) const {
+  std::vector<std::array<Index, 2>> out;
+  for (std::size_t i = 0; i < mesh_->edges.size(); ++i)
+    if (mesh_->edgeLabel[i] == label) out.push_back(mesh_->edges[i]);
+  return out;
+}
+
+std::vector<Index> LagrangeSpace::patchNodes(int label) const {
+  std::vector<Index> nodes;
+  for (const auto& e : labelledEdges(label))
+    for (Index n : edgeNodes(e[0], e[1])) nodes.push_back(n);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+}  // namespace friction

@@ -1,0 +1,52 @@
+// Material: isotropic linear elasticity, plane strain / plane stress (METHOD.md §1).
+#include "friction/fe/Material.hpp"
+
+#include "friction/core/Assert.hpp"
+
+namespace friction {
+
+Material::Material(double lambda, double mu, bool planeStress)
+    : lambda_(lambda), mu_(mu), planeStress_(planeStress) {
+  // Positive definiteness of the 3D law (bulk modulus λ + 2μ/3 > 0, μ > 0); this also makes
+  // both 2D laws positive definite.
+  FRICTION_ASSERT(mu > 0.0, "shear modulus must be positive");
+  FRICTION_ASSERT(lambda + 2.0 * mu / 3.0 > 0.0, "bulk modulus must be positive");
+}
+
+Material Material::fromYoungPoisson(double youngModulus, double poissonRatio, bool planeStress) {
+  FRICTION_ASSERT(youngModulus > 0.0, "Young's modulus must be positive");
+  FRICTION_ASSERT(poissonRatio > -1.0 && poissonRatio < 0.5, "Poisson's ratio out of (-1, 1/2)");
+  const double e = youngModulus, nu = poissonRatio;
+  return Material(e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), e / (2.0 * (1.0 + nu)), planeStress);
+}
+
+Material Material::fromLame(double lambda, double mu, bool planeStress) {
+  return Material(lambda, mu, planeStress);
+}
+
+double Material::youngModulus() const {
+  return mu_ * (3.0 * lambda_ + 2.0 * mu_) / (lambda_ + mu_);
+}
+
+double Material::poissonRatio() const { return lambda_ / (2.0 * (lambda_ + mu_)); }
+
+double Material::lambdaStar() const {
+  return planeStress_ ? 2.0 * lambda_ * mu_ / (lambda_ + 2.0 * mu_) : lambda_;
+}
+
+Eigen::Matrix2d Material::stress(const Eigen::Matrix2d& strain) const {
+  return lambdaStar() * strain.trace() * Eigen::Matrix2d::Identity() + 2.0 * mu_ * strain;
+}
+
+double Material::outOfPlaneStress(const Eigen::Matrix2d& strain) const {
+  return planeStress_ ? 0.0 : lambda_ * strain.trace();
+}
+
+Eigen::Matrix3d Material::voigtMatrix() const {
+  const double l = lambdaStar(), m = mu_;
+  Eigen::Matrix3d d;
+  d << l + 2 * m, l, 0, l, l + 2 * m, 0, 0, 0, m;
+  return d;
+}
+
+}  // namespace friction

@@ -1,0 +1,49 @@
+// Material: isotropic linear elasticity in 2D, plane strain (the default, METHOD.md §1) or
+// plane stress. Hooke's law σ = λ* tr(ε) I + 2μ ε with λ* = λ in plane strain and
+// λ* = 2λμ/(λ + 2μ) in plane stress (σ_zz = 0 eliminates ε_zz).
+//
+// Units: E, λ, μ and stresses in Pa; strains dimensionless. In 2D every force is per unit
+// thickness (N/m), so the stiffness matrix is in N/m² · m = N/m per unit thickness.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace friction {
+
+class Material {
+ public:
+  /// From Young's modulus E [Pa] (> 0) and Poisson's ratio ν (−1 < ν < 1/2). Range checks
+  /// with file and line belong to the dictionary layer; here they are debug asserts.
+  static Material fromYoungPoisson(double youngModulus, double poissonRatio,
+                                   bool planeStress = false);
+  /// From the Lamé constants λ [Pa] and μ [Pa] (μ > 0, λ + 2μ/3 > 0) of the 3D material.
+  static Material fromLame(double lambda, double mu, bool planeStress = false);
+
+  /// Lamé λ of the 3D material [Pa] (not the plane-stress λ*).
+  double lambda() const { return lambda_; }
+  /// Shear modulus μ [Pa].
+  double mu() const { return mu_; }
+  double youngModulus() const;
+  double poissonRatio() const;
+  bool planeStress() const { return planeStress_; }
+
+  /// λ* of the 2D law [Pa]: λ in plane strain, 2λμ/(λ + 2μ) in plane stress.
+  double lambdaStar() const;
+
+  /// In-plane stress [Pa] from a symmetric strain tensor.
+  Eigen::Matrix2d stress(const Eigen::Matrix2d& strain) const;
+  /// σ_zz [Pa]: λ tr(ε) in plane strain, 0 in plane stress.
+  double outOfPlaneStress(const Eigen::Matrix2d& strain) const;
+
+  /// Voigt matrix D with (σxx, σyy, σxy) = D (εxx, εyy, 2εxy) [Pa].
+  Eigen::Matrix3d voigtMatrix() const;
+
+ private:
+  Material(double lambda, double mu, bool planeStress);
+
+  double lambda_;
+  double mu_;
+  bool planeStress_;
+};
+
+}  // namespace friction

@@ -1,0 +1,222 @@
+// The finite-element SlipResponse: lifting of the imposed jump (52), one factorisation, and
+// traction recovery from the split residual (53). See FractureSystem.hpp.
+#include "friction/fracture/FractureSystem.hpp"
+
+#include <set>
+
+#include "friction/core/Assert.hpp"
+
+namespace friction {
+
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+Eigen::SparseMatrix<double> fromTriplets(Index rows, Index cols, const Triplets& t) {
+  Eigen::SparseMatrix<double> m(rows, cols);
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+// The unsplit mesh: the original points, triangles and boundary patches renumbered through
+// the split mesh's origin map. Its stiffness is K = Pᵀ K_split P (METHOD.md §2).
+Mesh unsplitMeshOf(const SplitMesh& s) {
+  Mesh m;
+  m.source = s.mesh.source;
+  m.format = s.mesh.format;
+  const Index n = s.numOriginalPoints();
+  m.points.assign(s.mesh.points.begin(), s.mesh.points.begin() + n);
+  m.triangles = s.mesh.triangles;
+  for (auto& t : m.triangles)
+    for (Index& v : t) v = s.origin[v];
+  m.triangleRegion = s.mesh.triangleRegion;
+  m.edges = s.mesh.edges;
+  for (auto& e : m.edges)
+    for (Index& v : e) v = s.origin[v];
+  m.edgeLabel = s.mesh.edgeLabel;
+  m.labelNames = s.mesh.labelNames;
+  m.regionNames = s.mesh.regionNames;
+  return m;
+}
+
+}  // namespace
+
+FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Material& material)
+    : split_(split), material_(material), unsplitMesh_(unsplitMeshOf(split)) {
+  splitSpace_ = std::make_unique<LagrangeSpace>(split_.mesh, degree);
+  unsplitSpace_ = std::make_unique<LagrangeSpace>(unsplitMesh_, degree);
+  splitAssembler_ = std::make_unique<ElasticityAssembler>(*splitSpace_, material_);
+  unsplitAssembler_ = std::make_unique<ElasticityAssembler>(*unsplitSpace_, material_);
+  dirichlet_ = std::make_unique<DirichletConditions>(*unsplitSpace_);
+
+  // P: split node -> unsplit node, read off cell by cell (same cells, same local order).
+  std::vector<Index> toUnsplit(splitSpace_->numNodes(), -1);
+  for (Index c = 0; c < splitSpace_->numCells(); ++c) {
+    const NodeList s = splitSpace_->cellNodes(c), u = unsplitSpace_->cellNodes(c);
+    for (int k = 0; k < s.size; ++k) toUnsplit[s[k]] = u[k];
+  }
+  Triplets pt;
+  for (Index i = 0; i < splitSpace_->numNodes(); ++i) {
+    FRICTION_ASSERT(toUnsplit[i] >= 0, "every split node belongs to a cell");
+    for (int c = 0; c < 2; ++c) pt.emplace_back(LagrangeSpace::dof(i, c), LagrangeSpace::dof(toUnsplit[i], c), 1.0);
+  }
+  P_ = fromTriplets(splitSpace_->numDofs(), unsplitSpace_->numDofs(), pt);
+
+  // Control nodes in arclength order: vertices, and for P2 the edge midpoints between them.
+  std::vector<std::array<Index, 2>> plusEdges;
+  for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f) {
+    const FractureGeometry& g = split_.fractures[f];
+    for (Index i = 0; i < g.numNodes(); ++i) {
+      ControlNode v;
+      v.fracture = f;
+      v.plus = g.plus[i];
+      v.minus = g.minus[i];
+      v.x = split_.mesh.points[g.plus[i]];
+      v.normal = g.normal[i];
+      v.tangent = g.tangent[i];
+      v.arclength = g.arclength[i];
+      v.tip = g.kind[i] == FractureNodeKind::tip;
+      nodes_.push_back(v);
+      if (i + 1 == g.numNodes()) break;
+      plusEdges.push_back({g.plus[i], g.plus[i + 1]});
+      if (degree == 2) {
+        ControlNode m;
+        m.fracture = f;
+        m.plus = splitSpace_->midpointNode(g.plus[i], g.plus[i + 1]);
+        m.minus = splitSpace_->midpointNode(g.minus[i], g.minus[i + 1]);
+        m.x = splitSpace_->coordinate(m.plus);
+        const Vector2 e = (split_.mesh.points[g.plus[i + 1]] - split_.mesh.points[g.plus[i]]);
+        m.tangent = e.normalized();
+        m.normal = Vector2(m.tangent.y(), -m.tangent.x());  // SignConventions.hpp
+        m.arclength = 0.5 * (g.arclength[i] + g.arclength[i + 1]);
+        nodes_.push_back(m);
+      }
+    }
+  }
+  // Lumped mass of Γ: trapezoid (P1) or Simpson (P2) weights of the ⁺-side edges.
+  const Eigen::VectorXd w = splitAssembler_->lumpedEdgeMass(plusEdges);
+  const Index n = size();
+  weights_.resize(n);
+  for (Index k = 0; k < n; ++k) weights_[k] = w[nodes_[k].plus];
+
+  // L: ±j/2 on the copies.
+  Triplets lt;
+  for (Index k = 0; k < n; ++k) {
+    if (nodes_[k].tip) continue;
+    for (int c = 0; c < 2; ++c) {
+      lt.emplace_back(LagrangeSpace::dof(nodes_[k].plus, c), 2 * k + c, 0.5);
+      lt.emplace_back(LagrangeSpace::dof(nodes_[k].minus, c), 2 * k + c, -0.5);
+    }
+  }
+  L_ = fromTriplets(splitSpace_->numDofs(), 2 * n, lt);
+  slip_ = Eigen::VectorXd::Zero(n);
+  loadUnsplit_ = Eigen::VectorXd::Zero(unsplitSpace_->numDofs());
+  sigmaLoad_ = Eigen::VectorXd::Zero(2 * n);
+}
+
+int FractureSystem::numHeldOnDirichlet() const {
+  int c = 0;
+  for (const auto& v : nodes_) c += v.onDirichlet;
+  return c;
+}
+
+FactorStatus FractureSystem::factor(const std::string& backend) {
+  const Index n = size();
+  // Jumps are held where a copy's unsplit node carries a Dirichlet condition: a jump there
+  // would move one side off its prescribed value.
+  mask_ = Eigen::VectorXd::Ones(n);
+  {
+    // Row i of P holds one entry, at the unsplit dof of split dof i.
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> Pr = P_;
+    for (Index k = 0; k < n; ++k) {
+      ControlNode& v = nodes_[k];
+      v.onDirichlet = false;
+      for (int c = 0; c < 2; ++c) {
+        Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Pr, LagrangeSpace::dof(v.plus, c));
+        if (it && dirichlet_->isFixed(static_cast<Index>(it.col()))) v.onDirichlet = true;
+      }
+      if (v.tip || v.onDirichlet) mask_[k] = 0;
+    }
+  }
+
+  const Eigen::SparseMatrix<double> Ksplit = splitAssembler_->stiffness();
+  B_ = P_.transpose() * (Ksplit * L_);
+  // Rows of K_split at the copies, scaled: Σ_k = (r⁺_k − r⁻_k) / (2 w_k).
+  Triplets et;
+  for (Index k = 0; k < n; ++k) {
+    if (nodes_[k].tip) continue;  // a single node has no two sides to compare
+    const double s = 0.5 / weights_[k];
+    for (int c = 0; c < 2; ++c) {
+      et.emplace_back(2 * k + c, LagrangeSpace::dof(nodes_[k].plus, c), s);
+      et.emplace_back(2 * k + c, LagrangeSpace::dof(nodes_[k].minus, c), -s);
+    }
+  }
+  const Eigen::SparseMatrix<double> E = fromTriplets(2 * n, splitSpace_->numDofs(), et);
+  const Eigen::SparseMatrix<double> EK = E * Ksplit;
+  Tx_ = EK * P_;
+  Tj_ = EK * L_;
+  Tf_ = -E;
+
+  const Eigen::SparseMatrix<double> K = unsplitAssembler_->stiffness();
+  reduced_ = std::make_unique<ReducedSystem>(K, *dirichlet_);
+  factor_ = std::make_unique<SparseFactor>(backend);
+  return factor_->factor(reduced_->matrix());
+}
+
+void FractureSystem::setStep(const Eigen::VectorXd& loadSplit,
+                             const Eigen::VectorXd& accumulatedSlip) {
+  loadUnsplit_ = P_.transpose() * loadSplit;
+  sigmaLoad_ = Tf_ * loadSplit;
+  slip_ = accumulatedSlip;
+}
+
+void FractureSystem::solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma) {
+  FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before solving");
+  const Eigen::VectorXd Bj = B_ * j;
+  if (withLoads) {
+    const Eigen::VectorXd rhs = reduced_->rhs(Eigen::VectorXd(loadUnsplit_ - Bj), *dirichlet_);
+    x_ = reduced_->expand(factor_->solve(rhs), *dirichlet_);
+  } else {
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dirichlet_->numFixed());
+    const Eigen::VectorXd rhs = reduced_->rhs(Eigen::VectorXd(-Bj), zero);
+    x_ = reduced_->expand(factor_->solve(rhs), zero);
+  }
+  sigma = Tx_ * x_ + Tj_ * j;
+  if (withLoads) sigma += sigmaLoad_;
+  lastJump_ = j;
+}
+
+void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
+                            Eigen::VectorXd& sigmaN) {
+  const Index n = size();
+  Eigen::VectorXd j(2 * n);
+  for (Index k = 0; k < n; ++k) {
+    const double s = mask_[k] * (slip_[k] + beta[k]);
+    j.segment<2>(2 * k) = s * nodes_[k].tangent;
+  }
+  Eigen::VectorXd sigma;
+  solve(j, true, sigma);
+  tau.resize(n);
+  sigmaN.resize(n);
+  for (Index k = 0; k < n; ++k) {
+    const Vector2 S = sigma.segment<2>(2 * k);
+    tau[k] = S.dot(nodes_[k].tangent);
+    sigmaN[k] = S.dot(nodes_[k].normal);
+  }
+}
+
+void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
+                          Eigen::VectorXd& tauDual) {
+  const Index n = size();
+  Eigen::VectorXd j(2 * n);
+  for (Index k = 0; k < n; ++k)
+    j.segment<2>(2 * k) = mask_[k] * (qt[k] * nodes_[k].tangent + qn[k] * nodes_[k].normal);
+  Eigen::VectorXd sigma;
+  solve(j, false, sigma);
+  tauDual.resize(n);
+  for (Index k = 0; k < n; ++k) tauDual[k] = sigma.segment<2>(2 * k).dot(nodes_[k].tangent);
+}
+
+Eigen::VectorXd FractureSystem::lastSplitDisplacement() const { return P_ * x_ + L_ * lastJump_; }
+
+}  // namespace friction

@@ -1,0 +1,110 @@
+// FractureSystem: the elastic body with imposed jumps on its fractures, discretised as in
+// METHOD.md §2 — the finite-element SlipResponse of the control problem.
+//
+//  * Unknowns x are the dofs of the UNSPLIT mesh (interior dofs and the average ū on Γ); the
+//    split displacement is u_split = P x + L j, with L putting ±j/2 on the ⁺/⁻ copies.
+//  * K x = Pᵀ(f_split − K_split L j)  (52), where K = Pᵀ K_split P is the unsplit stiffness:
+//    it is assembled and factored once per run; every primal and dual solve is one
+//    back-substitution.
+//  * Traction recovery (53): with r = K_split u_split − f_split, Σ = M⁻¹(r⁺ − r⁻)/2 at the
+//    control nodes (M the lumped mass of Γ), σ_n = Σ·n_Γ, τ = Σ·t_Γ.
+// Control nodes are the fracture vertices (P1) and, for P2, also the midpoints of the
+// fracture edges, in arclength order. The jump is held at zero at tips (single nodes) and at
+// nodes on Dirichlet patches. Signs: SignConventions.hpp.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include "friction/control/SlipResponse.hpp"
+#include "friction/fe/DirichletConditions.hpp"
+#include "friction/fe/ElasticityAssembler.hpp"
+#include "friction/fe/LagrangeSpace.hpp"
+#include "friction/fe/Material.hpp"
+#include "friction/fracture/SplitMesh.hpp"
+#include "friction/linalg/SparseFactor.hpp"
+
+namespace friction {
+
+/// One node where β is defined.
+struct ControlNode {
+  int fracture = 0;       ///< index into SplitMesh::fractures
+  Index plus = 0;         ///< node of the split space on the Ω⁺ side
+  Index minus = 0;        ///< node on the Ω⁻ side (== plus at a tip)
+  Vector2 x = Vector2::Zero();
+  Vector2 normal = Vector2::Zero(), tangent = Vector2::Zero();
+  double arclength = 0;   ///< [m]
+  double weight = 0;      ///< lumped mass of Γ [m]
+  bool tip = false;       ///< single node: no jump
+  bool onDirichlet = false;  ///< on a Dirichlet patch: jump held at zero
+};
+
+class FractureSystem : public SlipResponse {
+ public:
+  /// degree: 1 or 2. The split mesh and material must outlive the system.
+  FractureSystem(const SplitMesh& split, int degree, const Material& material);
+
+  /// Dirichlet conditions live on the unsplit space: fix patches here, before factor().
+  DirichletConditions& dirichlet() { return *dirichlet_; }
+  const LagrangeSpace& splitSpace() const { return *splitSpace_; }
+  const LagrangeSpace& unsplitSpace() const { return *unsplitSpace_; }
+  const ElasticityAssembler& splitAssembler() const { return *splitAssembler_; }
+
+  /// Assemble the unsplit stiffness, eliminate the Dirichlet dofs and factor — once.
+  FactorStatus factor(const std::string& backend = "cholmod");
+  const SparseFactor& factorization() const { return *factor_; }
+
+  /// This step's data: the load vector on the SPLIT space (tractions, body force) [N], and
+  /// the accumulated slip s_n per control node [m]. Dirichlet values: set them on
+  /// dirichlet() before the solves.
+  void setStep(const Eigen::VectorXd& loadSplit, const Eigen::VectorXd& accumulatedSlip);
+
+  const std::vector<ControlNode>& controlNodes() const { return nodes_; }
+  /// Control nodes where the jump is held although the fracture is there (Dirichlet).
+  int numHeldOnDirichlet() const;
+
+  // SlipResponse
+  Eigen::Index size() const override { return static_cast<Eigen::Index>(nodes_.size()); }
+  const Eigen::VectorXd& weights() const override { return weights_; }
+  const Eigen::VectorXd& freeMask() const override { return mask_; }
+  void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
+              Eigen::VectorXd& sigmaN) override;
+  void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
+            Eigen::VectorXd& tauDual) override;
+
+  /// The split displacement [m] of the last primal solve (all split-space dofs).
+  Eigen::VectorXd lastSplitDisplacement() const;
+  /// The unsplit dofs x of the last primal solve (for tests: equal to the unsplit linear
+  /// solve when no jump is imposed).
+  const Eigen::VectorXd& lastUnsplitSolution() const { return x_; }
+
+ private:
+  // x and Σ (2 per control node, interleaved) for jump vector j (2 per control node).
+  void solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma);
+
+  const SplitMesh& split_;
+  const Material& material_;
+  Mesh unsplitMesh_;
+  std::unique_ptr<LagrangeSpace> splitSpace_, unsplitSpace_;
+  std::unique_ptr<ElasticityAssembler> splitAssembler_, unsplitAssembler_;
+  std::unique_ptr<DirichletConditions> dirichlet_;
+  std::unique_ptr<ReducedSystem> reduced_;
+  std::unique_ptr<SparseFactor> factor_;
+
+  std::vector<ControlNode> nodes_;
+  Eigen::VectorXd weights_, mask_;
+  Eigen::SparseMatrix<double> P_;   ///< split dofs × unsplit dofs
+  Eigen::SparseMatrix<double> L_;   ///< split dofs × 2·control nodes
+  Eigen::SparseMatrix<double> B_;   ///< Pᵀ K_split L
+  Eigen::SparseMatrix<double> Tx_;  ///< Σ from x: W⁻¹ (R⁺ − R⁻)/2 P
+  Eigen::SparseMatrix<double> Tj_;  ///< Σ from j: W⁻¹ (R⁺ − R⁻)/2 L
+  Eigen::SparseMatrix<double> Tf_;  ///< Σ from f_split: −W⁻¹ (E⁺ − E⁻)/2 (row selection)
+
+  Eigen::VectorXd loadUnsplit_, sigmaLoad_, slip_;
+  Eigen::VectorXd x_, lastJump_;
+};
+
+}  // namespace friction

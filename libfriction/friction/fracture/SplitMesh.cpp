@@ -1,0 +1,379 @@
+// Node splitting along fractures (METHOD.md §2). The rule is topological: around a fracture
+// node, the triangles that still share a non-fracture edge through the node form one side.
+// Geometry enters only to tell which side is Ω⁺ (SignConventions.hpp).
+#include "friction/fracture/SplitMesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+#include "friction/fracture/SignConventions.hpp"
+
+namespace friction {
+
+namespace {
+
+std::string fmtPoint(const Vector2& p) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(" << p.x() << " " << p.y() << ")";
+  return s.str();
+}
+
+std::uint64_t edgeKey(Index a, Index b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+
+// Minimal union-find over a few dozen triangles around one node.
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+struct EdgeTriangles {
+  Index tri[2] = {-1, -1};
+  int count = 0;
+};
+
+}  // namespace
+
+const char* toString(FractureNodeKind kind) {
+  switch (kind) {
+    case FractureNodeKind::interior: return "interior";
+    case FractureNodeKind::boundary: return "boundary";
+    case FractureNodeKind::tip: return "tip";
+  }
+  return "?";
+}
+
+Index FractureGeometry::numTips() const {
+  return static_cast<Index>(std::count(kind.begin(), kind.end(), FractureNodeKind::tip));
+}
+
+Index FractureGeometry::numDuplicated() const {
+  Index n = 0;
+  for (std::size_t i = 0; i < plus.size(); ++i) n += plus[i] != minus[i];
+  return n;
+}
+
+Index SplitMesh::numOriginalPoints() const {
+  Index n = 0;
+  for (Index o : origin) n = std::max(n, o + 1);
+  return n;
+}
+
+SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& specs) {
+  const std::string& file = mesh.source;
+  const Index nPoints = mesh.numPoints();
+
+  // Triangle sides -> the (at most two) triangles they bound.
+  std::unordered_map<std::uint64_t, EdgeTriangles> sides;
+  sides.reserve(mesh.triangles.size() * 2);
+  for (Index t = 0; t < mesh.numTriangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      EdgeTriangles& e = sides[edgeKey(tri[k], tri[(k + 1) % 3])];
+      if (e.count < 2) e.tri[e.count] = t;
+      ++e.count;
+    }
+  }
+  for (const auto& [key, e] : sides) {
+    if (e.count > 2) {
+      const Index a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
+      throw InputError(file, "the mesh is not a valid 2D triangulation: the edge " +
+                                 fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
+                                 " is a side of " + std::to_string(e.count) +
+                                 " triangles (at most 2 expected)");
+    }
+  }
+
+  // Points that coincide with another point (only a split mesh has them).
+  auto hasTwin = [&](Index v) {
+    for (Index w = 0; w < nPoints; ++w)
+      if (w != v && (mesh.points[w] - mesh.points[v]).norm() <= 1e-12 * (1 + mesh.points[v].norm()))
+        return true;
+    return false;
+  };
+
+  // 1. Collect each fracture's edges and check each is an interior side of the triangulation.
+  std::vector<std::vector<std::array<Index, 2>>> fracEdges(specs.size());
+  std::unordered_map<std::uint64_t, int> fractureOfEdge;  // edge key -> fracture index
+  for (std::size_t f = 0; f < specs.size(); ++f) {
+    const FractureSpec& spec = specs[f];
+    for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+      if (mesh.edgeLabel[e] != spec.label) continue;
+      const auto [a, b] = mesh.edges[e];
+      const std::uint64_t key = edgeKey(a, b);
+      auto it = fractureOfEdge.find(key);
+      if (it != fractureOfEdge.end()) {
+        if (it->second == static_cast<int>(f)) continue;  // listed twice in one patch
+        throw InputError(spec.where, "fractures '" + specs[it->second].name + "' and '" +
+                                         spec.name + "' share the edge " +
+                                         fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
+                                         " of " + file + ": a fracture patch must be listed once");
+      }
+      auto side = sides.find(key);
+      if (side == sides.end())
+        throw InputError(file, "fracture '" + spec.name + "': its edge " +
+                                   fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
+                                   " is not a side of any triangle");
+      if (side->second.count == 1) {
+        if (hasTwin(a) || hasTwin(b))
+          throw InputError(file, "fracture '" + spec.name + "' is already split in this mesh " +
+                                     "(its edge " + fmtPoint(mesh.points[a]) + "-" +
+                                     fmtPoint(mesh.points[b]) +
+                                     " bounds one triangle and its nodes have coincident " +
+                                     "copies); give splitFractureNodes the unsplit mesh");
+        throw InputError(file, "fracture '" + spec.name + "': its edge " +
+                                   fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
+                                   " lies on the outer boundary of the mesh; a fracture must be "
+                                   "inside the body (a side of two triangles)");
+      }
+      fractureOfEdge.emplace(key, static_cast<int>(f));
+      fracEdges[f].push_back({a, b});
+    }
+    if (fracEdges[f].empty())
+      throw InputError(spec.where, "fracture '" + spec.name + "' (label " +
+                                       std::to_string(spec.label) + ") has no edges in " + file);
+  }
+
+  // 2. Node -> incident fracture edges; more than two, or two fractures meeting, is a junction.
+  std::unordered_map<Index, std::vector<std::pair<int, Index>>> nodeEdges;  // (fracture, other end)
+  for (std::size_t f = 0; f < specs.size(); ++f)
+    for (const auto& [a, b] : fracEdges[f]) {
+      nodeEdges[a].push_back({static_cast<int>(f), b});
+      nodeEdges[b].push_back({static_cast<int>(f), a});
+    }
+  for (const auto& [v, list] : nodeEdges) {
+    bool mixed = false;
+    for (const auto& fe : list) mixed |= fe.first != list.front().first;
+    if (mixed)
+      throw InputError(file, "fractures '" + specs[list[0].first].name + "' and '" +
+                                 specs[list[1].first].name + "' meet at " +
+                                 fmtPoint(mesh.points[v]) +
+                                 ": fracture junctions are a later feature, not supported yet");
+    if (list.size() > 2)
+      throw InputError(file, "fracture '" + specs[list[0].first].name + "' branches at " +
+                                 fmtPoint(mesh.points[v]) + " (" + std::to_string(list.size()) +
+                                 " fracture edges meet there): fracture junctions are a later "
+                                 "feature, not supported yet");
+  }
+
+  // A curve whose nodes all have two fracture edges is closed: refuse before anything else.
+  for (std::size_t f = 0; f < specs.size(); ++f) {
+    bool hasEnd = false;
+    for (const auto& [a, b] : fracEdges[f]) hasEnd |= nodeEdges[a].size() == 1 || nodeEdges[b].size() == 1;
+    if (!hasEnd)
+      throw InputError(specs[f].where, "fracture '" + specs[f].name +
+                                           "' is a closed curve; only open fractures (two ends) "
+                                           "are supported");
+  }
+
+  // 3. A triangle with all three vertices on one fracture has no node off it: refuse.
+  for (Index t = 0; t < mesh.numTriangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    int f0 = -2;
+    bool all = true;
+    for (int k = 0; k < 3 && all; ++k) {
+      auto it = nodeEdges.find(tri[k]);
+      if (it == nodeEdges.end()) { all = false; break; }
+      const int f = it->second.front().first;
+      if (f0 != -2 && f != f0) all = false;
+      f0 = f;
+    }
+    if (all)
+      throw InputError(file, "triangle " + std::to_string(t + 1) + " " +
+                                 fmtPoint(mesh.points[tri[0]]) + " " +
+                                 fmtPoint(mesh.points[tri[1]]) + " " +
+                                 fmtPoint(mesh.points[tri[2]]) +
+                                 " has all three vertices on fracture '" + specs[f0].name +
+                                 "', so it cannot be assigned to one side; refining the mesh "
+                                 "near the fracture (a smaller element size there) removes it");
+  }
+
+  // Node -> incident triangles, for the nodes on fractures only.
+  std::unordered_map<Index, std::vector<Index>> fan;
+  for (Index t = 0; t < mesh.numTriangles(); ++t)
+    for (Index v : mesh.triangles[t])
+      if (nodeEdges.count(v)) fan[v].push_back(t);
+
+  SplitMesh out;
+  out.mesh.source = mesh.source;
+  out.mesh.format = mesh.format;
+  out.mesh.points = mesh.points;
+  out.mesh.triangles = mesh.triangles;
+  out.mesh.triangleRegion = mesh.triangleRegion;
+  out.mesh.labelNames = mesh.labelNames;
+  out.mesh.regionNames = mesh.regionNames;
+  out.origin.resize(nPoints);
+  std::iota(out.origin.begin(), out.origin.end(), 0);
+
+  // 4. Per fracture: order the nodes along the curve, then split each node.
+  for (std::size_t f = 0; f < specs.size(); ++f) {
+    const FractureSpec& spec = specs[f];
+    // Ends are the nodes with one fracture edge. A curve whose nodes all have two is closed.
+    std::vector<Index> ends;
+    std::vector<Index> nodesOfF;
+    for (const auto& [a, b] : fracEdges[f])
+      for (Index v : {a, b})
+        if (std::find(nodesOfF.begin(), nodesOfF.end(), v) == nodesOfF.end()) nodesOfF.push_back(v);
+    for (Index v : nodesOfF)
+      if (nodeEdges[v].size() == 1) ends.push_back(v);
+    auto lexLess = [&](Index a, Index b) {
+      const Vector2 &p = mesh.points[a], &q = mesh.points[b];
+      return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+    };
+    const Index start = *std::min_element(ends.begin(), ends.end(), lexLess);
+
+    FractureGeometry g;
+    g.name = spec.name;
+    g.label = spec.label;
+    Index prev = -1, cur = start;
+    while (cur != -1) {
+      g.node.push_back(cur);
+      Index next = -1;
+      for (const auto& fe : nodeEdges[cur])
+        if (fe.second != prev) next = fe.second;
+      prev = cur;
+      cur = next;
+    }
+    if (g.node.size() != nodesOfF.size()) {
+      throw InputError(spec.where, "fracture '" + spec.name + "' (label " +
+                                       std::to_string(spec.label) +
+                                       ") is not one connected curve; give each curve its own "
+                                       "label and list each as a fracture");
+    }
+
+    // Tangent at a node: the direction of the chord between its neighbours, i.e. the sum
+    // of the adjacent edge vectors. This is the length-weighted average of the edge
+    // tangents, which is what the lumped (trapezoid) mass of Γ pairs with.
+    const std::size_t n = g.node.size();
+    g.tangent.resize(n);
+    g.normal.resize(n);
+    g.arclength.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vector2 a = mesh.points[g.node[i == 0 ? 0 : i - 1]];
+      const Vector2 b = mesh.points[g.node[i + 1 == n ? n - 1 : i + 1]];
+      g.tangent[i] = (b - a).normalized();
+      g.normal[i] = normalFromTangent(g.tangent[i]);
+      g.arclength[i] = i == 0 ? 0.0
+                              : g.arclength[i - 1] +
+                                    (mesh.points[g.node[i]] - mesh.points[g.node[i - 1]]).norm();
+    }
+
+    // Split each node: union the triangles of its fan across non-fracture sides.
+    g.plus.resize(n);
+    g.minus.resize(n);
+    g.kind.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Index v = g.node[i];
+      const std::vector<Index>& tris = fan[v];
+      UnionFind uf(static_cast<int>(tris.size()));
+      for (std::size_t p = 0; p < tris.size(); ++p)
+        for (Index w : mesh.triangles[tris[p]]) {
+          if (w == v) continue;
+          const std::uint64_t key = edgeKey(v, w);
+          if (fractureOfEdge.count(key)) continue;
+          const EdgeTriangles& e = sides.at(key);
+          if (e.count != 2) continue;
+          const Index other = e.tri[0] == tris[p] ? e.tri[1] : e.tri[0];
+          const auto q = std::find(tris.begin(), tris.end(), other) - tris.begin();
+          uf.unite(static_cast<int>(p), static_cast<int>(q));
+        }
+      std::map<int, std::vector<Index>> groups;  // root -> triangles of one side
+      for (std::size_t p = 0; p < tris.size(); ++p) groups[uf.find(static_cast<int>(p))].push_back(tris[p]);
+
+      if (groups.size() == 1) {
+        if (nodeEdges[v].size() != 1)
+          throw InputError(file, "fracture '" + spec.name + "' at " + fmtPoint(mesh.points[v]) +
+                                     ": the triangles around this node are not separated by "
+                                     "the fracture (is the mesh conforming to the fracture?)");
+        g.kind[i] = FractureNodeKind::tip;
+        g.plus[i] = g.minus[i] = v;
+        continue;
+      }
+      if (groups.size() > 2)
+        throw InputError(file, "fracture '" + spec.name + "' at " + fmtPoint(mesh.points[v]) +
+                                   ": the fracture cuts the triangles around this node into " +
+                                   std::to_string(groups.size()) +
+                                   " groups (2 expected); the mesh is not a manifold here");
+      g.kind[i] = nodeEdges[v].size() == 1 ? FractureNodeKind::boundary : FractureNodeKind::interior;
+
+      // Which group is Ω⁺: take a triangle of the group that has a fracture edge (v, w) and
+      // see on which side of that edge its third vertex lies. Ω⁺ is where (x − x_v)·n < 0.
+      int sideOf[2] = {0, 0};
+      int gi = 0;
+      for (const auto& [root, list] : groups) {
+        for (Index t : list) {
+          const auto& tri = mesh.triangles[t];
+          for (const auto& fe : nodeEdges[v]) {
+            const Index w = fe.second;
+            if (std::find(tri.begin(), tri.end(), w) == tri.end()) continue;
+            Index c = -1;
+            for (Index x : tri)
+              if (x != v && x != w) c = x;
+            // Edge normal of (v, w) in the walking direction of the fracture.
+            const bool forward = (i + 1 < n && g.node[i + 1] == w);
+            Vector2 dir = mesh.points[w] - mesh.points[v];
+            if (!forward) dir = -dir;
+            const double s = (mesh.points[c] - mesh.points[v]).dot(normalFromTangent(dir));
+            sideOf[gi] = s < 0 ? +1 : -1;
+            break;
+          }
+          if (sideOf[gi] != 0) break;
+        }
+        ++gi;
+      }
+      if (sideOf[0] == 0 || sideOf[1] == 0 || sideOf[0] == sideOf[1])
+        throw InputError(file, "fracture '" + spec.name + "' at " + fmtPoint(mesh.points[v]) +
+                                   ": cannot tell the two sides of the fracture apart (folded "
+                                   "or inverted triangles next to it?)");
+
+      // The Ω⁺ copy keeps the node number; the Ω⁻ copy is appended.
+      const Index copy = static_cast<Index>(out.mesh.points.size());
+      out.mesh.points.push_back(mesh.points[v]);
+      out.origin.push_back(v);
+      gi = 0;
+      for (const auto& [root, list] : groups) {
+        if (sideOf[gi++] < 0)
+          for (Index t : list)
+            for (Index& x : out.mesh.triangles[t])
+              if (x == v) x = copy;
+      }
+      g.plus[i] = v;
+      g.minus[i] = copy;
+    }
+    out.fractures.push_back(std::move(g));
+  }
+
+  // 5. Boundary patches follow the copies their triangle uses.
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    const auto [a, b] = mesh.edges[e];
+    if (fractureOfEdge.count(edgeKey(a, b))) continue;
+    auto side = sides.find(edgeKey(a, b));
+    if (side == sides.end())
+      throw InputError(file, "edge " + fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
+                                 " with label " + std::to_string(mesh.edgeLabel[e]) +
+                                 " is not a side of any triangle");
+    const auto& orig = mesh.triangles[side->second.tri[0]];
+    const auto& split = out.mesh.triangles[side->second.tri[0]];
+    std::array<Index, 2> ne{a, b};
+    for (Index& x : ne)
+      for (int k = 0; k < 3; ++k)
+        if (orig[k] == x) { x = split[k]; break; }
+    out.mesh.edges.push_back(ne);
+    out.mesh.edgeLabel.push_back(mesh.edgeLabel[e]);
+  }
+  return out;
+}
+
+}  // namespace friction

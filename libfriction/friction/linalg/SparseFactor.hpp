@@ -1,0 +1,101 @@
+// SparseFactor: "factor once, solve many" for the symmetric positive definite reduced
+// stiffness matrix (METHOD.md §2: every primal and dual solve of a run reuses one factor).
+//
+// Backends, chosen by name:
+//   cholmod         CHOLMOD supernodal LLᵀ (SuiteSparse) through Eigen's CholmodSupernodalLLT;
+//                   fill-reducing ordering by CHOLMOD (AMD / METIS). The default.
+//   simplicialLDLT  Eigen's SimplicialLDLT with AMD ordering: no external library; slower on
+//                   large 2D problems, kept as a fallback and a cross-check.
+// Both read the lower triangle of the matrix, so full and lower storage are both fine.
+//
+// A failed factorisation is a value (FactorStatus), not an exception or a crash: the caller
+// logs it and stops the run cleanly (STYLE.md "Errors and numbers").
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "friction/core/InputError.hpp"
+
+namespace friction {
+
+enum class FactorStatus {
+  ok,                   ///< factor is usable
+  notPositiveDefinite,  ///< a pivot was ≤ 0 or negligible: the matrix is singular (e.g. a
+                        ///< rigid-body mode left unfixed) or indefinite
+  failed                ///< the backend failed otherwise (out of memory, bad input)
+};
+
+/// "ok", "notPositiveDefinite", "failed".
+const char* toString(FactorStatus status);
+
+class SparseFactor {
+ public:
+  /// Select the backend by name (see backendNames()). Throws InputError naming `where`
+  /// (the dictionary entry that chose it, if any) and listing the valid names on a typo.
+  explicit SparseFactor(const std::string& backend = "cholmod", const SourceLocation& where = {});
+  ~SparseFactor();
+  SparseFactor(SparseFactor&&) noexcept;
+  SparseFactor& operator=(SparseFactor&&) noexcept;
+  SparseFactor(const SparseFactor&) = delete;
+  SparseFactor& operator=(const SparseFactor&) = delete;
+
+  /// Valid backend names, in the order of the table in SparseFactor.cpp.
+  static std::vector<std::string> backendNames();
+  const std::string& backend() const { return backend_; }
+
+  /// Analyse and factor the symmetric matrix A (its lower triangle is read). Besides the
+  /// backend's own check, every pivot d_k (D of LDLᵀ, or L_kk² of LLᵀ) must exceed
+  /// pivotTolerance() · A_kk in the factor's ordering; otherwise the status is
+  /// notPositiveDefinite. That catches singular matrices whose last pivot is round-off.
+  FactorStatus factor(const Eigen::SparseMatrix<double>& A);
+  FactorStatus status() const { return status_; }
+  /// Whether the last factor() succeeded, i.e. solve() may be called.
+  bool ok() const { return status_ == FactorStatus::ok && factored_; }
+
+  /// Relative pivot tolerance (default 1e-12). A pivot below it means the matrix is
+  /// numerically singular: the condition number would exceed about 1/tolerance.
+  double pivotTolerance() const { return pivotTolerance_; }
+  void setPivotTolerance(double tolerance) { pivotTolerance_ = tolerance; }
+  /// Smallest d_k / A_kk of the last factorisation (diagnostics: a tiny value warns of a
+  /// nearly singular problem even when the status is ok). NaN before the first factor().
+  double minPivotRatio() const { return minPivotRatio_; }
+
+  /// x = A⁻¹ b (one back-substitution). Requires ok() (debug assert). An Eigen expression
+  /// must be evaluated first (VectorXd(expr)): both overloads would accept it.
+  Eigen::VectorXd solve(const Eigen::VectorXd& b);
+  /// X = A⁻¹ B, one back-substitution per column.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B);
+
+  /// Order of the factored matrix (0 before the first factor()).
+  Eigen::Index rows() const { return rows_; }
+  /// Number of factor() calls (successful or not).
+  long numFactorizations() const { return numFactorizations_; }
+  /// Number of right-hand sides solved for (a k-column solve counts k).
+  long numSolves() const { return numSolves_; }
+  /// Wall time spent in factor() [s], all calls; and in solve() [s].
+  double factorSeconds() const { return factorSeconds_; }
+  double solveSeconds() const { return solveSeconds_; }
+
+  /// The backend interface (defined in SparseFactor.cpp).
+  class Backend;
+
+ private:
+  std::string backend_;
+  std::unique_ptr<Backend> impl_;
+  FactorStatus status_ = FactorStatus::failed;
+  bool factored_ = false;
+  Eigen::Index rows_ = 0;
+  double pivotTolerance_ = 1e-12;
+  double minPivotRatio_ = std::numeric_limits<double>::quiet_NaN();
+  long numFactorizations_ = 0;
+  long numSolves_ = 0;
+  double factorSeconds_ = 0.0;
+  double solveSeconds_ = 0.0;
+};
+
+}  // namespace friction

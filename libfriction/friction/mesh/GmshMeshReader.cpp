@@ -1,0 +1,646 @@
+// Reader for gmsh ASCII .msh, versions 2.2 and 4.1: $MeshFormat, $PhysicalNames, $Entities
+// (4.1), $Nodes, $Elements; other sections are skipped. Line elements (type 1) become edges
+// labelled by their physical curve, triangles (type 2) take their physical surface as region,
+// points (type 15) are ignored; anything else is an error. Node tags may be arbitrary
+// (non-contiguous, in any order); nodes are numbered 0, 1, ... in file order.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+#include "friction/mesh/MeshReaderDetail.hpp"
+
+namespace friction::detail {
+
+namespace {
+
+std::string formatNumber(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+const char* elementTypeName(long long type) {
+  switch (type) {
+    case 1: return "2-node line";
+    case 2: return "3-node triangle";
+    case 3: return "4-node quadrangle";
+    case 4: return "4-node tetrahedron";
+    case 5: return "8-node hexahedron";
+    case 6: return "6-node prism";
+    case 7: return "5-node pyramid";
+    case 8: return "3-node second-order line";
+    case 9: return "6-node second-order triangle";
+    case 10: return "9-node second-order quadrangle";
+    case 11: return "10-node second-order tetrahedron";
+    case 15: return "1-node point";
+    case 16: return "8-node second-order quadrangle";
+    case 20: return "9-node third-order triangle";
+    case 21: return "10-node third-order triangle";
+    case 26: return "4-node third-order line";
+    default: return "element";
+  }
+}
+
+// Tells what to do about an element type the solver does not take.
+std::string elementTypeAdvice(long long type) {
+  const bool highOrder = (type >= 8 && type <= 14) || (type >= 16 && type <= 31);
+  if (highOrder)
+    return "P2 nodes are built from the P1 mesh: mesh with order 1 (gmsh -order 1, or "
+           "Mesh.ElementOrder = 1)";
+  if (type == 3)
+    return "the solver takes triangles only: do not recombine (no Recombine Surface, "
+           "Mesh.RecombineAll = 0)";
+  if (type >= 4 && type <= 7) return "the solver is 2D: mesh with gmsh -2 and no volumes";
+  return "mesh with gmsh -2 -order 1 and no recombination";
+}
+
+// Node tag -> 0-based index. Tags are usually dense (1..n) and then a vector is fastest;
+// sparse tags (e.g. 10^9-based) fall back to a sorted table and binary search.
+class NodeMap {
+ public:
+  /// Build from tags in file order; `lines` gives each tag's line for duplicate messages.
+  void build(const TextScanner& s, const std::vector<long long>& tags,
+             const std::vector<int>& lines) {
+    long long maxTag = 0;
+    for (long long t : tags) maxTag = std::max(maxTag, t);
+    const long long n = static_cast<long long>(tags.size());
+    dense_ = maxTag <= 4 * n + 1024;
+    if (dense_) {
+      index_.assign(static_cast<std::size_t>(maxTag) + 1, -1);
+      for (long long i = 0; i < n; ++i) {
+        Index& slot = index_[tags[i]];
+        if (slot >= 0) duplicate(s, tags[i], lines[slot], lines[i]);
+        slot = static_cast<Index>(i);
+      }
+    } else {
+      sorted_.resize(n);
+      for (long long i = 0; i < n; ++i) sorted_[i] = {tags[i], static_cast<Index>(i)};
+      std::sort(sorted_.begin(), sorted_.end());
+      for (long long i = 1; i < n; ++i)
+        if (sorted_[i].first == sorted_[i - 1].first)
+          duplicate(s, sorted_[i].first, lines[sorted_[i - 1].second], lines[sorted_[i].second]);
+    }
+  }
+
+  /// Index of a tag, or -1 if no node has it.
+  Index find(long long tag) const {
+    if (dense_) return tag >= 0 && tag < static_cast<long long>(index_.size()) ? index_[tag] : -1;
+    auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::make_pair(tag, Index(-1)));
+    return it != sorted_.end() && it->first == tag ? it->second : -1;
+  }
+
+ private:
+  [[noreturn]] static void duplicate(const TextScanner& s, long long tag, int firstLine,
+                                     int secondLine) {
+    s.failAt(std::max(firstLine, secondLine),
+             "node tag " + std::to_string(tag) + " is defined twice (lines " +
+                 std::to_string(std::min(firstLine, secondLine)) + " and " +
+                 std::to_string(std::max(firstLine, secondLine)) +
+                 "): expected each node tag once in $Nodes");
+  }
+
+  bool dense_ = true;
+  std::vector<Index> index_;
+  std::vector<std::pair<long long, Index>> sorted_;
+};
+
+class GmshParser {
+ public:
+  explicit GmshParser(TextScanner& scanner) : s_(scanner) {}
+
+  Mesh parse() {
+    mesh_.source = s_.path();
+    if (!s_.next()) s_.fail("the file is empty: expected a gmsh mesh starting with $MeshFormat");
+    if (s_.line() != "$MeshFormat")
+      s_.fail("expected $MeshFormat (the first line of a gmsh .msh file), found " +
+              s_.quotedLine());
+    readMeshFormat();
+    while (s_.next()) {
+      const std::string_view l = s_.line();
+      if (l.front() != '$')
+        s_.fail("expected the start of a section such as $Nodes or $Elements, found " +
+                s_.quotedLine());
+      if (l == "$PhysicalNames") {
+        once(physicalNamesLine_);
+        readPhysicalNames();
+      } else if (l == "$Entities" && version_ == 41) {
+        once(entitiesLine_);
+        readEntities();
+      } else if (l == "$Nodes") {
+        once(nodesLine_);
+        version_ == 41 ? readNodes41() : readNodes22();
+        checkPlanar();
+        nodeMap_.build(s_, nodeTags_, nodeLines_);
+      } else if (l == "$Elements") {
+        once(elementsLine_);
+        if (!nodesLine_) s_.fail("$Elements comes before $Nodes: expected $Nodes first");
+        version_ == 41 ? readElements41() : readElements22();
+      } else if (l == "$PartitionedEntities") {
+        s_.fail("partitioned meshes are not supported: expected a mesh saved without "
+                "partitions (no -part, or Mesh.NbPartitions = 0)");
+      } else if (l.substr(0, 4) == "$End" || l == "$MeshFormat") {
+        s_.fail("unexpected " + s_.quotedLine() +
+                ": expected the start of a section such as $Nodes or $Elements");
+      } else {
+        skipSection();
+      }
+    }
+    if (!nodesLine_) s_.fail("the file has no $Nodes section: expected $Nodes and $Elements");
+    if (!elementsLine_) s_.fail("the file has no $Elements section: expected $Elements");
+    if (mesh_.triangles.empty())
+      s_.failAt(elementsLine_,
+                "$Elements holds no 3-node triangles (type 2): expected a 2D mesh (gmsh -2) "
+                "whose surfaces are in physical groups (or Mesh.SaveAll = 1)");
+    return std::move(mesh_);
+  }
+
+ private:
+  // ---- sections and lines -----------------------------------------------------------
+
+  void once(int& sectionLine) {
+    if (sectionLine)
+      s_.fail("a second " + s_.quotedLine() + " section (the first is at line " +
+              std::to_string(sectionLine) + "): expected each section once");
+    sectionLine = s_.lineNumber();
+  }
+
+  std::string sectionName(int openLine) const {
+    return std::string(openLine == nodesLine_          ? "$Nodes"
+                       : openLine == elementsLine_     ? "$Elements"
+                       : openLine == entitiesLine_     ? "$Entities"
+                       : openLine == physicalNamesLine_ ? "$PhysicalNames"
+                                                        : "$MeshFormat");
+  }
+
+  // Move to the next line of a section's data, which must not be the section's end yet.
+  void dataLine(int openLine, const char* items, long long found, long long announced,
+                const char* syntax) {
+    const std::string section = sectionName(openLine);
+    if (!s_.next())
+      s_.fail("unexpected end of file in " + section + " (opened at line " +
+              std::to_string(openLine) + "): it announces " + std::to_string(announced) + " " +
+              items + ", found " + std::to_string(found) + "; expected another line \"" +
+              syntax + "\"");
+    if (s_.line().front() == '$')
+      s_.fail(s_.quotedLine() + " ends " + section + " (opened at line " +
+              std::to_string(openLine) + ") early: it announces " + std::to_string(announced) +
+              " " + items + ", found " + std::to_string(found) + "; expected another line \"" +
+              syntax + "\"");
+  }
+
+  [[noreturn]] void syntaxError(const std::string& item, const char* syntax) {
+    s_.fail("expected " + item + " as \"" + syntax + "\", found " + s_.quotedLine());
+  }
+
+  void expectEnd(int openLine, const std::string& after) {
+    const std::string section = sectionName(openLine);
+    const std::string end = "$End" + section.substr(1);
+    if (!s_.next())
+      s_.fail("missing " + end + ": the file ends inside " + section + " (opened at line " +
+              std::to_string(openLine) + ")");
+    if (s_.line() != end)
+      s_.fail("expected " + end + " to close " + section + " (opened at line " +
+              std::to_string(openLine) + ") after " + after + ", found " + s_.quotedLine());
+  }
+
+  void skipSection() {
+    const int openLine = s_.lineNumber();
+    const std::string name(s_.line());
+    const std::string end = "$End" + name.substr(1);
+    while (s_.next())
+      if (s_.line() == end) return;
+    s_.fail("missing " + end + ": the file ends inside " + name + " (opened at line " +
+            std::to_string(openLine) + ")");
+  }
+
+  long long count(const char* syntax, const std::string& what) {
+    if (!s_.next()) s_.fail("unexpected end of file: expected " + what + " \"" + syntax + "\"");
+    LineFields f = s_.fields();
+    long long n;
+    if (!f.integer(n) || !f.done() || n < 0 || n > std::numeric_limits<Index>::max())
+      syntaxError(what, syntax);
+    return n;
+  }
+
+  // ---- $MeshFormat, $PhysicalNames, $Entities -----------------------------------------
+
+  void readMeshFormat() {
+    const int openLine = s_.lineNumber();
+    static constexpr const char* syntax = "version file-type data-size";
+    if (!s_.next()) s_.fail("missing $EndMeshFormat: the file ends inside $MeshFormat");
+    LineFields f = s_.fields();
+    std::string_view version;
+    long long fileType, dataSize;
+    if (!f.token(version) || !f.integer(fileType) || !f.integer(dataSize) || !f.done())
+      syntaxError("the $MeshFormat line", syntax);
+    if (version == "2.2") {
+      version_ = 22;
+      mesh_.format = "gmsh .msh 2.2";
+    } else if (version == "4.1") {
+      version_ = 41;
+      mesh_.format = "gmsh .msh 4.1";
+    } else {
+      s_.fail("gmsh format version " + std::string(version) +
+              " is not supported: expected 2.2 or 4.1 (gmsh -format msh41 or -format msh22)");
+    }
+    if (fileType != 0)
+      s_.fail("this is a binary gmsh file (file-type " + std::to_string(fileType) +
+              " in $MeshFormat): expected an ASCII file (file-type 0); save it with gmsh -2 "
+              "-format msh41 without -bin, or Mesh.Binary = 0");
+    const int formatLine = openLine;
+    if (!s_.next())
+      s_.fail("missing $EndMeshFormat: the file ends inside $MeshFormat (opened at line " +
+              std::to_string(formatLine) + ")");
+    if (s_.line() != "$EndMeshFormat")
+      s_.fail("expected $EndMeshFormat to close $MeshFormat (opened at line " +
+              std::to_string(formatLine) + ") after \"" + syntax + "\", found " +
+              s_.quotedLine());
+  }
+
+  void readPhysicalNames() {
+    const int openLine = physicalNamesLine_;
+    static constexpr const char* syntax = "dimension tag \"name\"";
+    const long long n = count("numPhysicalNames", "the number of physical names");
+    for (long long i = 0; i < n; ++i) {
+      dataLine(openLine, "physical names", i, n, syntax);
+      LineFields f = s_.fields();
+      long long dim, tag;
+      if (!f.integer(dim) || !f.integer(tag) || !fitsInt(tag))
+        syntaxError("physical name " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
+      const std::string_view q = f.rest();
+      if (q.size() < 2 || q.front() != '"' || q.back() != '"')
+        syntaxError("physical name " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
+      const std::string name(q.substr(1, q.size() - 2));
+      if (dim == 1) mesh_.labelNames[static_cast<int>(tag)] = name;
+      if (dim == 2) mesh_.regionNames[static_cast<int>(tag)] = name;
+    }
+    expectEnd(openLine, "the " + std::to_string(n) + " names it announces");
+  }
+
+  // One line of $Entities: the physical tags of a point, curve, surface or volume.
+  std::vector<int> readEntity(int dim, long long i, long long n, long long& tag) {
+    static const char* syntaxes[] = {
+        "tag x y z numPhysicalTags physicalTags...",
+        "tag minX minY minZ maxX maxY maxZ numPhysicalTags physicalTags... numBoundingPoints "
+        "pointTags...",
+        "tag minX minY minZ maxX maxY maxZ numPhysicalTags physicalTags... numBoundingCurves "
+        "curveTags...",
+        "tag minX minY minZ maxX maxY maxZ numPhysicalTags physicalTags... numBoundingSurfaces "
+        "surfaceTags..."};
+    static const char* kinds[] = {"points", "curves", "surfaces", "volumes"};
+    dataLine(entitiesLine_, kinds[dim], i, n, syntaxes[dim]);
+    const auto bad = [&] {
+      syntaxError(std::string(kinds[dim]).substr(0, std::string(kinds[dim]).size() - 1) + " " +
+                      std::to_string(i + 1) + " of " + std::to_string(n),
+                  syntaxes[dim]);
+    };
+    LineFields f = s_.fields();
+    double box;
+    if (!f.integer(tag)) bad();
+    for (int k = 0; k < (dim == 0 ? 3 : 6); ++k)
+      if (!f.real(box)) bad();
+    long long numPhysical, numBounding, t;
+    if (!f.integer(numPhysical) || numPhysical < 0) bad();
+    std::vector<int> physical;
+    for (long long k = 0; k < numPhysical; ++k) {
+      if (!f.integer(t) || !fitsInt(t)) bad();
+      physical.push_back(static_cast<int>(t));
+    }
+    if (dim > 0) {
+      if (!f.integer(numBounding) || numBounding < 0) bad();
+      for (long long k = 0; k < numBounding; ++k)
+        if (!f.integer(t)) bad();
+    }
+    if (!f.done()) bad();
+    return physical;
+  }
+
+  void readEntities() {
+    static constexpr const char* syntax = "numPoints numCurves numSurfaces numVolumes";
+    if (!s_.next()) s_.fail("unexpected end of file: expected \"" + std::string(syntax) + "\"");
+    if (s_.line().front() == '$') syntaxError("the $Entities header", syntax);
+    LineFields f = s_.fields();
+    long long n[4];
+    for (long long& c : n)
+      if (!f.integer(c) || c < 0) syntaxError("the $Entities header", syntax);
+    if (!f.done()) syntaxError("the $Entities header", syntax);
+    for (int dim = 0; dim < 4; ++dim)
+      for (long long i = 0; i < n[dim]; ++i) {
+        long long tag;
+        std::vector<int> physical = readEntity(dim, i, n[dim], tag);
+        if (dim == 1 || dim == 2) {
+          auto& table = dim == 1 ? curvePhysical_ : surfacePhysical_;
+          table[tag] = std::move(physical);
+        }
+      }
+    expectEnd(entitiesLine_, "the " + std::to_string(n[0] + n[1] + n[2] + n[3]) +
+                                 " entities it announces");
+  }
+
+  // ---- $Nodes ------------------------------------------------------------------------
+
+  void addNode(long long tag, int line) {
+    if (tag < 1) s_.failAt(line, "node tag " + std::to_string(tag) + ": expected a tag >= 1");
+    nodeTags_.push_back(tag);
+    nodeLines_.push_back(line);
+  }
+
+  void setCoordinates(std::size_t i, double x, double y, double z, int line) {
+    checkFinite(s_, x, y, "node", nodeTags_[i]);
+    if (!std::isfinite(z))
+      s_.fail("node " + std::to_string(nodeTags_[i]) +
+              " has z that is not a finite number: expected z = 0");
+    mesh_.points[i] = Vector2(x, y);
+    scale_ = std::max({scale_, std::abs(x), std::abs(y)});
+    if (std::abs(z) > maxAbsZ_) {
+      maxAbsZ_ = std::abs(z);
+      maxAbsZValue_ = z;
+      maxAbsZNode_ = i;
+      maxAbsZLine_ = line;
+    }
+  }
+
+  // gmsh writes 2D meshes in the plane z = 0; a nonzero z (beyond round-off) means a 3D or
+  // rotated geometry whose projection would be wrong.
+  void checkPlanar() {
+    if (maxAbsZ_ <= 1e-10 * scale_) return;
+    s_.failAt(maxAbsZLine_,
+              "node " + std::to_string(nodeTags_[maxAbsZNode_]) + " has z = " +
+                  formatNumber(maxAbsZValue_) + ": expected a 2D mesh in the plane z = 0 (|z| <= 1e-10 "
+                  "times the largest |x|, |y|)");
+  }
+
+  void readNodes22() {
+    static constexpr const char* syntax = "tag x y z";
+    const long long n = count("numNodes", "the number of nodes");
+    nodeTags_.reserve(n);
+    nodeLines_.reserve(n);
+    mesh_.points.resize(n);
+    for (long long i = 0; i < n; ++i) {
+      dataLine(nodesLine_, "nodes", i, n, syntax);
+      LineFields f = s_.fields();
+      long long tag;
+      double x, y, z;
+      if (!f.integer(tag) || !f.real(x) || !f.real(y) || !f.real(z) || !f.done())
+        syntaxError("node " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
+      addNode(tag, s_.lineNumber());
+      setCoordinates(i, x, y, z, s_.lineNumber());
+    }
+    expectEnd(nodesLine_, "the " + std::to_string(n) + " nodes it announces");
+  }
+
+  void readNodes41() {
+    static constexpr const char* headerSyntax = "numEntityBlocks numNodes minNodeTag maxNodeTag";
+    static constexpr const char* blockSyntax = "entityDim entityTag parametric numNodesInBlock";
+    if (!s_.next()) s_.fail("unexpected end of file: expected \"" + std::string(headerSyntax) + "\"");
+    const int headerLine = s_.lineNumber();
+    LineFields f = s_.fields();
+    long long numBlocks, numNodes, minTag, maxTag;
+    if (s_.line().front() == '$' || !f.integer(numBlocks) || !f.integer(numNodes) ||
+        !f.integer(minTag) || !f.integer(maxTag) || !f.done() || numBlocks < 0 || numNodes < 0 ||
+        numNodes > std::numeric_limits<Index>::max())
+      syntaxError("the $Nodes header", headerSyntax);
+    nodeTags_.reserve(numNodes);
+    nodeLines_.reserve(numNodes);
+    mesh_.points.reserve(numNodes);
+    long long total = 0;
+    for (long long b = 0; b < numBlocks; ++b) {
+      dataLine(nodesLine_, "node blocks", b, numBlocks, blockSyntax);
+      const int blockLine = s_.lineNumber();
+      LineFields bf = s_.fields();
+      long long dim, entity, parametric, count;
+      if (!bf.integer(dim) || !bf.integer(entity) || !bf.integer(parametric) ||
+          !bf.integer(count) || !bf.done() || count < 0)
+        syntaxError("node block " + std::to_string(b + 1) + " of " + std::to_string(numBlocks),
+                    blockSyntax);
+      if (total + count > std::numeric_limits<Index>::max())
+        s_.fail("too many nodes: expected at most " +
+                std::to_string(std::numeric_limits<Index>::max()));
+      const std::string where = " (node block at line " + std::to_string(blockLine) + ")";
+      // The tags first, then the coordinates, each one per line.
+      const std::size_t first = nodeTags_.size();
+      for (long long k = 0; k < count; ++k) {
+        dataLine(nodesLine_, "nodes", total + k, std::max(numNodes, total + count), "nodeTag");
+        LineFields tf = s_.fields();
+        long long tag;
+        if (!tf.integer(tag) || !tf.done())
+          syntaxError("the tag of node " + std::to_string(k + 1) + " of " +
+                          std::to_string(count) + where,
+                      "nodeTag");
+        addNode(tag, s_.lineNumber());
+      }
+      mesh_.points.resize(first + count);
+      for (long long k = 0; k < count; ++k) {
+        dataLine(nodesLine_, "node coordinates", total + k, std::max(numNodes, total + count),
+                 "x y z");
+        LineFields cf = s_.fields();
+        double x, y, z;
+        // Parametric nodes add u (and v) after z; they are not needed.
+        if (!cf.real(x) || !cf.real(y) || !cf.real(z) || (parametric == 0 && !cf.done()))
+          syntaxError("the coordinates of node " + std::to_string(k + 1) + " of " +
+                          std::to_string(count) + where,
+                      parametric ? "x y z u [v]" : "x y z");
+        setCoordinates(first + k, x, y, z, s_.lineNumber());
+      }
+      total += count;
+    }
+    if (total != numNodes)
+      s_.failAt(headerLine, "the $Nodes header announces " + std::to_string(numNodes) +
+                                " nodes, but its " + std::to_string(numBlocks) +
+                                " blocks hold " + std::to_string(total) +
+                                ": expected the counts to agree");
+    expectEnd(nodesLine_, "the " + std::to_string(numBlocks) + " node blocks it announces");
+  }
+
+  // ---- $Elements ---------------------------------------------------------------------
+
+  Index node(long long tag, long long element) {
+    const Index i = nodeMap_.find(tag);
+    if (i < 0)
+      s_.fail("element " + std::to_string(element) + " refers to node " + std::to_string(tag) +
+              ", which $Nodes (line " + std::to_string(nodesLine_) +
+              ") does not define: expected the tag of a node in $Nodes");
+    return i;
+  }
+
+  [[noreturn]] void unsupportedType(long long type) {
+    s_.fail("element type " + std::to_string(type) + " (" + elementTypeName(type) +
+            ") is not supported: expected 2-node lines (type 1), 3-node triangles (type 2) or "
+            "points (type 15). " +
+            elementTypeAdvice(type));
+  }
+
+  static std::string clockwiseFix(long long surface) {
+    const std::string tag = surface > 0 ? std::to_string(surface) : "<tag>";
+    return "in gmsh reverse the orientation of surface " + tag + " (Reverse Surface{" + tag +
+           "}; in the .geo, or gmsh::model::mesh::reverse), so that it faces +z";
+  }
+
+  void addEdge(const std::array<long long, 2>& v, long long element, int label) {
+    const std::array<Index, 2> e{node(v[0], element), node(v[1], element)};
+    checkEdge(s_, e, "element", element, v);
+    mesh_.edges.push_back(e);
+    mesh_.edgeLabel.push_back(label);
+  }
+
+  void addTriangle(const std::array<long long, 3>& v, long long element, int region,
+                   long long surface) {
+    const std::array<Index, 3> t{node(v[0], element), node(v[1], element), node(v[2], element)};
+    const TriangleDefect defect = triangleDefect(mesh_.points, t);
+    if (defect != TriangleDefect::none)
+      failTriangle(s_, defect, mesh_.points, t, "element", element, v, clockwiseFix(surface));
+    mesh_.triangles.push_back(t);
+    mesh_.triangleRegion.push_back(region);
+  }
+
+  [[noreturn]] void twoRegions(long long surface, long long a, long long b,
+                               const std::string& where) {
+    s_.fail("surface " + std::to_string(surface) + " is in two physical surfaces (" +
+            std::to_string(a) + " and " + std::to_string(b) + where +
+            "): expected each surface in at most one physical surface, since a triangle has "
+            "one region");
+  }
+
+  void readElements22() {
+    static constexpr const char* syntax = "tag type numTags tags... nodes...";
+    const long long n = count("numElements", "the number of elements");
+    std::unordered_map<long long, long long> surfaceRegion;  // elementary tag -> physical
+    for (long long i = 0; i < n; ++i) {
+      dataLine(elementsLine_, "elements", i, n, syntax);
+      LineFields f = s_.fields();
+      long long tag, type, numTags;
+      if (!f.integer(tag) || !f.integer(type) || !f.integer(numTags) || numTags < 0)
+        syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
+      if (type == 15) continue;
+      if (type != 1 && type != 2) unsupportedType(type);
+      long long physical = 0, elementary = 0, t;
+      for (long long k = 0; k < numTags; ++k) {
+        if (!f.integer(t))
+          syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
+        if (k == 0) physical = t;
+        if (k == 1) elementary = t;
+      }
+      if (!fitsInt(physical))
+        syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
+      std::array<long long, 3> v{};
+      const int numNodes = type == 1 ? 2 : 3;
+      for (int k = 0; k < numNodes; ++k)
+        if (!f.integer(v[k]))
+          syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
+      if (!f.done())
+        syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
+      if (type == 1) {
+        addEdge({v[0], v[1]}, tag, static_cast<int>(physical));
+      } else {
+        // gmsh 2.2 writes an element once per physical group of its entity; a triangle can
+        // only have one region.
+        if (numTags >= 2) {
+          const auto [it, inserted] = surfaceRegion.emplace(elementary, physical);
+          if (!inserted && it->second != physical)
+            twoRegions(elementary, it->second, physical, "");
+        }
+        addTriangle(v, tag, static_cast<int>(physical), elementary);
+      }
+    }
+    expectEnd(elementsLine_, "the " + std::to_string(n) + " elements it announces");
+  }
+
+  // Physical tags of the entity an element block belongs to (none without $Entities).
+  const std::vector<int>& physicalTags(long long dim, long long entity) {
+    static const std::vector<int> none;
+    if (!entitiesLine_) return none;
+    const auto& table = dim == 1 ? curvePhysical_ : surfacePhysical_;
+    auto it = table.find(entity);
+    if (it == table.end())
+      s_.fail("element block of " + std::string(dim == 1 ? "curve " : "surface ") +
+              std::to_string(entity) + ": $Entities (line " + std::to_string(entitiesLine_) +
+              ") lists no such entity: expected the entity of every element block in $Entities");
+    return it->second;
+  }
+
+  void readElements41() {
+    static constexpr const char* headerSyntax =
+        "numEntityBlocks numElements minElementTag maxElementTag";
+    static constexpr const char* blockSyntax =
+        "entityDim entityTag elementType numElementsInBlock";
+    if (!s_.next()) s_.fail("unexpected end of file: expected \"" + std::string(headerSyntax) + "\"");
+    const int headerLine = s_.lineNumber();
+    LineFields f = s_.fields();
+    long long numBlocks, numElements, minTag, maxTag;
+    if (s_.line().front() == '$' || !f.integer(numBlocks) || !f.integer(numElements) ||
+        !f.integer(minTag) || !f.integer(maxTag) || !f.done() || numBlocks < 0 || numElements < 0)
+      syntaxError("the $Elements header", headerSyntax);
+    long long total = 0;
+    for (long long b = 0; b < numBlocks; ++b) {
+      dataLine(elementsLine_, "element blocks", b, numBlocks, blockSyntax);
+      const int blockLine = s_.lineNumber();
+      LineFields bf = s_.fields();
+      long long dim, entity, type, count;
+      if (!bf.integer(dim) || !bf.integer(entity) || !bf.integer(type) || !bf.integer(count) ||
+          !bf.done() || count < 0)
+        syntaxError("element block " + std::to_string(b + 1) + " of " + std::to_string(numBlocks),
+                    blockSyntax);
+      if (type != 1 && type != 2 && type != 15) unsupportedType(type);
+      const long long typeDim = type == 1 ? 1 : type == 2 ? 2 : 0;
+      if (dim != typeDim)
+        s_.fail("element block of type " + std::to_string(type) + " (" + elementTypeName(type) +
+                ") on an entity of dimension " + std::to_string(dim) +
+                ": expected dimension " + std::to_string(typeDim));
+      std::vector<int> physical;
+      if (type != 15) physical = physicalTags(dim, entity);
+      if (type == 2 && physical.size() > 1)
+        twoRegions(entity, physical[0], physical[1],
+                   " in $Entities at line " + std::to_string(entitiesLine_));
+      const int numNodes = type == 1 ? 2 : type == 2 ? 3 : 1;
+      const char* syntax = type == 1 ? "elementTag node node"
+                           : type == 2 ? "elementTag node node node"
+                                       : "elementTag node";
+      const std::string where = " (element block at line " + std::to_string(blockLine) + ")";
+      for (long long k = 0; k < count; ++k) {
+        dataLine(elementsLine_, "elements", total + k, std::max(numElements, total + count),
+                 syntax);
+        LineFields ef = s_.fields();
+        long long tag;
+        std::array<long long, 3> v{};
+        bool ok = ef.integer(tag);
+        for (int j = 0; j < numNodes && ok; ++j) ok = ef.integer(v[j]);
+        if (!ok || !ef.done())
+          syntaxError("element " + std::to_string(k + 1) + " of " + std::to_string(count) + where,
+                      syntax);
+        if (type == 1) {
+          // One edge per physical group, like gmsh's own 2.2 output.
+          if (physical.empty()) addEdge({v[0], v[1]}, tag, 0);
+          for (int label : physical) addEdge({v[0], v[1]}, tag, label);
+        } else if (type == 2) {
+          addTriangle(v, tag, physical.empty() ? 0 : physical[0], entity);
+        }
+      }
+      total += count;
+    }
+    if (total != numElements)
+      s_.failAt(headerLine, "the $Elements header announces " + std::to_string(numElements) +
+                                " elements, but its " + std::to_string(numBlocks) +
+                                " blocks hold " + std::to_string(total) +
+                                ": expected the counts to agree");
+    expectEnd(elementsLine_, "the " + std::to_string(numBlocks) + " element blocks it announces");
+  }
+
+  TextScanner& s_;
+  Mesh mesh_;
+  int version_ = 0;  // 22 or 41
+  int physicalNamesLine_ = 0, entitiesLine_ = 0, nodesLine_ = 0, elementsLine_ = 0;
+  std::unordered_map<long long, std::vector<int>> curvePhysical_, surfacePhysical_;
+  std::vector<long long> nodeTags_;
+  std::vector<int> nodeLines_;
+  NodeMap nodeMap_;
+  double scale_ = 0, maxAbsZ_ = 0, maxAbsZValue_ = 0;
+  std::size_t maxAbsZNode_ = 0;
+  int maxAbsZLine_ = 0;
+};
+
+}  // namespace
+
+Mesh parseGmshMesh(TextScanner& scanner) { return GmshParser(scanner).parse(); }
+
+}  // namespace friction::detail

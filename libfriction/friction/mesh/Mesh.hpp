@@ -1,0 +1,46 @@
+// Mesh: a 2D triangle mesh with labelled line elements (boundary patches and internal
+// fracture edges), as read from FreeFEM or gmsh. Node numbers are 0-based and contiguous.
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "friction/core/Types.hpp"
+
+namespace friction {
+
+struct Mesh {
+  /// File the mesh was read from, and its format ("FreeFEM .msh", "gmsh .msh 2.2",
+  /// "gmsh .msh 4.1"); for messages and summaries.
+  std::string source;
+  std::string format;
+
+  std::vector<Vector2> points;
+  /// Triangles, counter-clockwise (positive area); readers reject clockwise ones.
+  std::vector<std::array<Index, 3>> triangles;
+  /// Region number per triangle (FreeFEM region / gmsh physical surface tag, 0 if none).
+  std::vector<int> triangleRegion;
+
+  /// Labelled line elements: boundary edges and internal (fracture) edges, in file order
+  /// and orientation. An edge in two physical groups appears twice (one per label).
+  std::vector<std::array<Index, 2>> edges;
+  /// Label per edge (FreeFEM edge label / gmsh physical curve tag, 0 if none).
+  std::vector<int> edgeLabel;
+
+  /// Names of labels where the file gives them (gmsh $PhysicalNames of dimension 1).
+  std::map<int, std::string> labelNames;
+  /// Names of regions where the file gives them (gmsh $PhysicalNames of dimension 2).
+  std::map<int, std::string> regionNames;
+
+  Index numPoints() const { return static_cast<Index>(points.size()); }
+  Index numTriangles() const { return static_cast<Index>(triangles.size()); }
+
+  /// Signed area of triangle t (positive for counter-clockwise).
+  double signedArea(Index t) const;
+  /// Sum of triangle areas.
+  double totalArea() const;
+};
+
+}  // namespace friction

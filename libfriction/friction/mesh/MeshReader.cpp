@@ -1,0 +1,136 @@
+// readMesh and the checks both mesh formats share: loading the file, telling FreeFEM from
+// gmsh by content, and rejecting degenerate or clockwise triangles and collapsed edges.
+// The format parsers are in FreeFemMeshReader.cpp and GmshMeshReader.cpp.
+#include "friction/mesh/MeshReader.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "friction/mesh/MeshReaderDetail.hpp"
+
+namespace friction {
+
+namespace {
+
+// The whole file in one string: one read, no per-line I/O (a 500k-node mesh is ~50 MB).
+std::string loadFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, "is a directory: expected a mesh file (FreeFEM .msh or gmsh .msh)");
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) throw InputError(path, std::string("cannot open the mesh file: ") + std::strerror(errno));
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
+  if (std::ferror(f.get()))
+    throw InputError(path, std::string("cannot read the mesh file: ") + std::strerror(errno));
+  return text;
+}
+
+bool isGmsh(const std::string& text) {
+  std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+  static const std::string tag = "$MeshFormat";
+  if (text.compare(i, tag.size(), tag) != 0) return false;
+  const std::size_t after = i + tag.size();
+  return after == text.size() || std::isspace(static_cast<unsigned char>(text[after]));
+}
+
+// NUL bytes do not occur in text meshes; catching them here gives a clearer message than
+// "expected nv nt nbe, found <garbage>".
+void rejectBinary(const std::string& path, const std::string& text) {
+  const std::size_t head = std::min<std::size_t>(text.size(), 4096);
+  const auto* nul = static_cast<const char*>(std::memchr(text.data(), '\0', head));
+  if (!nul) return;
+  const int line = 1 + static_cast<int>(std::count(text.data(), nul, '\n'));
+  throw InputError(SourceLocation{path, line},
+                   "this is a binary file: expected a text mesh (FreeFEM .msh, or gmsh .msh "
+                   "written as ASCII: gmsh -2 -format msh41, without -bin)");
+}
+
+}  // namespace
+
+Mesh readMesh(const std::string& path) {
+  std::string text = loadFile(path);
+  const bool gmsh = isGmsh(text);
+  if (!gmsh) rejectBinary(path, text);
+  TextScanner scanner(path, std::move(text));
+  return gmsh ? detail::parseGmshMesh(scanner) : detail::parseFreeFemMesh(scanner);
+}
+
+Mesh readFreeFemMesh(const std::string& path) {
+  std::string text = loadFile(path);
+  rejectBinary(path, text);
+  TextScanner scanner(path, std::move(text));
+  return detail::parseFreeFemMesh(scanner);
+}
+
+Mesh readGmshMesh(const std::string& path) {
+  TextScanner scanner(path, loadFile(path));
+  return detail::parseGmshMesh(scanner);
+}
+
+namespace detail {
+
+TriangleDefect triangleDefect(const std::vector<Vector2>& points,
+                              const std::array<Index, 3>& t) {
+  const Vector2 ab = points[t[1]] - points[t[0]];
+  const Vector2 bc = points[t[2]] - points[t[1]];
+  const Vector2 ac = points[t[2]] - points[t[0]];
+  const double area = 0.5 * (ab.x() * ac.y() - ab.y() * ac.x());
+  const double longest2 = std::max({ab.squaredNorm(), bc.squaredNorm(), ac.squaredNorm()});
+  // Relative to the longest edge so that the test is independent of the mesh's units; 1e-12
+  // is far below any usable triangle's shape ratio and far above round-off (~1e-16).
+  if (std::abs(area) <= 1e-12 * longest2) return TriangleDefect::zeroArea;
+  return area < 0 ? TriangleDefect::clockwise : TriangleDefect::none;
+}
+
+void failTriangle(const TextScanner& scanner, TriangleDefect defect,
+                  const std::vector<Vector2>& points, const std::array<Index, 3>& t,
+                  const char* kind, long long number, const std::array<long long, 3>& fileVertices,
+                  const std::string& clockwiseFix) {
+  const Vector2 a = points[t[0]], b = points[t[1]], c = points[t[2]];
+  const double area = 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+  std::ostringstream s;
+  s.precision(6);
+  s << kind << " " << number << " (vertices " << fileVertices[0] << " " << fileVertices[1] << " "
+    << fileVertices[2] << " at (" << a.x() << ", " << a.y() << "), (" << b.x() << ", " << b.y()
+    << "), (" << c.x() << ", " << c.y() << ")) ";
+  if (defect == TriangleDefect::zeroArea)
+    s << "has zero area (" << area
+      << "): expected a triangle whose area is more than 1e-12 times its longest edge squared; "
+         "remesh or remove it";
+  else
+    s << "is clockwise (signed area " << area << "): expected counter-clockwise triangles; "
+      << clockwiseFix;
+  scanner.fail(s.str());
+}
+
+void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, const char* kind,
+               long long number, const std::array<long long, 2>& fileVertices) {
+  if (edge[0] != edge[1]) return;
+  scanner.fail(std::string(kind) + " " + std::to_string(number) + " joins vertex " +
+               std::to_string(fileVertices[0]) + " to itself (" + std::to_string(fileVertices[0]) +
+               " " + std::to_string(fileVertices[1]) +
+               "): expected an edge between two different vertices");
+}
+
+void checkFinite(const TextScanner& scanner, double x, double y, const char* kind,
+                 long long number) {
+  if (std::isfinite(x) && std::isfinite(y)) return;
+  scanner.fail(std::string(kind) + " " + std::to_string(number) + " has coordinate " +
+               (std::isfinite(x) ? "y" : "x") +
+               " that is not a finite number (NaN or Inf): expected finite coordinates");
+}
+
+}  // namespace detail
+
+}  // namespace friction

@@ -1,0 +1,48 @@
+// Pieces shared by the FreeFEM and gmsh readers (MeshReader.cpp, FreeFemMeshReader.cpp,
+// GmshMeshReader.cpp). Private to friction/mesh (not part of the library's interface).
+#pragma once
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "friction/mesh/Mesh.hpp"
+#include "friction/mesh/TextScanner.hpp"
+
+namespace friction::detail {
+
+/// True if a label, region or count read as long long fits the int the Mesh stores.
+inline bool fitsInt(long long v) {
+  return v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max();
+}
+
+/// Parse a FreeFEM / gmsh file whose whole text the scanner holds.
+Mesh parseFreeFemMesh(TextScanner& scanner);
+Mesh parseGmshMesh(TextScanner& scanner);
+
+/// What is wrong with a triangle, if anything: zero area (relative to its longest edge
+/// squared) or clockwise order. Cheap; called for every triangle.
+enum class TriangleDefect { none, zeroArea, clockwise };
+TriangleDefect triangleDefect(const std::vector<Vector2>& points,
+                              const std::array<Index, 3>& triangle);
+
+/// Throw the InputError for a defective triangle at the scanner's current line. `kind` and
+/// `number` name it as the file does ("triangle 7", "element 31"); `fileVertices` are its
+/// vertex numbers as written in the file; `clockwiseFix` tells the user how to repair a
+/// clockwise triangle with the tool that wrote the file.
+[[noreturn]] void failTriangle(const TextScanner& scanner, TriangleDefect defect,
+                               const std::vector<Vector2>& points,
+                               const std::array<Index, 3>& triangle, const char* kind,
+                               long long number, const std::array<long long, 3>& fileVertices,
+                               const std::string& clockwiseFix);
+
+/// Reject an edge whose two ends are the same vertex, at the scanner's current line.
+void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, const char* kind,
+               long long number, const std::array<long long, 2>& fileVertices);
+
+/// Reject a NaN or Inf coordinate at the scanner's current line.
+void checkFinite(const TextScanner& scanner, double x, double y, const char* kind,
+                 long long number);
+
+}  // namespace friction::detail

@@ -1,0 +1,116 @@
+// checkAllRead: an entry the program never read is an error naming it, its file:line and the
+// nearest key the program asked for in that dictionary.
+#include <catch2/catch.hpp>
+
+#include "DictTestSupport.hpp"
+#include "friction/dict/Dictionary.hpp"
+
+using namespace friction;
+using namespace friction::dicttest;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+TEST_CASE("a misspelt key is reported with its line and the nearest key the program asked for",
+          "[dict][unread]") {
+  const Dictionary d = Dictionary::parse(R"(FoamFile
+{
+    version 2.0;
+    format  ascii;
+}
+mesh      "constant/mesh.msh";
+fractrues (crack);
+)",
+                                         "system/meshDict");
+  CHECK(d.getFileName("mesh") == "constant/mesh.msh");
+  CHECK_FALSE(d.found("fractures"));
+  CHECK(d.getScalarOr("tolerance", 1e-8) == 1e-8);
+  CHECK(inputErrorOf([&] { d.checkAllRead(); }) ==
+        "system/meshDict:7: unknown key 'fractrues' in system/meshDict; did you mean "
+        "'fractures'? (valid keys: fractures, mesh, tolerance)");
+}
+
+TEST_CASE("the suggestion is the nearest asked-for key, preferring those that are missing",
+          "[dict][unread]") {
+  const Dictionary d = Dictionary::parse("E 1;\nnu 0.3;\nYoungs 2;\nnus 4;\n", "m");
+  d.getScalar("E");
+  d.getScalar("nu");
+  d.getScalarOr("rho", 1);
+  // 'Youngs' is far from every key; the nearest missing one is still offered.
+  CHECK(inputErrorOf([&] { d.checkAllRead(); }) ==
+        "m:3: unknown key 'Youngs' in m; did you mean 'rho'? (valid keys: E, nu, rho)");
+  d.values("Youngs");
+  // 'nus' is nearest to 'nu', but 'nu' is present: the missing 'rho' is the better guess.
+  CHECK_THAT(inputErrorOf([&] { d.checkAllRead(); }),
+             StartsWith("m:4: unknown key 'nus' in m; did you mean 'rho'?"));
+
+  const Dictionary all = Dictionary::parse("E 1;\nnus 4;\n", "m");
+  all.getScalar("E");
+  all.found("nu");
+  all.found("E");
+  CHECK_THAT(inputErrorOf([&] { all.checkAllRead(); }),
+             StartsWith("m:2: unknown key 'nus' in m; did you mean 'nu'?"));
+}
+
+TEST_CASE("read sub-dictionaries are checked recursively, unread ones are unknown keys",
+          "[dict][unread]") {
+  const std::string text = R"(solid
+{
+    E 1;
+    nu 0.3;
+    extra 2;
+}
+fluid
+{
+    rho 1000;
+}
+)";
+  SECTION("an unread entry in a read sub-dictionary") {
+    const Dictionary d = Dictionary::parse(text, "constant/material");
+    const Dictionary& solid = d.subDict("solid");
+    solid.getScalar("E");
+    solid.getScalar("nu");
+    d.findDict("fluid")->getScalar("rho");
+    CHECK(inputErrorOf([&] { d.checkAllRead(); }) ==
+          "constant/material:5: unknown key 'extra' in constant/material/solid; did you mean "
+          "'E'? (valid keys: E, nu)");
+  }
+  SECTION("a sub-dictionary never asked for") {
+    const Dictionary d = Dictionary::parse(text, "constant/material");
+    d.subDict("solid").markAllRead();
+    CHECK(inputErrorOf([&] { d.checkAllRead(); }) ==
+          "constant/material:7: unknown key 'fluid' in constant/material; did you mean 'solid'? "
+          "(valid keys: solid)");
+  }
+  SECTION("markAllRead on the whole dictionary") {
+    const Dictionary d = Dictionary::parse(text, "constant/material");
+    d.markAllRead();
+    CHECK_NOTHROW(d.checkAllRead());
+  }
+  SECTION("the first unread entry in file order is reported, depth first") {
+    const Dictionary d = Dictionary::parse(text, "constant/material");
+    d.subDict("solid");
+    d.subDict("fluid");
+    CHECK_THAT(inputErrorOf([&] { d.checkAllRead(); }),
+               StartsWith("constant/material:3: unknown key 'E' in constant/material/solid "
+                          "(no keys are read from constant/material/solid)"));
+  }
+}
+
+TEST_CASE("the FoamFile header counts as read and a fully read dictionary passes",
+          "[dict][unread]") {
+  const Dictionary d = Dictionary::parse(
+      "FoamFile { version 2.0; format ascii; class dictionary; object x; note \"n\"; }\n"
+      "a 1;\n",
+      "x");
+  CHECK_THAT(inputErrorOf([&] { d.checkAllRead(); }), StartsWith("x:2: unknown key 'a' in x"));
+  d.getScalar("a");
+  CHECK_NOTHROW(d.checkAllRead());
+}
+
+TEST_CASE("an entry the program only checks for is reported as unused", "[dict][unread]") {
+  const Dictionary d = Dictionary::parse("a 1;\n", "x");
+  CHECK(d.found("a"));
+  CHECK(inputErrorOf([&] { d.checkAllRead(); }) ==
+        "x:1: key 'a' in x is never used (the program checks that it is there but does not "
+        "read it)");
+}

@@ -1,0 +1,83 @@
+// Meshes for the finite-element tests, built in code: the unit square cut into n × n cells,
+// each cell into two counter-clockwise triangles along its (0,0)-(1,1) diagonal, boundary
+// labels 1..4 = bottom, right, top, left. Optionally distorted: interior nodes moved by up to
+// `amount`·h/2 in each direction, boundary nodes (not corners) moved along their side, by a
+// fixed pseudo-random sequence so that every run sees the same mesh.
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "friction/mesh/Mesh.hpp"
+
+namespace friction::test {
+
+/// Deterministic value in [−0.5, 0.5] for node k (a hash, not a random generator, so that
+/// the meshes do not depend on the standard library's engines).
+inline double jitter(int k, int salt) {
+  unsigned h = static_cast<unsigned>(k) * 2654435761u ^ (static_cast<unsigned>(salt) * 40503u);
+  h ^= h >> 13;
+  h *= 1274126177u;
+  h ^= h >> 16;
+  return (h % 100000u) / 100000.0 - 0.5;
+}
+
+inline Mesh unitSquareMesh(int n, double amount = 0.0) {
+  Mesh m;
+  m.source = "unitSquare" + std::to_string(n);
+  m.format = "test grid";
+  const double h = 1.0 / n;
+  auto node = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      double x = i * h, y = j * h;
+      const int k = node(i, j);
+      const bool bx = (i == 0 || i == n), by = (j == 0 || j == n);
+      if (!bx) x += amount * h * jitter(k, 1);
+      if (!by) y += amount * h * jitter(k, 2);
+      m.points.emplace_back(x, y);
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Index a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
+      m.triangles.push_back({a, b, c});
+      m.triangles.push_back({a, c, d});
+      m.triangleRegion.push_back(0);
+      m.triangleRegion.push_back(0);
+    }
+  for (int k = 0; k < n; ++k) {
+    m.edges.push_back({node(k, 0), node(k + 1, 0)});
+    m.edgeLabel.push_back(1);
+    m.edges.push_back({node(n, k), node(n, k + 1)});
+    m.edgeLabel.push_back(2);
+    m.edges.push_back({node(k + 1, n), node(k, n)});
+    m.edgeLabel.push_back(3);
+    m.edges.push_back({node(0, k + 1), node(0, k)});
+    m.edgeLabel.push_back(4);
+  }
+  m.labelNames = {{1, "bottom"}, {2, "right"}, {3, "top"}, {4, "left"}};
+  for (const auto& t : m.triangles) {
+    const Vector2 e1 = m.points[t[1]] - m.points[t[0]], e2 = m.points[t[2]] - m.points[t[0]];
+    if (e1.x() * e2.y() - e1.y() * e2.x() <= 0.0)
+      throw std::logic_error("unitSquareMesh: distortion inverted a triangle");
+  }
+  return m;
+}
+
+/// Two unit squares stacked, [0,1] × [0,1], split along y = 1/2 into two halves that share no
+/// node: the top half uses nodes 2 = (0, ½)⁺ and 3 = (1, ½)⁺, the bottom half their coincident
+/// copies 6 and 7 — what splitting a fracture along y = ½ produces. Four triangles.
+inline Mesh splitFourTriangleMesh() {
+  Mesh m;
+  m.source = "splitFourTriangles";
+  m.format = "test mesh";
+  m.points = {{0, 0}, {1, 0}, {0, 0.5}, {1, 0.5}, {0, 1}, {1, 1}, {0, 0.5}, {1, 0.5}};
+  m.triangles = {{0, 1, 7}, {0, 7, 6}, {2, 3, 5}, {2, 5, 4}};
+  m.triangleRegion = {2, 2, 1, 1};
+  m.edges = {{0, 1}, {1, 7}, {3, 5}, {5, 4}, {4, 2}, {6, 0}};
+  m.edgeLabel = {1, 2, 2, 3, 4, 4};
+  return m;
+}
+
+}  // namespace friction::test

@@ -1,0 +1,282 @@
+// Node splitting (METHOD.md §2): counts, single tips, sides, n_Γ orientation, area, and the
+// refusals. Sign conventions under test: SignConventions.hpp.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <numeric>
+#include <set>
+#include <unistd.h>
+
+#include "TestMeshes.hpp"
+#include "friction/fracture/SplitMesh.hpp"
+#include "friction/fracture/SplitMeshIO.hpp"
+
+using namespace friction;
+using namespace friction::test;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// Number of groups of triangles connected through shared nodes.
+int connectedComponents(const Mesh& m) {
+  std::vector<int> parent(m.numPoints());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<int(int)> find = [&](int i) { return parent[i] == i ? i : parent[i] = find(parent[i]); };
+  for (const auto& t : m.triangles) {
+    parent[find(t[0])] = find(t[1]);
+    parent[find(t[1])] = find(t[2]);
+  }
+  std::set<int> roots;
+  for (const auto& t : m.triangles) roots.insert(find(t[0]));
+  return static_cast<int>(roots.size());
+}
+
+Vector2 centroid(const Mesh& m, Index t) {
+  return (m.points[m.triangles[t][0]] + m.points[m.triangles[t][1]] + m.points[m.triangles[t][2]]) / 3;
+}
+
+// Every triangle that touches a fracture node uses the copy of its own side: the plus copy
+// when its centroid lies on the side opposite to n_Γ, the minus copy otherwise.
+void checkSides(const SplitMesh& s) {
+  for (const FractureGeometry& g : s.fractures)
+    for (Index i = 0; i < g.numNodes(); ++i)
+      for (Index t = 0; t < s.mesh.numTriangles(); ++t) {
+        const auto& tri = s.mesh.triangles[t];
+        for (Index v : tri) {
+          if (s.origin[v] != g.node[i]) continue;
+          const double side = (centroid(s.mesh, t) - s.mesh.points[v]).dot(g.normal[i]);
+          if (g.plus[i] == g.minus[i]) continue;  // a tip serves both sides
+          if (side < -1e-12) CHECK(v == g.plus[i]);
+          if (side > 1e-12) CHECK(v == g.minus[i]);
+        }
+      }
+}
+
+std::string splitError(const Mesh& m, const std::vector<FractureSpec>& specs) {
+  try {
+    splitFractures(m, specs);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("a fracture across the whole width duplicates every node, ends included",
+          "[split]") {
+  const int n = 8;
+  Mesh m = gridMesh(n);
+  addHorizontalFracture(m, n, n / 2, 0, n, 5, "fracture");
+  const SplitMesh s = splitFractures(m, {{"fracture", 5, {}}});
+
+  REQUIRE(s.fractures.size() == 1);
+  const FractureGeometry& g = s.fractures[0];
+  CHECK(g.numNodes() == n + 1);
+  CHECK(g.numTips() == 0);
+  CHECK(g.numDuplicated() == n + 1);
+  CHECK(g.kind.front() == FractureNodeKind::boundary);
+  CHECK(g.kind.back() == FractureNodeKind::boundary);
+  CHECK(s.mesh.numPoints() == m.numPoints() + n + 1);
+  CHECK(s.mesh.numTriangles() == m.numTriangles());
+  // The fracture cuts the square in two.
+  CHECK(connectedComponents(m) == 1);
+  CHECK(connectedComponents(s.mesh) == 2);
+  // Walked left to right: t = (1, 0), n = (0, -1), Ω⁺ above (SignConventions.hpp).
+  for (Index i = 0; i < g.numNodes(); ++i) {
+    CHECK(s.mesh.points[g.node[i]].x() == Approx(double(i) / n));
+    CHECK(g.arclength[i] == Approx(double(i) / n));
+    CHECK(g.tangent[i].x() == Approx(1.0));
+    CHECK(g.normal[i].y() == Approx(-1.0));
+    CHECK(s.origin[g.plus[i]] == g.node[i]);
+    CHECK(s.origin[g.minus[i]] == g.node[i]);
+  }
+  checkSides(s);
+  CHECK(s.mesh.totalArea() == Approx(m.totalArea()).epsilon(1e-14));
+  // Every triangle stays counter-clockwise.
+  for (Index t = 0; t < s.mesh.numTriangles(); ++t) CHECK(s.mesh.signedArea(t) > 0);
+  // Fracture edges leave the patch list; the boundary patches keep their edge counts and the
+  // left/right edges next to the fracture end use the copy of their own side.
+  CHECK(s.mesh.edges.size() == m.edges.size() - n);
+  for (std::size_t e = 0; e < s.mesh.edges.size(); ++e) {
+    const Vector2 mid = (s.mesh.points[s.mesh.edges[e][0]] + s.mesh.points[s.mesh.edges[e][1]]) / 2;
+    for (Index v : s.mesh.edges[e]) {
+      if (v == g.plus.front() || v == g.plus.back()) CHECK(mid.y() > 0.5);
+      if (v == g.minus.front() || v == g.minus.back()) CHECK(mid.y() < 0.5);
+    }
+  }
+}
+
+TEST_CASE("an interior fracture keeps its two tips single", "[split]") {
+  const int n = 8;
+  Mesh m = gridMesh(n);
+  addHorizontalFracture(m, n, 4, 2, 6, 5, "crack");
+  const SplitMesh s = splitFractures(m, {{"crack", 5, {}}});
+  const FractureGeometry& g = s.fractures[0];
+  CHECK(g.numNodes() == 5);
+  CHECK(g.numTips() == 2);
+  CHECK(g.kind.front() == FractureNodeKind::tip);
+  CHECK(g.kind.back() == FractureNodeKind::tip);
+  CHECK(g.plus.front() == g.minus.front());
+  CHECK(g.plus.back() == g.minus.back());
+  CHECK(g.numDuplicated() == 3);
+  CHECK(s.mesh.numPoints() == m.numPoints() + 3);
+  CHECK(connectedComponents(s.mesh) == 1);
+  CHECK(g.length() == Approx(0.5));
+  checkSides(s);
+}
+
+TEST_CASE("several disjoint fractures are split independently", "[split]") {
+  const int n = 10;
+  Mesh m = gridMesh(n);
+  addHorizontalFracture(m, n, 3, 0, n, 5, "lower");
+  addHorizontalFracture(m, n, 7, 2, 8, 6, "upper");
+  const SplitMesh s = splitFractures(m, {{"lower", 5, {}}, {"upper", 6, {}}});
+  REQUIRE(s.fractures.size() == 2);
+  CHECK(s.fractures[0].numDuplicated() == n + 1);
+  CHECK(s.fractures[1].numTips() == 2);
+  CHECK(s.fractures[1].numDuplicated() == 5);
+  CHECK(s.mesh.numPoints() == m.numPoints() + n + 1 + 5);
+  CHECK(connectedComponents(s.mesh) == 2);
+  checkSides(s);
+}
+
+TEST_CASE("an inclined fracture has a consistent unit normal pointing from plus to minus",
+          "[split]") {
+  // Along the cell diagonals from (0.25,0.25) to (0.75,0.75): walked upwards,
+  // t = (1,1)/√2, n = (1,-1)/√2.
+  const int n = 8;
+  Mesh m = gridMesh(n);
+  for (int k = 2; k < 6; ++k) {
+    m.edges.push_back({gridNode(n, k, k), gridNode(n, k + 1, k + 1)});
+    m.edgeLabel.push_back(7);
+  }
+  m.labelNames[7] = "diag";
+  const SplitMesh s = splitFractures(m, {{"diag", 7, {}}});
+  const FractureGeometry& g = s.fractures[0];
+  REQUIRE(g.numNodes() == 5);
+  for (Index i = 0; i < g.numNodes(); ++i) {
+    CHECK(g.normal[i].norm() == Approx(1.0));
+    CHECK(g.normal[i].dot(g.tangent[i]) == Approx(0.0).margin(1e-15));
+    // t = (−n_y, n_x)
+    CHECK(g.tangent[i].x() == Approx(-g.normal[i].y()));
+    CHECK(g.tangent[i].y() == Approx(g.normal[i].x()));
+    CHECK(g.normal[i].x() == Approx(std::sqrt(0.5)));
+    CHECK(g.normal[i].y() == Approx(-std::sqrt(0.5)));
+  }
+  CHECK(g.length() == Approx(std::sqrt(0.5)));
+  checkSides(s);
+}
+
+TEST_CASE("the normal is consistent along a bent fracture", "[split]") {
+  // Horizontal from (0,0.5) to (0.5,0.5), then diagonal up to (0.75,0.75).
+  const int n = 8;
+  Mesh m = gridMesh(n);
+  addHorizontalFracture(m, n, 4, 0, 4, 5, "bent");
+  m.edges.push_back({gridNode(n, 4, 4), gridNode(n, 5, 5)});
+  m.edgeLabel.push_back(5);
+  m.edges.push_back({gridNode(n, 6, 6), gridNode(n, 5, 5)});
+  m.edgeLabel.push_back(5);
+  const SplitMesh s = splitFractures(m, {{"bent", 5, {}}});
+  const FractureGeometry& g = s.fractures[0];
+  REQUIRE(g.numNodes() == 7);
+  for (Index i = 0; i + 1 < g.numNodes(); ++i) CHECK(g.normal[i].dot(g.normal[i + 1]) > 0.5);
+  CHECK(g.kind.front() == FractureNodeKind::boundary);
+  CHECK(g.kind.back() == FractureNodeKind::tip);
+  checkSides(s);
+}
+
+TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]") {
+  const int n = 8;
+  SECTION("a fracture patch with no edges") {
+    Mesh m = gridMesh(n);
+    SourceLocation where{"system/meshDict", 17};
+    CHECK_THAT(splitError(m, {{"ghost", 9, where}}),
+               Contains("system/meshDict:17") && Contains("'ghost'") && Contains("no edges"));
+  }
+  SECTION("branching edges") {
+    Mesh m = gridMesh(n);
+    addHorizontalFracture(m, n, 4, 0, n, 5, "fracture");
+    m.edges.push_back({gridNode(n, 4, 4), gridNode(n, 4, 5)});
+    m.edgeLabel.push_back(5);
+    CHECK_THAT(splitError(m, {{"fracture", 5, {}}}),
+               Contains("branches at (0.5 0.5)") && Contains("junctions are a later feature"));
+  }
+  SECTION("two fractures that meet") {
+    Mesh m = gridMesh(n);
+    addHorizontalFracture(m, n, 4, 0, 4, 5, "a");
+    addHorizontalFracture(m, n, 4, 4, n, 6, "b");
+    CHECK_THAT(splitError(m, {{"a", 5, {}}, {"b", 6, {}}}),
+               Contains("meet at (0.5 0.5)") && Contains("junctions"));
+  }
+  SECTION("a triangle with all three vertices on the fracture") {
+    Mesh m = gridMesh(n);
+    // Edges (2,4)-(3,4) and (3,4)-(3,5) are two sides of the grid triangle
+    // {(2,4), (3,4), (3,5)}: all of its vertices lie on the fracture.
+    m.edges.push_back({gridNode(n, 2, 4), gridNode(n, 3, 4)});
+    m.edges.push_back({gridNode(n, 3, 4), gridNode(n, 3, 5)});
+    m.edgeLabel.insert(m.edgeLabel.end(), {5, 5});
+    CHECK_THAT(splitError(m, {{"kink", 5, {}}}),
+               Contains("all three vertices on fracture 'kink'") && Contains("refining"));
+  }
+  SECTION("a fracture on the outer boundary") {
+    Mesh m = gridMesh(n);
+    CHECK_THAT(splitError(m, {{"bottom", 1, {}}}),
+               Contains("outer boundary") && Contains("grid8"));
+  }
+  SECTION("a closed fracture") {
+    Mesh m = gridMesh(n);
+    for (auto [a, b] : std::vector<std::pair<std::pair<int, int>, std::pair<int, int>>>{
+             {{2, 2}, {4, 2}}, {{4, 2}, {4, 4}}, {{4, 4}, {2, 4}}, {{2, 4}, {2, 2}}}) {
+      // Straight runs of grid edges around a 2x2 block.
+      const int di = (b.first > a.first) - (b.first < a.first);
+      const int dj = (b.second > a.second) - (b.second < a.second);
+      for (int i = a.first, j = a.second; i != b.first || j != b.second; i += di, j += dj) {
+        m.edges.push_back({gridNode(n, i, j), gridNode(n, i + di, j + dj)});
+        m.edgeLabel.push_back(5);
+      }
+    }
+    CHECK_THAT(splitError(m, {{"loop", 5, {"d", 3}}}), Contains("d:3") && Contains("closed curve"));
+  }
+  SECTION("a mesh that is already split") {
+    Mesh m = gridMesh(n);
+    addHorizontalFracture(m, n, 4, 0, n, 5, "fracture");
+    SplitMesh s = splitFractures(m, {{"fracture", 5, {}}});
+    // Put the fracture edges back as a patch of the split mesh, as a split mesh exported to a
+    // mesh file would have them, and split again.
+    for (Index i = 0; i + 1 < s.fractures[0].numNodes(); ++i) {
+      s.mesh.edges.push_back({s.fractures[0].plus[i], s.fractures[0].plus[i + 1]});
+      s.mesh.edgeLabel.push_back(5);
+    }
+    CHECK_THAT(splitError(s.mesh, {{"fracture", 5, {}}}), Contains("already split"));
+  }
+}
+
+TEST_CASE("the split mesh file reads back to the same split mesh", "[split][io]") {
+  const int n = 6;
+  Mesh m = gridMesh(n);
+  addHorizontalFracture(m, n, 3, 1, 5, 5, "crack");
+  m.labelNames[5] = "crack";
+  const SplitMesh s = splitFractures(m, {{"crack", 5, {}}});
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("friction-splitio-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "splitMesh").string();
+  writeSplitMesh(s, path);
+  const SplitMesh r = readSplitMesh(path);
+  std::filesystem::remove_all(dir);
+
+  CHECK(r.mesh.points == s.mesh.points);  // precision 17 round-trips exactly
+  CHECK(r.mesh.triangles == s.mesh.triangles);
+  CHECK(r.origin == s.origin);
+  CHECK(r.mesh.edges.size() == s.mesh.edges.size());
+  REQUIRE(r.fractures.size() == 1);
+  CHECK(r.fractures[0].node == s.fractures[0].node);
+  CHECK(r.fractures[0].plus == s.fractures[0].plus);
+  CHECK(r.fractures[0].minus == s.fractures[0].minus);
+  CHECK(r.fractures[0].kind == s.fractures[0].kind);
+  CHECK(r.fractures[0].normal == s.fractures[0].normal);
+  CHECK(r.fractures[0].arclength == s.fractures[0].arclength);
+}

@@ -1,0 +1,52 @@
+// Small structured meshes for the splitting tests: the unit square cut into n x n cells, each
+// cell into two counter-clockwise triangles along its (0,0)-(1,1) diagonal. Boundary labels
+// 1..4 = bottom, right, top, left (FreeFEM's convention); the caller adds fracture edges.
+#pragma once
+
+#include "friction/mesh/Mesh.hpp"
+
+namespace friction::test {
+
+inline Index gridNode(int n, int i, int j) { return j * (n + 1) + i; }
+
+inline Mesh gridMesh(int n) {
+  Mesh m;
+  m.source = "grid" + std::to_string(n);
+  m.format = "test grid";
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.points.emplace_back(double(i) / n, double(j) / n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Index a = gridNode(n, i, j), b = gridNode(n, i + 1, j), c = gridNode(n, i + 1, j + 1),
+                  d = gridNode(n, i, j + 1);
+      m.triangles.push_back({a, b, c});
+      m.triangles.push_back({a, c, d});
+      m.triangleRegion.push_back(0);
+      m.triangleRegion.push_back(0);
+    }
+  for (int k = 0; k < n; ++k) {
+    m.edges.push_back({gridNode(n, k, 0), gridNode(n, k + 1, 0)});
+    m.edgeLabel.push_back(1);
+    m.edges.push_back({gridNode(n, n, k), gridNode(n, n, k + 1)});
+    m.edgeLabel.push_back(2);
+    m.edges.push_back({gridNode(n, k + 1, n), gridNode(n, k, n)});
+    m.edgeLabel.push_back(3);
+    m.edges.push_back({gridNode(n, 0, k + 1), gridNode(n, 0, k)});
+    m.edgeLabel.push_back(4);
+  }
+  m.labelNames = {{1, "bottom"}, {2, "right"}, {3, "top"}, {4, "left"}};
+  return m;
+}
+
+/// Horizontal fracture along grid row j from column i0 to i1, with the given label; edges are
+/// added in reversed orientation on purpose (FreeFEM's orientation is arbitrary).
+inline void addHorizontalFracture(Mesh& m, int n, int j, int i0, int i1, int label,
+                                  const std::string& name) {
+  for (int i = i0; i < i1; ++i) {
+    m.edges.push_back({gridNode(n, i + 1, j), gridNode(n, i, j)});
+    m.edgeLabel.push_back(label);
+  }
+  m.labelNames[label] = name;
+}
+
+}  // namespace friction::test

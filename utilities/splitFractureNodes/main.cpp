@@ -1,0 +1,170 @@
+// splitFractureNodes: duplicate the mesh nodes along the fractures of a case (METHOD.md §2)
+// and write the split mesh, with n_Γ, t_Γ and arclength per fracture node, to
+// <case>/constant/splitMesh for the solver.
+//
+// Sample run:
+//   splitFractureNodes -case cases/paperBenchmark
+// reads  cases/paperBenchmark/system/meshDict and the mesh file it names,
+// writes cases/paperBenchmark/constant/splitMesh and prints a checkMesh-style summary.
+//
+// Exit codes: 0 done; 1 bad input (the message names file:line and what was expected);
+// 2 bad command line.
+#include <boost/program_options.hpp>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "friction/case/MeshSettings.hpp"
+#include "friction/fracture/SplitMesh.hpp"
+#include "friction/fracture/SplitMeshIO.hpp"
+#include "friction/mesh/MeshReader.hpp"
+
+namespace fs = std::filesystem;
+namespace po = boost::program_options;
+using namespace friction;
+
+namespace {
+
+std::string point(const Vector2& p) {
+  std::ostringstream s;
+  s << "(" << p.x() << " " << p.y() << ")";
+  return s.str();
+}
+
+// The boundary patches that contain a node (for the summary of fracture ends).
+std::string patchesAt(const Mesh& mesh, Index v, const std::set<int>& fractureLabels) {
+  std::set<std::string> names;
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e)
+    if ((mesh.edges[e][0] == v || mesh.edges[e][1] == v) && !fractureLabels.count(mesh.edgeLabel[e]))
+      names.insert(mesh.labelNames.at(mesh.edgeLabel[e]));
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s.empty() ? "no patch" : "patch " + s;
+}
+
+void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {
+  std::cout << std::setprecision(6);
+  std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ")\n"
+            << "    points:    " << mesh.numPoints() << "\n"
+            << "    triangles: " << mesh.numTriangles() << "\n"
+            << "    area:      " << mesh.totalArea() << "\n\n";
+
+  std::cout << "Patches\n    " << std::left << std::setw(16) << "name" << std::setw(8) << "label"
+            << std::setw(8) << "edges" << std::setw(14) << "length" << "type\n";
+  for (const auto& [label, name] : mesh.labelNames) {
+    int count = 0;
+    double length = 0;
+    for (std::size_t e = 0; e < mesh.edges.size(); ++e)
+      if (mesh.edgeLabel[e] == label) {
+        ++count;
+        length += (mesh.points[mesh.edges[e][1]] - mesh.points[mesh.edges[e][0]]).norm();
+      }
+    std::cout << "    " << std::setw(16) << name << std::setw(8) << label << std::setw(8) << count
+              << std::setw(14) << length << (fractureLabels.count(label) ? "fracture" : "boundary")
+              << "\n";
+  }
+  std::cout << std::right << "\n";
+
+  for (const FractureGeometry& g : split.fractures) {
+    const Index n = g.numNodes();
+    std::cout << "Fracture " << g.name << " (label " << g.label << ")\n"
+              << "    edges:        " << n - 1 << "\n"
+              << "    nodes:        " << n << " (duplicated " << g.numDuplicated() << ", tips "
+              << g.numTips() << ")\n"
+              << "    length:       " << g.length() << "\n";
+    for (Index i : {Index(0), n - 1}) {
+      const Vector2& p = mesh.points[g.node[i]];
+      std::cout << "    " << (i == 0 ? "start:        " : "end:          ") << point(p) << " "
+                << (g.kind[i] == FractureNodeKind::tip
+                        ? "tip inside the body (single node)"
+                        : "on the outer boundary, " + patchesAt(mesh, g.node[i], fractureLabels) +
+                              " (duplicated)")
+                << "\n";
+    }
+    std::cout << "    normal:       " << point(g.normal[0]) << " at the start (from Omega+ to "
+              << "Omega-; tangent " << point(g.tangent[0]) << ")\n\n";
+  }
+
+  const SplitMesh& s = split;
+  std::cout << "Split mesh\n"
+            << "    points:    " << s.mesh.numPoints() << " (+" << s.mesh.numPoints() - mesh.numPoints()
+            << ")\n"
+            << "    triangles: " << s.mesh.numTriangles() << "\n"
+            << "    area:      " << s.mesh.totalArea() << "\n\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // 1. Command line (OpenFOAM style: -case DIR, -overwrite, -help).
+  po::options_description options("Options");
+  options.add_options()("case", po::value<std::string>()->default_value("."),
+                        "case folder (holds system/meshDict)")(
+      "overwrite", "split again, replacing an existing constant/splitMesh")("help",
+                                                                             "print this help");
+  po::variables_map args;
+  try {
+    po::store(po::command_line_parser(argc, argv)
+                  .options(options)
+                  .style(po::command_line_style::default_style |
+                         po::command_line_style::allow_long_disguise)
+                  .run(),
+              args);
+    po::notify(args);
+  } catch (const po::error& e) {
+    std::cerr << "splitFractureNodes: " << e.what() << "\n(run with -help for usage)\n";
+    return 2;
+  }
+  if (args.count("help")) {
+    std::cout << "Usage: splitFractureNodes [-case DIR] [-overwrite]\n\n"
+                 "Duplicates the mesh nodes along the fractures named in DIR/system/meshDict\n"
+                 "and writes DIR/constant/splitMesh for the solver.\n\n"
+              << options;
+    return 0;
+  }
+  const std::string caseDir = args["case"].as<std::string>();
+
+  try {
+    std::cout << "splitFractureNodes\nCase: " << caseDir << "\n\n";
+    // 2. Read and validate the case's mesh dictionary before any work.
+    const MeshSettings settings = MeshSettings::read(caseDir);
+
+    // 3. Never split twice: the output exists unless the user asks to redo it.
+    const fs::path output = fs::path(caseDir) / "constant" / "splitMesh";
+    if (fs::exists(output) && !args.count("overwrite"))
+      throw InputError(output.string(),
+                       "the case is already split; splitFractureNodes splits the mesh of "
+                       "system/meshDict once. Run with -overwrite to split it again (from '" +
+                           settings.meshFile + "'), or ./Allclean the case");
+
+    // 4. Read the mesh and name its patches.
+    Mesh mesh = readMesh(settings.meshFile);
+    settings.nameLabels(mesh);
+    const std::vector<FractureSpec> specs = settings.fractureSpecs(mesh);
+
+    // 5. Split, summarise, write (atomically: a failed run leaves no output).
+    const SplitMesh split = splitFractures(mesh, specs);
+    std::set<int> fractureLabels;
+    for (const auto& s : specs) fractureLabels.insert(s.label);
+    printSummary(mesh, split, fractureLabels);
+
+    std::error_code ec;
+    fs::create_directories(output.parent_path(), ec);
+    if (ec)
+      throw InputError(output.parent_path().string(),
+                       "cannot create the output folder (" + ec.message() +
+                           "); expected a writable folder for constant/splitMesh");
+    writeSplitMesh(split, output.string());
+    std::cout << "Wrote " << output.string() << "\n\nEnd\n";
+    return 0;
+  } catch (const InputError& e) {
+    std::cout.flush();
+    std::cerr << "\nsplitFractureNodes: error: " << e.what() << "\n";
+    return 1;
+  } catch (const fs::filesystem_error& e) {
+    std::cerr << "\nsplitFractureNodes: error: " << e.what() << "\n";
+    return 1;
+  }
+}
