@@ -29,10 +29,21 @@ double ControlProblem::dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) c
 }
 
 ControlState ControlProblem::evaluate(const Eigen::VectorXd& beta) {
+  const Eigen::VectorXd b = beta.cwiseProduct(response_.freeMask());
+  Eigen::VectorXd tau, sigmaN;
+  response_.primal(b, tau, sigmaN);
+  ++numPrimal_;
+  ControlState s = stateFrom(b, std::move(tau), std::move(sigmaN));
+  s.primalSolves = numPrimal_;
+  return s;
+}
+
+ControlState ControlProblem::stateFrom(const Eigen::VectorXd& beta, Eigen::VectorXd tau,
+                                       Eigen::VectorXd sigmaN) const {
   ControlState s;
   s.beta = beta.cwiseProduct(response_.freeMask());
-  response_.primal(s.beta, s.tau, s.sigmaN);
-  ++numPrimal_;
+  s.tau = std::move(tau);
+  s.sigmaN = std::move(sigmaN);
   const Eigen::Index n = size();
   s.rho = cohesion_ - mu_.cwiseProduct(s.sigmaN);
   s.D.resize(n);
@@ -44,7 +55,6 @@ ControlState ControlProblem::evaluate(const Eigen::VectorXd& beta) {
   // Where the jump is held (tips, Dirichlet), the friction law is not asked of the node.
   s.D = s.D.cwiseProduct(response_.freeMask());
   s.J = 0.5 * dot(s.D, s.D) + 0.5 * zeta_ * dot(s.beta, s.beta);
-  s.primalSolves = numPrimal_;
   return s;
 }
 

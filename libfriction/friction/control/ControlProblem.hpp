@@ -35,6 +35,10 @@ class ControlProblem {
 
   /// Primal solve at β, then D, J. (One back-substitution.)
   ControlState evaluate(const Eigen::VectorXd& beta);
+  /// D and J from tractions already known for β (no solve): for optimizers that model the
+  /// affine maps themselves (semismoothNewton).
+  ControlState stateFrom(const Eigen::VectorXd& beta, Eigen::VectorXd tau,
+                         Eigen::VectorXd sigmaN) const;
   /// Gradient of J at an evaluated state, in the M inner product (one back-substitution).
   Eigen::VectorXd gradient(const ControlState& s);
 
@@ -46,6 +50,8 @@ class ControlProblem {
   const Eigen::VectorXd& freeMask() const { return response_.freeMask(); }
   const Eigen::VectorXd& mu() const { return mu_; }
   double gamma() const { return gamma_; }
+  double zeta() const { return zeta_; }
+  SlipResponse& response() { return response_; }
   long numPrimal() const { return numPrimal_; }
   long numDual() const { return numDual_; }
 

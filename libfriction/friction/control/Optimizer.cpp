@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <Eigen/LU>
+
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 
@@ -37,6 +39,11 @@ const OptimizerEntry optimizerTable[] = {
        return std::make_unique<Armijo>(d.getScalarOr("alpha", 1.0, Bounds::positive()),
                                        d.getScalarOr("armijoC", 1e-4, {0, 1, true, true}),
                                        static_cast<int>(d.getIntOr("maxBacktracks", 60, {1, 200})));
+     }},
+    {"semismoothNewton",
+     [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
+       return std::make_unique<SemismoothNewton>(
+           static_cast<int>(d.getIntOr("maxBacktracks", 30, {1, 200})));
      }},
 };
 
@@ -145,6 +152,98 @@ OptimizerReport Armijo::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
     }
     r.history.push_back(record(p, s, k, lastStep));
     alpha *= 2;  // let the step grow back after a backtrack
+  }
+  if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
+  beta = s.beta;
+  return r;
+}
+
+OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
+  SlipResponse& resp = p.response();
+  const Eigen::Index n = p.size();
+  const Eigen::VectorXd& mask = resp.freeMask();
+  if (cachedFor_ != &resp || Stt_.rows() != n) {
+    // Column k: tractions caused by a unit tangential jump at node k (zero loads and data).
+    Stt_.setZero(n, n);
+    Snt_.setZero(n, n);
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(n), zero = Eigen::VectorXd::Zero(n), t, sn;
+    for (Eigen::Index k = 0; k < n; ++k) {
+      if (mask[k] == 0) continue;
+      e[k] = 1;
+      resp.dual(e, zero, t, &sn);
+      e[k] = 0;
+      Stt_.col(k) = t;
+      Snt_.col(k) = sn;
+    }
+    cachedFor_ = &resp;
+  }
+
+  OptimizerReport r;
+  activeSetChanges_ = 0;
+  // One primal solve gives the affine maps' offsets; the rest is dense.
+  const ControlState s0 = p.evaluate(Eigen::VectorXd::Zero(n));
+  const Eigen::VectorXd tau0 = s0.tau, sigma0 = s0.sigmaN;
+  auto stateAt = [&](const Eigen::VectorXd& b) {
+    const Eigen::VectorXd bm = b.cwiseProduct(mask);
+    return p.stateFrom(bm, tau0 + Stt_ * bm, sigma0 + Snt_ * bm);
+  };
+  ControlState s = stateAt(beta);
+  r.history.push_back(record(p, s, 0, -1));
+  double lastStep = -1;
+  std::vector<SlipState> states;
+  for (int k = 1; k <= stop_.maxIterations; ++k) {
+    if (converged(p, s, lastStep)) {
+      r.status = OptimizerStatus::converged;
+      break;
+    }
+    // Generalised Jacobian on the free nodes.
+    std::vector<Eigen::Index> free;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (mask[i] != 0) free.push_back(i);
+    const Eigen::Index m = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd G(m, m);
+    Eigen::VectorXd rhs(m);
+    for (Eigen::Index a = 0; a < m; ++a) {
+      const Eigen::Index i = free[a];
+      const NodeComplementarity& c = s.node[i];
+      for (Eigen::Index b = 0; b < m; ++b) {
+        const Eigen::Index j = free[b];
+        G(a, b) = (1 - c.dPdN) * Stt_(i, j) + p.mu()[i] * c.dPdRho * Snt_(i, j) +
+                  (a == b ? p.gamma() * c.dPdN : 0.0);
+      }
+      rhs[a] = -s.D[i];
+    }
+    const Eigen::VectorXd delta = G.partialPivLu().solve(rhs);
+    Eigen::VectorXd dir = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index a = 0; a < m; ++a) dir[free[a]] = delta[a];
+    if (!dir.allFinite()) {
+      r.status = OptimizerStatus::stalled;
+      break;
+    }
+    // Backtracking on the merit ½‖D‖²_M.
+    const double merit = 0.5 * p.dot(s.D, s.D);
+    double t = 1;
+    bool accepted = false;
+    for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
+      ControlState trial = stateAt(s.beta + t * dir);
+      if (0.5 * p.dot(trial.D, trial.D) <= (1 - 1e-4 * t) * merit) {
+        lastStep = p.norm(trial.beta - s.beta);
+        std::vector<SlipState> now;
+        for (const auto& c : trial.node) now.push_back(c.state);
+        if (!states.empty() && now != states) ++activeSetChanges_;
+        states = std::move(now);
+        s = std::move(trial);
+        accepted = true;
+        break;
+      }
+    }
+    r.iterations = k;
+    r.history.push_back(record(p, s, k, accepted ? lastStep : 0));
+    if (!accepted) {
+      r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
+      beta = s.beta;
+      return r;
+    }
   }
   if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
   beta = s.beta;

@@ -94,4 +94,26 @@ class Armijo : public Optimizer {
   int maxBacktracks_;
 };
 
+/// [beyond] Semismooth Newton on D(β) = 0 (METHOD.md §5), condensed variant: the interface
+/// operators S_tt and S_nt are assembled densely once per run (one dual solve per fracture
+/// node, reused by every step, since they depend only on the mesh and the Dirichlet
+/// patches); then every iteration is dense work on Γ alone. The generalised Jacobian has,
+/// row by node state, G = (1 − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt; stick nodes get β = 0 at
+/// once. Globalised by backtracking on the merit ½‖D‖²_M. Solves D = 0, the minimiser of J
+/// when ζ = 0 (with ζ > 0 it still solves the friction law exactly).
+class SemismoothNewton : public Optimizer {
+ public:
+  explicit SemismoothNewton(int maxBacktracks) : maxBacktracks_(maxBacktracks) {}
+  OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
+  std::string name() const override { return "semismoothNewton"; }
+  /// Active-set changes over the last call's iterations (a cycling diagnostic).
+  int activeSetChanges() const { return activeSetChanges_; }
+
+ private:
+  int maxBacktracks_;
+  int activeSetChanges_ = 0;
+  Eigen::MatrixXd Stt_, Snt_;  // cached for the run
+  const SlipResponse* cachedFor_ = nullptr;
+};
+
 }  // namespace friction

@@ -8,8 +8,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
@@ -545,21 +547,36 @@ class Parser {
     if (depth + scopes_.size() >= kMaxDepth) tz.fail(openLine, "lists nested too deeply");
     v.kind = Kind::List;
     v.line = size >= 0 ? sizeLine : openLine;
-    // The size given in the file is a hint: capped by what the rest of the text can hold,
-    // so a wrong size costs an error, not the memory.
-    if (size > 0) v.items.reserve(std::min(static_cast<std::size_t>(size), tz.remaining() / 2 + 1));
+    // Items go straight into a list of known size (reserved, capped by what the rest of the
+    // text can hold, so a wrong size costs an error, not the memory). A list of unknown size
+    // collects its items in a buffer kept per depth and gets them in one exact allocation:
+    // growing each of 10^6 small "(x y)" lists item by item would double the allocations.
+    std::vector<Value>& items = size >= 0 ? v.items : scratch(depth);
+    if (size > 0) items.reserve(std::min(static_cast<std::size_t>(size), tz.remaining() / 2 + 1));
     for (;;) {
       Token t = tz.next();
       if (t.isPunct(')')) break;
-      if (item(src, t, v.items, key, depth)) continue;
-      const std::string got =
-          t.type == Token::Type::End
-              ? "end of file"
-              : "'" + std::string(t.text) + "' at line " + std::to_string(t.line);
+      if (item(src, t, items, key, depth)) continue;
+      if (t.isPunct('{'))
+        tz.fail(t.line, "key '" + key +
+                            "': a dictionary inside a list is not supported "
+                            "(expected a word, number, string or list, or ')' to close the list "
+                            "opened at line " +
+                            std::to_string(openLine) + ")");
+      const std::string shownToken =
+          (t.type == Token::Type::Directive ? "#" : "") + std::string(t.text);
+      const std::string got = t.type == Token::Type::End
+                                  ? "end of file"
+                                  : "'" + shownToken + "' at line " + std::to_string(t.line);
       tz.fail(openLine, "key '" + key +
                             "': unterminated list: expected ')' to close the '(' "
                             "opened here, got " +
                             got);
+    }
+    if (&items != &v.items) {
+      v.items.reserve(items.size());
+      std::move(items.begin(), items.end(), std::back_inserter(v.items));
+      items.clear();
     }
     if (size >= 0 && static_cast<std::size_t>(size) != v.items.size())
       tz.fail(sizeLine, "key '" + key + "': the list is declared with " + std::to_string(size) +
@@ -645,6 +662,13 @@ class Parser {
     for (Value& i : v.items) relocate(i, line);
   }
 
+  /// The (empty) item buffer for lists at depth; a deque keeps references stable as it grows.
+  std::vector<Value>& scratch(std::size_t depth) {
+    while (scratch_.size() <= depth) scratch_.emplace_back();
+    return scratch_[depth];
+  }
+
+  std::deque<std::vector<Value>> scratch_;
   std::vector<Impl*> scopes_;              // dictionaries being read, innermost last
   std::vector<std::string> includeIds_;    // canonical paths of the files being read
   std::vector<std::string> includeNames_;  // the same, as named in messages

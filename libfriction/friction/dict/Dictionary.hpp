@@ -7,11 +7,19 @@
 //   value-item := word | number | "string" | list | '$' name
 //   list       := [N] '(' value-item* ')'            N, if given, must equal the item count
 //   directive  := '#include' "file"                  (relative to the including file)
+//              |  '#includeIfPresent' "file"         (the same; nothing if the file is missing)
 //   comments   := '//' to end of line, '/* ... */'
 // A word may contain letters, digits and _ . : < > , - + (so "List<scalar>" and "uniform"
-// are words). '$name' expands to the value of entry 'name' in the current or an enclosing
-// dictionary (a dictionary-valued '$name;' entry merges that dictionary's entries). A later
-// entry with the same key replaces an earlier one, as in OpenFOAM.
+// are words); the reader also accepts any other character but whitespace, '"' and ; { } ( )
+// (so constant/mesh.msh is a word). N is a list size when '(' follows it directly ("3(1 2 3)")
+// or on a later line (OpenFOAM's layout for long lists); "0 (0 0)" on one line is a number and
+// a list, as in table rows. In strings, \" is a quote and a backslash at the end of a line
+// continues the string on the next (OpenFOAM's escapes). '$name' (or '${name}') expands to the
+// value of entry 'name' defined before it in the current or an enclosing dictionary; 'key
+// $name;' with a dictionary copies it and '$name;' merges its entries. An entry used by '$'
+// counts as read. A later entry with the same key replaces an earlier one in its place, and a
+// repeated dictionary is merged into the earlier one, as in OpenFOAM (checked with
+// foamDictionary v1912).
 //
 // Every entry keeps its file:line. Accessors mark an entry as read; checkAllRead() then
 // reports the first entry the program never read, naming its file:line and the nearest

@@ -30,6 +30,7 @@ constexpr std::size_t kKeyColumn = 12;
 // A list goes on one line when it has at most this many items and fits in kOneLineChars.
 constexpr std::size_t kOneLineItems = 10;
 constexpr std::size_t kOneLineChars = 72;
+constexpr double kLargestNumber = 1e300;
 
 void checkWord(const std::string& word, const char* what) {
   if (!detail::isSafeWord(word))
@@ -68,9 +69,10 @@ void DictionaryWriter::indent() {
 }
 
 std::string DictionaryWriter::number(double x) const {
-  if (!std::isfinite(x))
-    throw std::domain_error("DictionaryWriter: cannot write " + std::to_string(x) +
-                            ": neither OpenFOAM nor Dictionary reads inf or nan");
+  // OpenFOAM's reader fails on inf, nan and magnitudes above its VGREAT = 1e300.
+  if (!(std::fabs(x) <= kLargestNumber))
+    throw std::domain_error("DictionaryWriter: cannot write " + detail::shortestNumber(x) +
+                            ": OpenFOAM reads numbers up to 1e300 in magnitude, no inf or nan");
   // At full precision the shortest text that reads back exactly: 0.1 rather than
   // 0.10000000000000001, with the same value.
   if (precision_ >= 17) return detail::shortestNumber(x);

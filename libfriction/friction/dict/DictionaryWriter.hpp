@@ -1,6 +1,11 @@
 // DictionaryWriter: writes OpenFOAM-syntax dictionaries (FoamFile header, nested
 // sub-dictionaries, scalars, vectors, sized lists) that OpenFOAM's foamDictionary reads back,
 // and that Dictionary::read reads back to the same values.
+//
+// What OpenFOAM cannot read is refused with an exception (a programming error, not user input):
+// std::invalid_argument for a key or word outside [A-Za-z_][A-Za-z0-9_.:<>,+-]* or a string with
+// an odd run of backslashes before a quote, a newline or its end; std::domain_error for inf,
+// nan or a magnitude above 1e300 (OpenFOAM's VGREAT).
 #pragma once
 
 #include <array>
@@ -19,7 +24,8 @@ class DictionaryWriter {
   DictionaryWriter(const std::string& className, const std::string& object,
                    const std::string& note = "");
 
-  /// Significant digits for scalars (default 17: round-trips a double exactly).
+  /// Significant digits for scalars, 1 to 17 (default 17: round-trips a double exactly, written
+  /// as the shortest text that does, e.g. 0.1).
   void setPrecision(int digits);
 
   void beginDict(const std::string& key);

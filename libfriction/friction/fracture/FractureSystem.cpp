@@ -206,7 +206,7 @@ void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
 }
 
 void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
-                          Eigen::VectorXd& tauDual) {
+                          Eigen::VectorXd& tauDual, Eigen::VectorXd* sigmaNDual) {
   const Index n = size();
   Eigen::VectorXd j(2 * n);
   for (Index k = 0; k < n; ++k)
@@ -215,6 +215,10 @@ void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
   solve(j, false, sigma);
   tauDual.resize(n);
   for (Index k = 0; k < n; ++k) tauDual[k] = sigma.segment<2>(2 * k).dot(nodes_[k].tangent);
+  if (sigmaNDual) {
+    sigmaNDual->resize(n);
+    for (Index k = 0; k < n; ++k) (*sigmaNDual)[k] = sigma.segment<2>(2 * k).dot(nodes_[k].normal);
+  }
 }
 
 Eigen::VectorXd FractureSystem::lastSplitDisplacement() const { return P_ * x_ + L_ * lastJump_; }

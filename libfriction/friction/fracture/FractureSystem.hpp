@@ -72,8 +72,8 @@ class FractureSystem : public SlipResponse {
   const Eigen::VectorXd& freeMask() const override { return mask_; }
   void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
               Eigen::VectorXd& sigmaN) override;
-  void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
-            Eigen::VectorXd& tauDual) override;
+  void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
+            Eigen::VectorXd* sigmaNDual = nullptr) override;
 
   /// The split displacement [m] of the last primal solve (all split-space dofs).
   Eigen::VectorXd lastSplitDisplacement() const;

@@ -23,8 +23,8 @@ class FreeFemParser {
     readEdges();
     if (s_.next())
       s_.fail("the file goes on after the " + std::to_string(nbe_) +
-              " edges announced by the header (line " + std::to_string(headerLine_) +
-              "), found " + s_.quotedLine() + ": expected the end of the file; the counts " +
+              " edges announced by the header (line " + std::to_string(headerLine_) + "), found " +
+              s_.quotedLine() + ": expected the end of the file; the counts " +
               "nv nt nbe = " + counts() + " disagree with the file");
     return std::move(mesh_);
   }
@@ -45,8 +45,10 @@ class FreeFemParser {
         hint = " (this is a gmsh file: read it with readMesh or readGmshMesh)";
       else if (s_.line().front() == '$')
         hint = " (a gmsh file must start with $MeshFormat)";
-      s_.fail("expected the FreeFEM header \"nv nt nbe\" (numbers of vertices, triangles and "
-              "edges), found " + s_.quotedLine() + hint);
+      s_.fail(
+          "expected the FreeFEM header \"nv nt nbe\" (numbers of vertices, triangles and "
+          "edges), found " +
+          s_.quotedLine() + hint);
     }
     constexpr long long maxCount = std::numeric_limits<Index>::max();
     if (nv_ < 3 || nv_ > maxCount)
@@ -56,8 +58,8 @@ class FreeFemParser {
       s_.fail("the header \"nv nt nbe\" = " + counts() + " announces nt = " + std::to_string(nt_) +
               " triangles: expected a mesh with at least one triangle");
     if (nbe_ < 0 || nbe_ > maxCount)
-      s_.fail("the header \"nv nt nbe\" = " + counts() + " announces nbe = " +
-              std::to_string(nbe_) + " edges: expected a count of 0 or more");
+      s_.fail("the header \"nv nt nbe\" = " + counts() +
+              " announces nbe = " + std::to_string(nbe_) + " edges: expected a count of 0 or more");
   }
 
   // Move to the next data line; a file that ends early says how many items it holds.
@@ -69,8 +71,8 @@ class FreeFemParser {
   }
 
   [[noreturn]] void syntaxError(const char* item, long long i, long long n, const char* syntax) {
-    s_.fail("expected " + std::string(item) + " " + std::to_string(i) + " of " +
-            std::to_string(n) + " as \"" + syntax + "\", found " + s_.quotedLine() +
+    s_.fail("expected " + std::string(item) + " " + std::to_string(i) + " of " + std::to_string(n) +
+            " as \"" + syntax + "\", found " + s_.quotedLine() +
             " (check the counts \"nv nt nbe\" = " + counts() + " in the header at line " +
             std::to_string(headerLine_) + ")");
   }
@@ -86,7 +88,7 @@ class FreeFemParser {
 
   void readVertices() {
     static constexpr const char* syntax = "x y label";
-    mesh_.points.resize(nv_);
+    mesh_.points.reserve(reserveHint(nv_, s_, 6));
     for (long long i = 0; i < nv_; ++i) {
       dataLine("vertices", i, nv_, syntax);
       LineFields f = s_.fields();
@@ -96,7 +98,7 @@ class FreeFemParser {
       if (!f.real(x) || !f.real(y) || !f.skip() || !f.done())
         syntaxError("vertex", i + 1, nv_, syntax);
       checkFinite(s_, x, y, "vertex", i + 1);
-      mesh_.points[i] = Vector2(x, y);
+      mesh_.points.emplace_back(x, y);
     }
   }
 
@@ -105,8 +107,8 @@ class FreeFemParser {
     static const std::string fix =
         "list its vertices counter-clockwise (swap two of them); FreeFEM's savemesh always "
         "writes them counter-clockwise, so the file was written or edited by something else";
-    mesh_.triangles.resize(nt_);
-    mesh_.triangleRegion.resize(nt_);
+    mesh_.triangles.reserve(reserveHint(nt_, s_, 8));
+    mesh_.triangleRegion.reserve(reserveHint(nt_, s_, 8));
     for (long long i = 0; i < nt_; ++i) {
       dataLine("triangles", i, nt_, syntax);
       LineFields f = s_.fields();
@@ -120,27 +122,26 @@ class FreeFemParser {
       const TriangleDefect defect = triangleDefect(mesh_.points, t);
       if (defect != TriangleDefect::none)
         failTriangle(s_, defect, mesh_.points, t, "triangle", i + 1, v, fix);
-      mesh_.triangles[i] = t;
-      mesh_.triangleRegion[i] = static_cast<int>(region);
+      mesh_.triangles.push_back(t);
+      mesh_.triangleRegion.push_back(static_cast<int>(region));
     }
   }
 
   void readEdges() {
     static constexpr const char* syntax = "v1 v2 label";
-    mesh_.edges.resize(nbe_);
-    mesh_.edgeLabel.resize(nbe_);
+    mesh_.edges.reserve(reserveHint(nbe_, s_, 6));
+    mesh_.edgeLabel.reserve(reserveHint(nbe_, s_, 6));
     for (long long i = 0; i < nbe_; ++i) {
       dataLine("edges", i, nbe_, syntax);
       LineFields f = s_.fields();
       std::array<long long, 2> v;
       long long label;
-      if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(label) || !f.done() ||
-          !fitsInt(label))
+      if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(label) || !f.done() || !fitsInt(label))
         syntaxError("edge", i + 1, nbe_, syntax);
       const std::array<Index, 2> e{vertex(v[0], "edge", i + 1), vertex(v[1], "edge", i + 1)};
       checkEdge(s_, e, "edge", i + 1, v);
-      mesh_.edges[i] = e;
-      mesh_.edgeLabel[i] = static_cast<int>(label);
+      mesh_.edges.push_back(e);
+      mesh_.edgeLabel.push_back(static_cast<int>(label));
     }
   }
 

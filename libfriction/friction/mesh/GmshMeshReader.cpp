@@ -8,6 +8,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "friction/core/Assert.hpp"
 #include "friction/mesh/MeshReaderDetail.hpp"
 
 namespace friction::detail {
@@ -22,23 +23,40 @@ std::string formatNumber(double x) {
 
 const char* elementTypeName(long long type) {
   switch (type) {
-    case 1: return "2-node line";
-    case 2: return "3-node triangle";
-    case 3: return "4-node quadrangle";
-    case 4: return "4-node tetrahedron";
-    case 5: return "8-node hexahedron";
-    case 6: return "6-node prism";
-    case 7: return "5-node pyramid";
-    case 8: return "3-node second-order line";
-    case 9: return "6-node second-order triangle";
-    case 10: return "9-node second-order quadrangle";
-    case 11: return "10-node second-order tetrahedron";
-    case 15: return "1-node point";
-    case 16: return "8-node second-order quadrangle";
-    case 20: return "9-node third-order triangle";
-    case 21: return "10-node third-order triangle";
-    case 26: return "4-node third-order line";
-    default: return "element";
+    case 1:
+      return "2-node line";
+    case 2:
+      return "3-node triangle";
+    case 3:
+      return "4-node quadrangle";
+    case 4:
+      return "4-node tetrahedron";
+    case 5:
+      return "8-node hexahedron";
+    case 6:
+      return "6-node prism";
+    case 7:
+      return "5-node pyramid";
+    case 8:
+      return "3-node second-order line";
+    case 9:
+      return "6-node second-order triangle";
+    case 10:
+      return "9-node second-order quadrangle";
+    case 11:
+      return "10-node second-order tetrahedron";
+    case 15:
+      return "1-node point";
+    case 16:
+      return "8-node second-order quadrangle";
+    case 20:
+      return "9-node third-order triangle";
+    case 21:
+      return "10-node third-order triangle";
+    case 26:
+      return "4-node third-order line";
+    default:
+      return "element";
   }
 }
 
@@ -137,8 +155,9 @@ class GmshParser {
         if (!nodesLine_) s_.fail("$Elements comes before $Nodes: expected $Nodes first");
         version_ == 41 ? readElements41() : readElements22();
       } else if (l == "$PartitionedEntities") {
-        s_.fail("partitioned meshes are not supported: expected a mesh saved without "
-                "partitions (no -part, or Mesh.NbPartitions = 0)");
+        s_.fail(
+            "partitioned meshes are not supported: expected a mesh saved without "
+            "partitions (no -part, or Mesh.NbPartitions = 0)");
       } else if (l.substr(0, 4) == "$End" || l == "$MeshFormat") {
         s_.fail("unexpected " + s_.quotedLine() +
                 ": expected the start of a section such as $Nodes or $Elements");
@@ -166,9 +185,9 @@ class GmshParser {
   }
 
   std::string sectionName(int openLine) const {
-    return std::string(openLine == nodesLine_          ? "$Nodes"
-                       : openLine == elementsLine_     ? "$Elements"
-                       : openLine == entitiesLine_     ? "$Entities"
+    return std::string(openLine == nodesLine_           ? "$Nodes"
+                       : openLine == elementsLine_      ? "$Elements"
+                       : openLine == entitiesLine_      ? "$Entities"
                        : openLine == physicalNamesLine_ ? "$PhysicalNames"
                                                         : "$MeshFormat");
   }
@@ -180,8 +199,8 @@ class GmshParser {
     if (!s_.next())
       s_.fail("unexpected end of file in " + section + " (opened at line " +
               std::to_string(openLine) + "): it announces " + std::to_string(announced) + " " +
-              items + ", found " + std::to_string(found) + "; expected another line \"" +
-              syntax + "\"");
+              items + ", found " + std::to_string(found) + "; expected another line \"" + syntax +
+              "\"");
     if (s_.line().front() == '$')
       s_.fail(s_.quotedLine() + " ends " + section + " (opened at line " +
               std::to_string(openLine) + ") early: it announces " + std::to_string(announced) +
@@ -254,8 +273,7 @@ class GmshParser {
               std::to_string(formatLine) + ")");
     if (s_.line() != "$EndMeshFormat")
       s_.fail("expected $EndMeshFormat to close $MeshFormat (opened at line " +
-              std::to_string(formatLine) + ") after \"" + syntax + "\", found " +
-              s_.quotedLine());
+              std::to_string(formatLine) + ") after \"" + syntax + "\", found " + s_.quotedLine());
   }
 
   void readPhysicalNames() {
@@ -334,8 +352,8 @@ class GmshParser {
           table[tag] = std::move(physical);
         }
       }
-    expectEnd(entitiesLine_, "the " + std::to_string(n[0] + n[1] + n[2] + n[3]) +
-                                 " entities it announces");
+    expectEnd(entitiesLine_,
+              "the " + std::to_string(n[0] + n[1] + n[2] + n[3]) + " entities it announces");
   }
 
   // ---- $Nodes ------------------------------------------------------------------------
@@ -346,12 +364,14 @@ class GmshParser {
     nodeLines_.push_back(line);
   }
 
+  // Coordinates of node i, which must be the next point (nodes are numbered in file order).
   void setCoordinates(std::size_t i, double x, double y, double z, int line) {
+    FRICTION_ASSERT(i == mesh_.points.size(), "node coordinates out of order");
     checkFinite(s_, x, y, "node", nodeTags_[i]);
     if (!std::isfinite(z))
       s_.fail("node " + std::to_string(nodeTags_[i]) +
               " has z that is not a finite number: expected z = 0");
-    mesh_.points[i] = Vector2(x, y);
+    mesh_.points.emplace_back(x, y);
     scale_ = std::max({scale_, std::abs(x), std::abs(y)});
     if (std::abs(z) > maxAbsZ_) {
       maxAbsZ_ = std::abs(z);
@@ -365,18 +385,18 @@ class GmshParser {
   // rotated geometry whose projection would be wrong.
   void checkPlanar() {
     if (maxAbsZ_ <= 1e-10 * scale_) return;
-    s_.failAt(maxAbsZLine_,
-              "node " + std::to_string(nodeTags_[maxAbsZNode_]) + " has z = " +
-                  formatNumber(maxAbsZValue_) + ": expected a 2D mesh in the plane z = 0 (|z| <= 1e-10 "
-                  "times the largest |x|, |y|)");
+    s_.failAt(maxAbsZLine_, "node " + std::to_string(nodeTags_[maxAbsZNode_]) +
+                                " has z = " + formatNumber(maxAbsZValue_) +
+                                ": expected a 2D mesh in the plane z = 0 (|z| <= 1e-10 "
+                                "times the largest |x|, |y|)");
   }
 
   void readNodes22() {
     static constexpr const char* syntax = "tag x y z";
     const long long n = count("numNodes", "the number of nodes");
-    nodeTags_.reserve(n);
-    nodeLines_.reserve(n);
-    mesh_.points.resize(n);
+    nodeTags_.reserve(reserveHint(n, s_, 8));
+    nodeLines_.reserve(reserveHint(n, s_, 8));
+    mesh_.points.reserve(reserveHint(n, s_, 8));
     for (long long i = 0; i < n; ++i) {
       dataLine(nodesLine_, "nodes", i, n, syntax);
       LineFields f = s_.fields();
@@ -393,7 +413,8 @@ class GmshParser {
   void readNodes41() {
     static constexpr const char* headerSyntax = "numEntityBlocks numNodes minNodeTag maxNodeTag";
     static constexpr const char* blockSyntax = "entityDim entityTag parametric numNodesInBlock";
-    if (!s_.next()) s_.fail("unexpected end of file: expected \"" + std::string(headerSyntax) + "\"");
+    if (!s_.next())
+      s_.fail("unexpected end of file: expected \"" + std::string(headerSyntax) + "\"");
     const int headerLine = s_.lineNumber();
     LineFields f = s_.fields();
     long long numBlocks, numNodes, minTag, maxTag;
@@ -401,9 +422,9 @@ class GmshParser {
         !f.integer(minTag) || !f.integer(maxTag) || !f.done() || numBlocks < 0 || numNodes < 0 ||
         numNodes > std::numeric_limits<Index>::max())
       syntaxError("the $Nodes header", headerSyntax);
-    nodeTags_.reserve(numNodes);
-    nodeLines_.reserve(numNodes);
-    mesh_.points.reserve(numNodes);
+    nodeTags_.reserve(reserveHint(numNodes, s_, 8));
+    nodeLines_.reserve(reserveHint(numNodes, s_, 8));
+    mesh_.points.reserve(reserveHint(numNodes, s_, 8));
     long long total = 0;
     for (long long b = 0; b < numBlocks; ++b) {
       dataLine(nodesLine_, "node blocks", b, numBlocks, blockSyntax);
@@ -425,12 +446,11 @@ class GmshParser {
         LineFields tf = s_.fields();
         long long tag;
         if (!tf.integer(tag) || !tf.done())
-          syntaxError("the tag of node " + std::to_string(k + 1) + " of " +
-                          std::to_string(count) + where,
-                      "nodeTag");
+          syntaxError(
+              "the tag of node " + std::to_string(k + 1) + " of " + std::to_string(count) + where,
+              "nodeTag");
         addNode(tag, s_.lineNumber());
       }
-      mesh_.points.resize(first + count);
       for (long long k = 0; k < count; ++k) {
         dataLine(nodesLine_, "node coordinates", total + k, std::max(numNodes, total + count),
                  "x y z");
@@ -447,9 +467,8 @@ class GmshParser {
     }
     if (total != numNodes)
       s_.failAt(headerLine, "the $Nodes header announces " + std::to_string(numNodes) +
-                                " nodes, but its " + std::to_string(numBlocks) +
-                                " blocks hold " + std::to_string(total) +
-                                ": expected the counts to agree");
+                                " nodes, but its " + std::to_string(numBlocks) + " blocks hold " +
+                                std::to_string(total) + ": expected the counts to agree");
     expectEnd(nodesLine_, "the " + std::to_string(numBlocks) + " node blocks it announces");
   }
 
@@ -505,6 +524,8 @@ class GmshParser {
   void readElements22() {
     static constexpr const char* syntax = "tag type numTags tags... nodes...";
     const long long n = count("numElements", "the number of elements");
+    mesh_.triangles.reserve(reserveHint(n, s_, 16));
+    mesh_.triangleRegion.reserve(reserveHint(n, s_, 16));
     std::unordered_map<long long, long long> surfaceRegion;  // elementary tag -> physical
     for (long long i = 0; i < n; ++i) {
       dataLine(elementsLine_, "elements", i, n, syntax);
@@ -537,8 +558,7 @@ class GmshParser {
         // only have one region.
         if (numTags >= 2) {
           const auto [it, inserted] = surfaceRegion.emplace(elementary, physical);
-          if (!inserted && it->second != physical)
-            twoRegions(elementary, it->second, physical, "");
+          if (!inserted && it->second != physical) twoRegions(elementary, it->second, physical, "");
         }
         addTriangle(v, tag, static_cast<int>(physical), elementary);
       }
@@ -562,15 +582,18 @@ class GmshParser {
   void readElements41() {
     static constexpr const char* headerSyntax =
         "numEntityBlocks numElements minElementTag maxElementTag";
-    static constexpr const char* blockSyntax =
-        "entityDim entityTag elementType numElementsInBlock";
-    if (!s_.next()) s_.fail("unexpected end of file: expected \"" + std::string(headerSyntax) + "\"");
+    static constexpr const char* blockSyntax = "entityDim entityTag elementType numElementsInBlock";
+    if (!s_.next())
+      s_.fail("unexpected end of file: expected \"" + std::string(headerSyntax) + "\"");
     const int headerLine = s_.lineNumber();
     LineFields f = s_.fields();
     long long numBlocks, numElements, minTag, maxTag;
     if (s_.line().front() == '$' || !f.integer(numBlocks) || !f.integer(numElements) ||
         !f.integer(minTag) || !f.integer(maxTag) || !f.done() || numBlocks < 0 || numElements < 0)
       syntaxError("the $Elements header", headerSyntax);
+    // An upper bound (points and lines count too).
+    mesh_.triangles.reserve(reserveHint(numElements, s_, 8));
+    mesh_.triangleRegion.reserve(reserveHint(numElements, s_, 8));
     long long total = 0;
     for (long long b = 0; b < numBlocks; ++b) {
       dataLine(elementsLine_, "element blocks", b, numBlocks, blockSyntax);
@@ -585,15 +608,15 @@ class GmshParser {
       const long long typeDim = type == 1 ? 1 : type == 2 ? 2 : 0;
       if (dim != typeDim)
         s_.fail("element block of type " + std::to_string(type) + " (" + elementTypeName(type) +
-                ") on an entity of dimension " + std::to_string(dim) +
-                ": expected dimension " + std::to_string(typeDim));
+                ") on an entity of dimension " + std::to_string(dim) + ": expected dimension " +
+                std::to_string(typeDim));
       std::vector<int> physical;
       if (type != 15) physical = physicalTags(dim, entity);
       if (type == 2 && physical.size() > 1)
         twoRegions(entity, physical[0], physical[1],
                    " in $Entities at line " + std::to_string(entitiesLine_));
       const int numNodes = type == 1 ? 2 : type == 2 ? 3 : 1;
-      const char* syntax = type == 1 ? "elementTag node node"
+      const char* syntax = type == 1   ? "elementTag node node"
                            : type == 2 ? "elementTag node node node"
                                        : "elementTag node";
       const std::string where = " (element block at line " + std::to_string(blockLine) + ")";

@@ -4,10 +4,10 @@
 #include "friction/mesh/MeshReader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -27,6 +27,8 @@ std::string loadFile(const std::string& path) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) throw InputError(path, std::string("cannot open the mesh file: ") + std::strerror(errno));
   std::string text;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec) text.reserve(size);
   char buffer[1 << 16];
   std::size_t n;
   while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
@@ -80,8 +82,7 @@ Mesh readGmshMesh(const std::string& path) {
 
 namespace detail {
 
-TriangleDefect triangleDefect(const std::vector<Vector2>& points,
-                              const std::array<Index, 3>& t) {
+TriangleDefect triangleDefect(const std::vector<Vector2>& points, const std::array<Index, 3>& t) {
   const Vector2 ab = points[t[1]] - points[t[0]];
   const Vector2 bc = points[t[2]] - points[t[1]];
   const Vector2 ac = points[t[2]] - points[t[0]];

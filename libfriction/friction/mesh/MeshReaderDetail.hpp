@@ -2,6 +2,7 @@
 // GmshMeshReader.cpp). Private to friction/mesh (not part of the library's interface).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <string>
@@ -15,6 +16,15 @@ namespace friction::detail {
 /// True if a label, region or count read as long long fits the int the Mesh stores.
 inline bool fitsInt(long long v) {
   return v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max();
+}
+
+/// How many items to reserve for a count read from a file: the count, but no more than
+/// the file could hold with lines of at least `minLineBytes` (so that a corrupt header cannot
+/// make us allocate gigabytes before the truncation is reported).
+inline std::size_t reserveHint(long long announced, const TextScanner& scanner,
+                               std::size_t minLineBytes) {
+  const std::size_t cap = scanner.text().size() / minLineBytes + 1;
+  return announced < 0 ? 0 : std::min(static_cast<std::size_t>(announced), cap);
 }
 
 /// Parse a FreeFEM / gmsh file whose whole text the scanner holds.

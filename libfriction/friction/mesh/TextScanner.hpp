@@ -50,7 +50,9 @@ class TextScanner {
   /// Move to the next line that is not blank; false at the end of the file.
   bool next();
   /// The current line without trailing whitespace (and without a trailing '\r').
-  std::string_view line() const { return {lineBegin_, static_cast<std::size_t>(lineEnd_ - lineBegin_)}; }
+  std::string_view line() const {
+    return {lineBegin_, static_cast<std::size_t>(lineEnd_ - lineBegin_)};
+  }
   LineFields fields() const { return {lineBegin_, lineEnd_}; }
   /// 1-based number of the current line; after next() returned false, the number of the
   /// last line of the file (where "unexpected end of file" is reported).

@@ -26,6 +26,8 @@ class SyntheticResponse : public SlipResponse {
     Stt_ = w_.cwiseInverse().asDiagonal() * A;
     Snt_ = rnd(n, n);
     Stn_ = w_.cwiseInverse().asDiagonal() * Snt_.transpose() * w_.asDiagonal();
+    const MatrixXd C = rnd(n, n);
+    Snn_ = C * C.transpose();  // M S_nn symmetric, as for the real body
     tau0_ = 3 * rnd(n, 1);
     sigma0_ = -VectorXd::Ones(n) * 4 + rnd(n, 1);
   }
@@ -36,15 +38,17 @@ class SyntheticResponse : public SlipResponse {
     tau = tau0_ + Stt_ * beta;
     sigmaN = sigma0_ + Snt_ * beta;
   }
-  void dual(const VectorXd& qt, const VectorXd& qn, VectorXd& tauDual) override {
+  void dual(const VectorXd& qt, const VectorXd& qn, VectorXd& tauDual,
+            VectorXd* sigmaNDual) override {
     tauDual = Stt_ * qt + Stn_ * qn;
+    if (sigmaNDual) *sigmaNDual = Snt_ * qt + w_.cwiseInverse().asDiagonal() * Snn_ * qn;
   }
   std::mt19937& rng() { return rng_; }
 
  private:
   std::mt19937 rng_;
   VectorXd w_, mask_, tau0_, sigma0_;
-  MatrixXd Stt_, Snt_, Stn_;
+  MatrixXd Stt_, Snt_, Stn_, Snn_;
 };
 
 // Smallest distance of any node from a kink of D (|N| = ρ, or ρ = 0), relative to ρ's scale.

@@ -62,6 +62,16 @@ TEST_CASE("syntax errors name file, line and what was expected", "[dict][errors]
     CHECK_THAT(parseError("a 1\nsolid { E 1; }\n"),
                StartsWith("case/dict:1: key 'a': expected ';' to end the entry, got '{'"));
   }
+  SECTION("a dictionary inside a list") {
+    CHECK_THAT(parseError("boundary\n(\n    left { type wall; }\n);\n"),
+               StartsWith("case/dict:3: key 'boundary': a dictionary inside a list is not "
+                          "supported"));
+  }
+  SECTION("a directive inside a list") {
+    CHECK_THAT(parseError("l (1\n#include \"x\");\n"),
+               StartsWith("case/dict:1: key 'l': unterminated list") &&
+                   Contains("got '#include' at line 2"));
+  }
   SECTION("unexpected '}'") {
     CHECK_THAT(parseError("a 1;\n}\n"),
                StartsWith("case/dict:2: unexpected '}': no dictionary is open"));

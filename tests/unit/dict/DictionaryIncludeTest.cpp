@@ -10,7 +10,7 @@ using namespace friction::dicttest;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
-TEST_CASE("#include reads files relative to the including file, keeping their file and line",
+TEST_CASE("include reads files relative to the including file, keeping their file and line",
           "[dict][include]") {
   TempDir dir;
   dir.write("case/constant/material",
@@ -32,6 +32,7 @@ TEST_CASE("#include reads files relative to the including file, keeping their fi
   // The included file's header is that file's, not this dictionary's.
   CHECK(d.subDict("FoamFile").getWord("object") == "material");
   CHECK(d.getScalar("E") == 1e9);
+  CHECK(d.getScalar("nu") == 0.3);
   CHECK(d.location("E").str() == constant + "/common:3");
   CHECK(d.location("nu").str() == path + ":3");
   const Dictionary& solid = d.subDict("solid");
@@ -53,7 +54,7 @@ TEST_CASE("errors inside an included file name that file and line", "[dict][incl
              StartsWith((dir.path() / "inc").string() + ":2: key 'c': unterminated list"));
 }
 
-TEST_CASE("#include cycles and missing files are errors at the #include line", "[dict][include]") {
+TEST_CASE("include cycles and missing files are errors at the #include line", "[dict][include]") {
   TempDir dir;
   SECTION("a cycle through two files") {
     dir.write("a", "x 1;\n#include \"b\"\n");
@@ -88,7 +89,7 @@ TEST_CASE("#include cycles and missing files are errors at the #include line", "
   }
 }
 
-TEST_CASE("$name expands from the current, then the enclosing dictionaries", "[dict][expand]") {
+TEST_CASE("variables expand from the current, then the enclosing dictionaries", "[dict][expand]") {
   const Dictionary d = Dictionary::parse(R"(
 E      1e9;
 x      1;
@@ -114,8 +115,10 @@ inner
   CHECK_NOTHROW(d.checkAllRead());
 }
 
-TEST_CASE("$dict merges or copies a dictionary whose entries are then checked where they land",
-          "[dict][expand]") {
+TEST_CASE(
+    "a dictionary variable merges or copies a dictionary whose entries are then checked where they "
+    "land",
+    "[dict][expand]") {
   const Dictionary d = Dictionary::parse(R"(
 common { E 1e9; nu 0.25; }
 solid
@@ -140,7 +143,7 @@ copy $common;
   CHECK_NOTHROW(d.checkAllRead());
 }
 
-TEST_CASE("$name used in the wrong place is an error saying why", "[dict][expand]") {
+TEST_CASE("a variable used in the wrong place is an error saying why", "[dict][expand]") {
   CHECK_THAT(inputErrorOf([] { Dictionary::parse("v 1;\n$v;\n", "t"); }),
              StartsWith("t:2: '$v' at the start of an entry merges a dictionary, but 'v' is a "
                         "value"));

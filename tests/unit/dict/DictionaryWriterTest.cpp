@@ -33,13 +33,14 @@ std::string fileText(const fs::path& p) {
 }
 
 /// Doubles that stress the conversion: non-terminating binary fractions, extremes of the
-/// exponent range, a subnormal, a signed zero and integers beyond 2^53.
+/// exponent range (up to 1e300 in magnitude, the most OpenFOAM reads), a subnormal, a signed
+/// zero and integers beyond 2^53.
 const std::vector<double> kHardDoubles = {0.1,
                                           1.0 / 3.0,
                                           -2.0 / 3.0,
                                           M_PI,
                                           1e-300,
-                                          1.7976931348623157e308,
+                                          -1e300,
                                           std::numeric_limits<double>::denorm_min(),
                                           -0.0,
                                           9007199254740993.0,
@@ -136,13 +137,16 @@ TEST_CASE("long lists are written one item per line, short ones on one line", "[
   CHECK(itemLines == 23);
 }
 
-TEST_CASE("the writer's precision and its refusals", "[dict][writer]") {
+TEST_CASE("the writer's precision and its refusals of what OpenFOAM cannot read",
+          "[dict][writer]") {
   DictionaryWriter w("dictionary", "p");
   w.setPrecision(6);
   w.entry("third", 1.0 / 3.0);
   CHECK_THAT(w.str(), Contains("third       0.333333;"));
   CHECK_THROWS_AS(w.setPrecision(0), std::invalid_argument);
   CHECK_THROWS_AS(w.entry("x", std::nan("")), std::domain_error);
+  CHECK_THROWS_AS(w.entry("x", std::numeric_limits<double>::infinity()), std::domain_error);
+  CHECK_THROWS_AS(w.entry("x", -1.0000000000000001e301), std::domain_error);
   CHECK_THROWS_AS(w.entryWord("x", "two words"), std::invalid_argument);
   CHECK_THROWS_AS(w.entry("bad key", 1), std::invalid_argument);
   CHECK_THROWS_AS(w.entryString("x", "ends with a backslash\\"), std::invalid_argument);

@@ -29,52 +29,52 @@ const std::string freeFem =
     "4 1 4\n";   // 11
 
 const std::string gmsh22 =
-    "$MeshFormat\n"         // 1
-    "2.2 0 8\n"             // 2
-    "$EndMeshFormat\n"      // 3
-    "$Nodes\n"              // 4
-    "4\n"                   // 5
-    "1 0 0 0\n"             // 6
-    "2 1 0 0\n"             // 7
-    "3 1 1 0\n"             // 8
-    "4 0 1 0\n"             // 9
-    "$EndNodes\n"           // 10
-    "$Elements\n"           // 11
-    "3\n"                   // 12
-    "1 1 2 7 1 1 2\n"       // 13
-    "2 2 2 1 1 1 2 3\n"     // 14
-    "3 2 2 1 1 1 3 4\n"     // 15
-    "$EndElements\n";       // 16
+    "$MeshFormat\n"      // 1
+    "2.2 0 8\n"          // 2
+    "$EndMeshFormat\n"   // 3
+    "$Nodes\n"           // 4
+    "4\n"                // 5
+    "1 0 0 0\n"          // 6
+    "2 1 0 0\n"          // 7
+    "3 1 1 0\n"          // 8
+    "4 0 1 0\n"          // 9
+    "$EndNodes\n"        // 10
+    "$Elements\n"        // 11
+    "3\n"                // 12
+    "1 1 2 7 1 1 2\n"    // 13
+    "2 2 2 1 1 1 2 3\n"  // 14
+    "3 2 2 1 1 1 3 4\n"  // 15
+    "$EndElements\n";    // 16
 
 const std::string gmsh41 =
-    "$MeshFormat\n"             // 1
-    "4.1 0 8\n"                 // 2
-    "$EndMeshFormat\n"          // 3
-    "$Entities\n"               // 4
-    "0 1 1 0\n"                 // 5
-    "1 0 0 0 1 0 0 1 7 0\n"     // 6
-    "1 0 0 0 1 1 0 1 1 0\n"     // 7
-    "$EndEntities\n"            // 8
-    "$Nodes\n"                  // 9
-    "1 4 10 40\n"               // 10
-    "2 1 0 4\n"                 // 11
-    "10\n"                      // 12
-    "20\n"                      // 13
-    "30\n"                      // 14
-    "40\n"                      // 15
-    "0 0 0\n"                   // 16
-    "1 0 0\n"                   // 17
-    "1 1 0\n"                   // 18
-    "0 1 0\n"                   // 19
-    "$EndNodes\n"               // 20
-    "$Elements\n"               // 21
-    "2 3 1 3\n"                 // 22
-    "1 1 1 1\n"                 // 23
-    "1 10 20\n"                 // 24
-    "2 1 2 2\n"                 // 25
-    "2 10 20 30\n"              // 26
-    "3 10 30 40\n"              // 27
-    "$EndElements\n";           // 28
+    "$MeshFormat\n"          // 1
+    "4.1 0 8\n"              // 2
+    "$EndMeshFormat\n"       // 3
+    "$Entities\n"            // 4
+    "0 1 1 0\n"              // 5
+    "1 0 0 0 1 0 0 1 7 0\n"  // 6
+    "1 0 0 0 1 1 0 1 1 0\n"  // 7
+    "$EndEntities\n"         // 8
+    "$Nodes\n"               // 9
+    "1 4 10 40\n"            // 10
+    "2 1 0 4\n"              // 11
+    "10\n"                   // 12
+    "20\n"                   // 13
+    "30\n"                   // 14
+    "40\n"                   // 15
+    "0 0 0\n"                // 16
+    "1 0 0\n"                // 17
+    "1 1 0\n"                // 18
+    "0 1 0\n"                // 19
+    "$EndNodes\n"            // 20
+    "$Elements\n"            // 21
+    "2 3 1 3\n"              // 22
+    "1 1 1 1\n"              // 23
+    "1 10 20\n"              // 24
+    "2 1 2 2\n"              // 25
+    "2 10 20 30\n"           // 26
+    "3 10 30 40\n"           // 27
+    "$EndElements\n";        // 28
 
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> lines;
@@ -116,7 +116,7 @@ std::string firstLines(const std::string& text, int n) {
 
 }  // namespace
 
-TEST_CASE("the unmodified base meshes of the error tests read without error",
+TEST_CASE("mesh: the unmodified base meshes of the error tests read without error",
           "[mesh][errors]") {
   // Otherwise the error tests below could pass for the wrong reason.
   TempDir dir;
@@ -129,7 +129,7 @@ TEST_CASE("the unmodified base meshes of the error tests read without error",
   }
 }
 
-TEST_CASE("a mesh file that cannot be opened is an InputError naming the file",
+TEST_CASE("mesh: a mesh file that cannot be opened is an InputError naming the file",
           "[mesh][errors]") {
   TempDir dir;
   const std::string path = dir.file("missing.msh");
@@ -142,13 +142,13 @@ TEST_CASE("a mesh file that cannot be opened is an InputError naming the file",
   }
 }
 
-TEST_CASE("an empty mesh file is rejected", "[mesh][errors]") {
+TEST_CASE("mesh: an empty mesh file is rejected", "[mesh][errors]") {
   TempDir dir;
   requireReadError(dir, "empty.msh", "", 0, {"the file is empty", "nv nt nbe", "$MeshFormat"});
   requireReadError(dir, "blank.msh", "\n  \n\n", 3, {"the file is empty"});
 }
 
-TEST_CASE("a truncated mesh file is rejected, saying how many items were announced and found",
+TEST_CASE("mesh: a truncated mesh file is rejected, saying how many items were announced and found",
           "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM vertices") {
@@ -156,41 +156,46 @@ TEST_CASE("a truncated mesh file is rejected, saying how many items were announc
                      {"unexpected end of file", "announces 4 vertices, found 2", "x y label"});
   }
   SECTION("FreeFEM triangles") {
-    requireReadError(dir, "trunc.msh", firstLines(freeFem, 6), 6,
-                     {"unexpected end of file", "announces 2 triangles, found 1",
-                      "v1 v2 v3 region"});
+    requireReadError(
+        dir, "trunc.msh", firstLines(freeFem, 6), 6,
+        {"unexpected end of file", "announces 2 triangles, found 1", "v1 v2 v3 region"});
   }
   SECTION("FreeFEM edges") {
     requireReadError(dir, "trunc.msh", firstLines(freeFem, 9), 9,
                      {"announces 4 edges, found 2", "v1 v2 label"});
   }
   SECTION("gmsh 2.2 nodes") {
-    requireReadError(dir, "trunc22.msh", firstLines(gmsh22, 7), 7,
-                     {"unexpected end of file in $Nodes", "announces 4 nodes, found 2",
-                      "tag x y z"});
+    requireReadError(
+        dir, "trunc22.msh", firstLines(gmsh22, 7), 7,
+        {"unexpected end of file in $Nodes", "announces 4 nodes, found 2", "tag x y z"});
   }
   SECTION("gmsh 4.1 elements cut short before $EndElements") {
     requireReadError(dir, "trunc41.msh", deleteLine(gmsh41, 27), 27,
                      {"ends $Elements (opened at line 21) early", "announces 3 elements, found 2"});
   }
   SECTION("gmsh 4.1 nodes: the file ends within the coordinates") {
-    requireReadError(dir, "trunc41.msh", firstLines(gmsh41, 17), 17,
-                     {"unexpected end of file in $Nodes", "announces 4 node coordinates, found 2",
-                      "x y z"});
+    requireReadError(
+        dir, "trunc41.msh", firstLines(gmsh41, 17), 17,
+        {"unexpected end of file in $Nodes", "announces 4 node coordinates, found 2", "x y z"});
   }
 }
 
-TEST_CASE("counts that disagree with the file are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: counts that disagree with the file are rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM: more lines than the header announces") {
-    requireReadError(dir, "more.msh", freeFem + "1 3 5\n", 12,
-                     {"goes on after the 4 edges", "expected the end of the file",
-                      "nv nt nbe = 4 2 4"});
+    requireReadError(
+        dir, "more.msh", freeFem + "1 3 5\n", 12,
+        {"goes on after the 4 edges", "expected the end of the file", "nv nt nbe = 4 2 4"});
   }
   SECTION("FreeFEM: fewer vertices announced than written") {
-    requireReadError(dir, "fewer.msh", replaceLine(freeFem, 1, "3 2 4"), 5,
-                     {"expected triangle 1 of 2 as \"v1 v2 v3 region\"", "\"0 1 3\"",
-                      "check the counts"});
+    requireReadError(
+        dir, "fewer.msh", replaceLine(freeFem, 1, "3 2 4"), 5,
+        {"expected triangle 1 of 2 as \"v1 v2 v3 region\"", "\"0 1 3\"", "check the counts"});
+  }
+  SECTION("FreeFEM: a header announcing far more than the file holds") {
+    // Also checks that the reader does not allocate what a corrupt header announces.
+    requireReadError(dir, "huge.msh", replaceLine(freeFem, 1, "2000000000 2000000000 4"), 6,
+                     {"expected vertex 5 of 2000000000 as \"x y label\"", "found \"1 2 3 1\""});
   }
   SECTION("gmsh 2.2: more elements than announced") {
     requireReadError(dir, "more22.msh", replaceLine(gmsh22, 12, "2"), 15,
@@ -198,9 +203,9 @@ TEST_CASE("counts that disagree with the file are rejected", "[mesh][errors]") {
                       "after the 2 elements it announces"});
   }
   SECTION("gmsh 4.1: node blocks that do not add up to the header's count") {
-    requireReadError(dir, "nodes41.msh", replaceLine(gmsh41, 10, "1 5 10 40"), 10,
-                     {"$Nodes header announces 5 nodes", "blocks hold 4",
-                      "expected the counts to agree"});
+    requireReadError(
+        dir, "nodes41.msh", replaceLine(gmsh41, 10, "1 5 10 40"), 10,
+        {"$Nodes header announces 5 nodes", "blocks hold 4", "expected the counts to agree"});
   }
   SECTION("gmsh 4.1: element blocks that do not add up to the header's count") {
     requireReadError(dir, "elements41.msh", replaceLine(gmsh41, 22, "2 4 1 3"), 22,
@@ -208,7 +213,7 @@ TEST_CASE("counts that disagree with the file are rejected", "[mesh][errors]") {
   }
 }
 
-TEST_CASE("malformed lines are rejected with the expected syntax", "[mesh][errors]") {
+TEST_CASE("mesh: malformed lines are rejected with the expected syntax", "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM header") {
     requireReadError(dir, "header.msh", replaceLine(freeFem, 1, "4 2"), 1,
@@ -246,7 +251,7 @@ TEST_CASE("malformed lines are rejected with the expected syntax", "[mesh][error
   }
 }
 
-TEST_CASE("vertex numbers out of range are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: vertex numbers out of range are rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM triangle vertex beyond nv") {
     requireReadError(dir, "range.msh", replaceLine(freeFem, 6, "1 2 5 1"), 6,
@@ -258,7 +263,7 @@ TEST_CASE("vertex numbers out of range are rejected", "[mesh][errors]") {
   }
 }
 
-TEST_CASE("gmsh elements that reference unknown nodes are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: gmsh elements that reference unknown nodes are rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("gmsh 2.2 line element") {
     requireReadError(dir, "node22.msh", replaceLine(gmsh22, 13, "1 1 2 7 1 1 9"), 13,
@@ -274,7 +279,7 @@ TEST_CASE("gmsh elements that reference unknown nodes are rejected", "[mesh][err
   }
 }
 
-TEST_CASE("duplicate gmsh node tags are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: duplicate gmsh node tags are rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("dense tags") {
     requireReadError(dir, "dup22.msh", replaceLine(gmsh22, 9, "3 0 1 0"), 9,
@@ -289,12 +294,12 @@ TEST_CASE("duplicate gmsh node tags are rejected", "[mesh][errors]") {
   }
 }
 
-TEST_CASE("NaN or Inf coordinates are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: NaN or Inf coordinates are rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM") {
-    requireReadError(dir, "nan.msh", replaceLine(freeFem, 2, "nan 0 1"), 2,
-                     {"vertex 1 has coordinate x that is not a finite number",
-                      "expected finite coordinates"});
+    requireReadError(
+        dir, "nan.msh", replaceLine(freeFem, 2, "nan 0 1"), 2,
+        {"vertex 1 has coordinate x that is not a finite number", "expected finite coordinates"});
   }
   SECTION("gmsh 2.2") {
     requireReadError(dir, "inf22.msh", replaceLine(gmsh22, 8, "3 1 inf 0"), 8,
@@ -306,7 +311,7 @@ TEST_CASE("NaN or Inf coordinates are rejected", "[mesh][errors]") {
   }
 }
 
-TEST_CASE("gmsh nodes off the plane z = 0 are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: gmsh nodes off the plane z = 0 are rejected", "[mesh][errors]") {
   TempDir dir;
   requireReadError(dir, "z22.msh", replaceLine(gmsh22, 8, "3 1 1 0.5"), 8,
                    {"node 3 has z = 0.5", "expected a 2D mesh in the plane z = 0"});
@@ -314,7 +319,7 @@ TEST_CASE("gmsh nodes off the plane z = 0 are rejected", "[mesh][errors]") {
                    {"node 30 has z = ", "plane z = 0"});
 }
 
-TEST_CASE("zero-area triangles are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: zero-area triangles are rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM: three vertices on a line") {
     requireReadError(dir, "flat.msh", replaceLine(freeFem, 4, "2 0 2"), 6,
@@ -327,7 +332,7 @@ TEST_CASE("zero-area triangles are rejected", "[mesh][errors]") {
   }
 }
 
-TEST_CASE("clockwise triangles are rejected, naming the triangle and how to fix it",
+TEST_CASE("mesh: clockwise triangles are rejected, naming the triangle and how to fix it",
           "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM") {
@@ -346,12 +351,12 @@ TEST_CASE("clockwise triangles are rejected, naming the triangle and how to fix 
   }
 }
 
-TEST_CASE("edges whose two ends are the same node are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: edges whose two ends are the same node are rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM") {
-    requireReadError(dir, "loop.msh", replaceLine(freeFem, 9, "2 2 2"), 9,
-                     {"edge 2 joins vertex 2 to itself",
-                      "expected an edge between two different vertices"});
+    requireReadError(
+        dir, "loop.msh", replaceLine(freeFem, 9, "2 2 2"), 9,
+        {"edge 2 joins vertex 2 to itself", "expected an edge between two different vertices"});
   }
   SECTION("gmsh 4.1") {
     requireReadError(dir, "loop41.msh", replaceLine(gmsh41, 24, "1 10 10"), 24,
@@ -359,7 +364,7 @@ TEST_CASE("edges whose two ends are the same node are rejected", "[mesh][errors]
   }
 }
 
-TEST_CASE("unsupported gmsh element types are rejected, naming the type", "[mesh][errors]") {
+TEST_CASE("mesh: unsupported gmsh element types are rejected, naming the type", "[mesh][errors]") {
   TempDir dir;
   SECTION("gmsh 2.2: 6-node triangle") {
     requireReadError(dir, "tri6.msh", replaceLine(gmsh22, 14, "2 9 2 1 1 1 2 3 5 6 7"), 14,
@@ -373,10 +378,10 @@ TEST_CASE("unsupported gmsh element types are rejected, naming the type", "[mesh
                       "P2 nodes are built from the P1 mesh: mesh with order 1"});
   }
   SECTION("gmsh 2.2: quadrangle") {
-    requireReadError(dir, "quad.msh", replaceLine(gmsh22, 14, "2 3 2 1 1 1 2 3 4"), 14,
-                     {"element type 3 (4-node quadrangle) is not supported",
-                      "expected 2-node lines (type 1), 3-node triangles (type 2)",
-                      "do not recombine"});
+    requireReadError(
+        dir, "quad.msh", replaceLine(gmsh22, 14, "2 3 2 1 1 1 2 3 4"), 14,
+        {"element type 3 (4-node quadrangle) is not supported",
+         "expected 2-node lines (type 1), 3-node triangles (type 2)", "do not recombine"});
   }
   SECTION("gmsh 4.1: tetrahedron") {
     requireReadError(dir, "tet.msh", replaceLine(gmsh41, 25, "3 1 4 2"), 25,
@@ -384,7 +389,7 @@ TEST_CASE("unsupported gmsh element types are rejected, naming the type", "[mesh
   }
 }
 
-TEST_CASE("missing gmsh $End markers are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: missing gmsh $End markers are rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("$EndNodes") {
     requireReadError(dir, "endnodes.msh", deleteLine(gmsh22, 10), 10,
@@ -396,8 +401,9 @@ TEST_CASE("missing gmsh $End markers are rejected", "[mesh][errors]") {
                      {"expected $EndMeshFormat to close $MeshFormat (opened at line 1)"});
   }
   SECTION("$EndElements at the end of the file") {
-    requireReadError(dir, "endelements.msh", deleteLine(gmsh41, 28), 27,
-                     {"missing $EndElements", "the file ends inside $Elements (opened at line 21)"});
+    requireReadError(
+        dir, "endelements.msh", deleteLine(gmsh41, 28), 27,
+        {"missing $EndElements", "the file ends inside $Elements (opened at line 21)"});
   }
   SECTION("the end of an unknown section") {
     requireReadError(dir, "enddata.msh", gmsh22 + "$NodeData\n1\n\"u\"\n", 19,
@@ -409,20 +415,20 @@ TEST_CASE("missing gmsh $End markers are rejected", "[mesh][errors]") {
   }
 }
 
-TEST_CASE("a mesh without triangles is rejected", "[mesh][errors]") {
+TEST_CASE("mesh: a mesh without triangles is rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("FreeFEM") {
     requireReadError(dir, "none.msh", replaceLine(freeFem, 1, "4 0 4"), 1,
                      {"announces nt = 0 triangles", "expected a mesh with at least one triangle"});
   }
   SECTION("gmsh 2.2 with line elements only") {
-    requireReadError(dir, "none22.msh", firstLines(replaceLine(gmsh22, 12, "1"), 13) +
-                                            "$EndElements\n",
-                     11, {"$Elements holds no 3-node triangles (type 2)", "gmsh -2"});
+    requireReadError(dir, "none22.msh",
+                     firstLines(replaceLine(gmsh22, 12, "1"), 13) + "$EndElements\n", 11,
+                     {"$Elements holds no 3-node triangles (type 2)", "gmsh -2"});
   }
 }
 
-TEST_CASE("binary mesh files are rejected with a clear message", "[mesh][errors]") {
+TEST_CASE("mesh: binary mesh files are rejected with a clear message", "[mesh][errors]") {
   TempDir dir;
   SECTION("gmsh binary") {
     requireReadError(dir, "binary.msh",
@@ -435,20 +441,19 @@ TEST_CASE("binary mesh files are rejected with a clear message", "[mesh][errors]
   }
 }
 
-TEST_CASE("gmsh format versions other than 2.2 and 4.1 are rejected", "[mesh][errors]") {
+TEST_CASE("mesh: gmsh format versions other than 2.2 and 4.1 are rejected", "[mesh][errors]") {
   TempDir dir;
-  requireReadError(dir, "v40.msh", replaceLine(gmsh41, 2, "4 0 8"), 2,
-                   {"gmsh format version 4 is not supported", "expected 2.2 or 4.1",
-                    "-format msh41"});
+  requireReadError(
+      dir, "v40.msh", replaceLine(gmsh41, 2, "4 0 8"), 2,
+      {"gmsh format version 4 is not supported", "expected 2.2 or 4.1", "-format msh41"});
 }
 
-TEST_CASE("a gmsh surface in two physical surfaces is rejected", "[mesh][errors]") {
+TEST_CASE("mesh: a gmsh surface in two physical surfaces is rejected", "[mesh][errors]") {
   TempDir dir;
   SECTION("gmsh 2.2: the triangle written once per group") {
-    requireReadError(dir, "regions22.msh",
-                     replaceLine(replaceLine(gmsh22, 12, "3"), 15, "3 2 2 2 1 1 2 3"), 15,
-                     {"surface 1 is in two physical surfaces (1 and 2)",
-                      "a triangle has one region"});
+    requireReadError(
+        dir, "regions22.msh", replaceLine(replaceLine(gmsh22, 12, "3"), 15, "3 2 2 2 1 1 2 3"), 15,
+        {"surface 1 is in two physical surfaces (1 and 2)", "a triangle has one region"});
   }
   SECTION("gmsh 4.1: $Entities lists two groups") {
     requireReadError(dir, "regions41.msh", replaceLine(gmsh41, 7, "1 0 0 0 1 1 0 2 1 2 0"), 25,
@@ -456,7 +461,7 @@ TEST_CASE("a gmsh surface in two physical surfaces is rejected", "[mesh][errors]
   }
 }
 
-TEST_CASE("gmsh element blocks must follow $Nodes and name entities of $Entities",
+TEST_CASE("mesh: gmsh element blocks must follow $Nodes and name entities of $Entities",
           "[mesh][errors]") {
   TempDir dir;
   SECTION("$Elements before $Nodes") {

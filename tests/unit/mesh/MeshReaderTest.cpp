@@ -24,7 +24,7 @@ const std::string twoTriangles41Head =
 
 }  // namespace
 
-TEST_CASE("readMesh reads the same unit square from FreeFEM, gmsh 2.2 and gmsh 4.1 files",
+TEST_CASE("mesh: readMesh reads the same unit square from FreeFEM, gmsh 2.2 and gmsh 4.1 files",
           "[mesh][reader]") {
   const Mesh ff = readMesh(dataDir + "square.msh");
   const Mesh g22 = readMesh(dataDir + "square22.msh");
@@ -42,9 +42,9 @@ TEST_CASE("readMesh reads the same unit square from FreeFEM, gmsh 2.2 and gmsh 4
     CHECK(m->edges.size() == 14);
     CHECK(m->edgeLabel.size() == 14);
     CHECK(m->triangleRegion == std::vector<int>(16, 1));
-    // 16 triangles of area 1/32 each: exact in binary floating point.
+    // 16 triangles of area 1/16 each: exact in binary floating point.
     CHECK(m->totalArea() == 1.0);
-    for (Index t = 0; t < m->numTriangles(); ++t) CHECK(m->signedArea(t) == 1.0 / 32);
+    for (Index t = 0; t < m->numTriangles(); ++t) CHECK(m->signedArea(t) == 1.0 / 16);
     // The fracture: the last two edges, at y = 0.5 from x = 0.25 to 0.75.
     CHECK(m->edgeLabel[12] == 5);
     CHECK(m->edgeLabel[13] == 5);
@@ -76,7 +76,7 @@ TEST_CASE("readMesh reads the same unit square from FreeFEM, gmsh 2.2 and gmsh 4
   CHECK(geometryOf(readGmshMesh(dataDir + "square41.msh")) == geometryOf(g41));
 }
 
-TEST_CASE("readMesh tells the format from the content, not the file name", "[mesh][reader]") {
+TEST_CASE("mesh: readMesh tells the format from the content, not the file name", "[mesh][reader]") {
   TempDir dir;
   std::ifstream in41(dataDir + "square41.msh"), inFF(dataDir + "square.msh");
   const std::string text41((std::istreambuf_iterator<char>(in41)), {});
@@ -92,7 +92,7 @@ TEST_CASE("readMesh tells the format from the content, not the file name", "[mes
   CHECK(f.numTriangles() == 16);
 }
 
-TEST_CASE("FreeFEM vertex labels are ignored and edges keep their file orientation",
+TEST_CASE("mesh: FreeFEM vertex labels are ignored and edges keep their file orientation",
           "[mesh][reader]") {
   TempDir dir;
   // Vertex labels as adaptmesh may leave them; the crack edge 2-4 written backwards (4 2).
@@ -108,18 +108,18 @@ TEST_CASE("FreeFEM vertex labels are ignored and edges keep their file orientati
   CHECK(m.totalArea() == 1.0);
 }
 
-TEST_CASE("a gmsh curve in several physical groups gives one edge per group in 2.2 and 4.1",
+TEST_CASE("mesh: a gmsh curve in several physical groups gives one edge per group in 2.2 and 4.1",
           "[mesh][reader]") {
   TempDir dir;
   // Bottom edge 1-2 in physical curves 7 and 8 ("bottom" and "all").
   const std::string names =
       "$PhysicalNames\n3\n1 7 \"bottom\"\n1 8 \"all boundary\"\n2 3 \"rock\"\n$EndPhysicalNames\n";
-  const Mesh g22 = readMesh(dir.write(
-      "groups22.msh",
-      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n" + names +
-          "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
-          "$Elements\n4\n1 1 2 7 1 1 2\n2 1 2 8 1 1 2\n3 2 2 3 1 1 2 3\n4 2 2 3 1 1 3 4\n"
-          "$EndElements\n"));
+  const Mesh g22 = readMesh(
+      dir.write("groups22.msh",
+                "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n" + names +
+                    "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
+                    "$Elements\n4\n1 1 2 7 1 1 2\n2 1 2 8 1 1 2\n3 2 2 3 1 1 2 3\n4 2 2 3 1 1 3 4\n"
+                    "$EndElements\n"));
   const Mesh g41 = readMesh(dir.write(
       "groups41.msh", twoTriangles41Head + names +
                           "$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
@@ -136,7 +136,7 @@ TEST_CASE("a gmsh curve in several physical groups gives one edge per group in 2
   }
 }
 
-TEST_CASE("gmsh elements without a physical group get label and region 0", "[mesh][reader]") {
+TEST_CASE("mesh: gmsh elements without a physical group get label and region 0", "[mesh][reader]") {
   TempDir dir;
   // 2.2 with no tags at all, and 4.1 without $Entities (both as Mesh.SaveAll may write).
   const Mesh g22 = readMesh(dir.write("untagged22.msh",
@@ -157,8 +157,9 @@ TEST_CASE("gmsh elements without a physical group get label and region 0", "[mes
   }
 }
 
-TEST_CASE("gmsh readers skip unknown sections and take sparse tags, parametric nodes and CRLF",
-          "[mesh][reader]") {
+TEST_CASE(
+    "mesh: gmsh readers skip unknown sections and take sparse tags, parametric nodes and CRLF",
+    "[mesh][reader]") {
   TempDir dir;
   // Tags beyond 2^32 (sparse node map), parametric nodes on a curve (u after z), z at
   // round-off level, $Periodic and $NodeData sections, a point element, Windows line ends.
@@ -189,7 +190,7 @@ TEST_CASE("gmsh readers skip unknown sections and take sparse tags, parametric n
   CHECK(m.totalArea() == 1.0);
 }
 
-TEST_CASE("signedArea is positive counter-clockwise and totalArea adds the areas",
+TEST_CASE("mesh: signedArea is positive counter-clockwise and totalArea adds the areas",
           "[mesh][reader]") {
   Mesh m;
   m.points = {Vector2(0, 0), Vector2(2, 0), Vector2(0, 3), Vector2(2, 3)};

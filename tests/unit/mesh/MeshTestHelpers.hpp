@@ -56,9 +56,8 @@ class TempDir {
 /// Run a shell command in `dir`, output to a log file there; returns the exit code.
 inline int run(const TempDir& dir, const std::string& command) {
   const std::string log = dir.file("tool.log");
-  const int status = std::system(("cd '" + dir.file("") + "' && " + command + " > '" + log +
-                                  "' 2>&1")
-                                     .c_str());
+  const int status =
+      std::system(("cd '" + dir.file("") + "' && " + command + " > '" + log + "' 2>&1").c_str());
   if (status != 0) {
     std::ifstream in(log);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -68,7 +67,8 @@ inline int run(const TempDir& dir, const std::string& command) {
 }
 
 /// Write `content` to `name` in `dir`, read it with `read` and require an InputError whose
-/// message starts with "<dir>/<name>:<line>:" (line 0: the file as a whole) and contains every string of `expected`.
+/// message starts with "<dir>/<name>:<line>:" (line 0: the file as a whole) and contains every
+/// string of `expected`.
 template <typename Reader>
 void requireReadError(const TempDir& dir, const std::string& name, const std::string& content,
                       int line, const std::vector<std::string>& expected, Reader read) {

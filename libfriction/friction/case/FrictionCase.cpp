@@ -1,0 +1,278 @@
+// The case run by frictionSolver: see FrictionCase.hpp.
+#include "friction/case/FrictionCase.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "friction/core/Suggest.hpp"
+#include "friction/dict/Dictionary.hpp"
+#include "friction/dict/DictionaryWriter.hpp"
+#include "friction/fracture/SplitMeshIO.hpp"
+#include "friction/output/FieldWriter.hpp"
+#include "friction/output/TimeFolder.hpp"
+
+namespace friction {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+Dictionary readCaseFile(const std::string& caseDir, const std::string& relative) {
+  const std::string path = (fs::path(caseDir) / relative).lexically_normal().string();
+  if (!fs::is_regular_file(path))
+    throw InputError(path, "cannot open: the case needs " + relative);
+  return Dictionary::read(path);
+}
+
+}  // namespace
+
+FrictionCase::~FrictionCase() = default;
+
+FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
+  // 1. Every dictionary is read and checked before any work: a typo costs nothing.
+  const Dictionary controlDict = readCaseFile(caseDir, "system/controlDict");
+  time_ = std::make_unique<TimeControl>(controlDict);
+  controlDict.checkAllRead();
+
+  const std::string splitPath = (fs::path(caseDir) / "constant" / "splitMesh").string();
+  if (!fs::is_regular_file(splitPath))
+    throw InputError(splitPath, "cannot open: run splitFractureNodes on the case first");
+  split_ = readSplitMesh(splitPath);
+
+  const Dictionary mech = readCaseFile(caseDir, "constant/mechanicalProperties");
+  const bool planeStress = mech.getBoolOr("planeStress", false);
+  if (mech.found("E") || !mech.found("lambda")) {
+    const double E = mech.getScalar("E", Bounds::positive());
+    const double nu = mech.getScalar("nu", {-1.0, 0.5, true, true});
+    material_ = std::make_unique<Material>(Material::fromYoungPoisson(E, nu, planeStress));
+  } else {
+    const double mu = mech.getScalar("mu", Bounds::positive());
+    const double lambda = mech.getScalar("lambda");
+    if (lambda + 2 * mu / 3 <= 0)
+      mech.fail("lambda", "key 'lambda': expected λ + 2μ/3 > 0 (a positive bulk modulus), got λ = " +
+                              std::to_string(lambda));
+    material_ = std::make_unique<Material>(Material::fromLame(lambda, mu, planeStress));
+  }
+  if (mech.found("bodyForce")) bodyForce_ = mech.getVector("bodyForce");
+  mech.checkAllRead();
+
+  std::vector<int> fractureLabels;
+  for (const auto& g : split_.fractures) fractureLabels.push_back(g.label);
+  const Dictionary D = readCaseFile(caseDir, "0/D");
+  if (D.found("dimensions")) D.values("dimensions");
+  if (D.found("internalField")) D.values("internalField");
+  bcs_ = std::make_unique<BoundaryConditions>(D, split_.mesh, fractureLabels);
+  D.checkAllRead();
+
+  const Dictionary fp = readCaseFile(caseDir, "constant/fractureProperties");
+  std::vector<std::string> names;
+  for (const auto& g : split_.fractures) names.push_back(g.name);
+  for (const std::string& key : fp.keys())
+    if (key != "FoamFile" && std::find(names.begin(), names.end(), key) == names.end())
+      fp.fail(key, "'" + key + "' is not a fracture of the split mesh" + suggestionText(key, names) +
+                       " (fractures: " + joinWords(names) + ")");
+  for (const auto& g : split_.fractures) {
+    if (!fp.isDict(g.name))
+      throw InputError(fp.location(), "no entry for fracture '" + g.name +
+                                          "' (expected a sub-dictionary with its 'law')");
+    fractures_.push_back({g.name, FrictionLaw::New(fp.subDict(g.name))});
+  }
+  fp.checkAllRead();
+
+  const Dictionary sol = readCaseFile(caseDir, "system/frictionSolution");
+  order_ = static_cast<int>(sol.getIntOr("elementOrder", 1, {1, 2}));
+  linearSolver_ = sol.getChoiceOr("linearSolver", SparseFactor::backendNames(), "cholmod");
+  const Dictionary& control = sol.subDict("control");
+  if (control.found("gamma")) {
+    gammaAbsolute_ = true;
+    gamma_ = control.getScalar("gamma", Bounds::positive());
+  } else {
+    gammaRelative_ = control.getScalarOr("gammaRelative", 1.0, Bounds::positive());
+  }
+  zeta_ = control.getScalarOr("zeta", 0.0, Bounds::nonNegative());
+  gradient_ = control.getChoiceOr("gradient", {"exact", "frozenRho"}, "exact") == "exact"
+                  ? GradientKind::exact
+                  : GradientKind::frozenRho;
+  warmStart_ = control.getBoolOr("warmStart", false);
+  optimizer_ = Optimizer::New(control.subDict("optimizer"));
+  sol.checkAllRead();
+}
+
+void FrictionCase::printSettings(std::ostream& log) const {
+  log << "Case: " << caseDir_ << "\n"
+      << "Material: E " << material_->youngModulus() << " Pa, nu " << material_->poissonRatio()
+      << (material_->planeStress() ? ", plane stress" : ", plane strain") << "\n"
+      << "Elements: P" << order_ << ", linear solver " << linearSolver_ << "\n";
+  for (const auto& f : fractures_) {
+    log << "Fracture " << f.name << ": law " << f.law->name();
+    if (f.law->mu() > 0) log << ", frictionCoefficient " << f.law->mu();
+    if (f.law->cohesion() > 0) log << ", threshold " << f.law->cohesion() << " Pa";
+    log << "\n";
+  }
+  log << "Control: optimizer " << optimizer_->name() << ", gradient "
+      << (gradient_ == GradientKind::exact ? "exact" : "frozenRho") << ", gamma " << gamma_
+      << " Pa/m" << (gammaAbsolute_ ? "" : " (gammaRelative " + std::to_string(gammaRelative_) + " x E/h)")
+      << ", zeta " << zeta_ << ", tolerance " << optimizer_->stopRule().tolerance << " ("
+      << (optimizer_->stopRule().on == StopRule::On::residual ? "residual" : "step")
+      << "), maxIterations " << optimizer_->stopRule().maxIterations << "\n"
+      << "Body force: " << (bodyForce_.isZero() ? "none" : "on") << "\n";
+}
+
+FactorStatus FrictionCase::setup(std::ostream& log) {
+  system_ = std::make_unique<FractureSystem>(split_, order_, *material_);
+  bcs_->fix(system_->dirichlet());
+  const FactorStatus status = system_->factor(linearSolver_);
+  const auto& nodes = system_->controlNodes();
+  const Eigen::Index n = static_cast<Eigen::Index>(nodes.size());
+
+  // Per control node: ρ = c − μ σ_n from its fracture's law.
+  mu_.resize(n);
+  cohesion_.resize(n);
+  double hSum = 0;
+  int hCount = 0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    mu_[k] = fractures_[nodes[k].fracture].law->mu();
+    cohesion_[k] = fractures_[nodes[k].fracture].law->cohesion();
+    if (k > 0 && nodes[k].fracture == nodes[k - 1].fracture) {
+      hSum += (nodes[k].x - nodes[k - 1].x).norm() * order_;
+      ++hCount;
+    }
+  }
+  // γ has units of stress/length; its scale-free default is E over the mean fracture edge
+  // length h (METHOD.md §3): then γβ and τ are of the same size for slips of order h·τ/E.
+  if (!gammaAbsolute_) gamma_ = gammaRelative_ * material_->youngModulus() / (hSum / std::max(hCount, 1));
+  slip_ = Eigen::VectorXd::Zero(n);
+
+  const auto& f = system_->factorization();
+  log << "Split mesh: " << split_.mesh.numPoints() << " points, " << split_.mesh.numTriangles()
+      << " triangles, " << system_->unsplitSpace().numDofs() << " dofs (P" << order_ << "), "
+      << n << " fracture control nodes\n";
+  if (int held = system_->numHeldOnDirichlet())
+    log << "Note: " << held << " fracture node(s) lie on a Dirichlet patch: their jump is held at zero\n";
+  log << "Factorisation: " << toString(status) << " (" << f.backend() << ", "
+      << std::setprecision(3) << f.factorSeconds() << " s)\n";
+  printSettings(log);
+  log << "\n";
+  return status;
+}
+
+Eigen::VectorXd FrictionCase::loadVector(double t) const {
+  const LagrangeSpace& space = system_->splitSpace();
+  Eigen::VectorXd F = bcs_->neumannLoad(space, t);
+  if (!bodyForce_.isZero()) F += system_->splitAssembler().bodyForce(bodyForce_);
+  return F;
+}
+
+std::vector<StepResult> FrictionCase::run(std::ostream& log) {
+  std::vector<StepResult> results;
+  FractureSystem& sys = *system_;
+  const Eigen::Index n = sys.size();
+  Eigen::VectorXd beta = Eigen::VectorXd::Zero(n), lastBeta = beta;
+  const fs::path post = fs::path(caseDir_) / "postProcessing";
+  fs::create_directories(post);
+  std::ofstream history(post / "convergence.dat");
+  history << "# time iteration J relResidual stepNorm\n";
+  history.precision(8);
+
+  for (int k = 1; k <= time_->numSteps(); ++k) {
+    StepResult r;
+    r.time = time_->time(k);
+    const long solves0 = sys.factorization().numSolves();
+
+    bcs_->setValues(sys.dirichlet(), r.time);
+    sys.setStep(loadVector(r.time), slip_);
+    ControlProblem problem(sys, mu_, cohesion_, gamma_, zeta_, gradient_);
+    beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(n);
+    r.report = optimizer_->minimize(problem, beta);
+    // The accepted β once more, so that displacement and tractions on disk belong to it (a
+    // line search may have evaluated a rejected trial last).
+    last_ = problem.evaluate(beta);
+
+    r.backSubstitutions = sys.factorization().numSolves() - solves0;
+    r.J = last_.J;
+    const double tauNorm = problem.norm(last_.tau.cwiseProduct(sys.freeMask()));
+    r.relResidual = tauNorm > 0 ? problem.norm(last_.D) / tauNorm : problem.norm(last_.D);
+    r.lastStepNorm = r.report.history.empty() ? 0 : std::max(0.0, r.report.history.back().stepNorm);
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (sys.freeMask()[i] > 0 && last_.sigmaN[i] < 0)
+        r.maxExcessST = std::max(r.maxExcessST, (std::abs(last_.tau[i]) - std::max(last_.rho[i], 0.0)) /
+                                                    -last_.sigmaN[i]);
+    slip_ += last_.beta;
+    lastBeta = last_.beta;
+    for (const auto& h : r.report.history)
+      history << r.time << " " << h.iteration << " " << h.J << " " << h.relResidual << " "
+              << std::max(h.stepNorm, 0.0) << "\n";
+    history.flush();
+
+    if (time_->writes(k)) {
+      writeTimeFolder(r, last_.beta);
+      r.written = true;
+    }
+    log << "Time = " << time_->timeName(r.time) << "  iterations " << r.report.iterations
+        << "  backSubstitutions " << r.backSubstitutions << std::setprecision(4) << "  J " << r.J
+        << "  |D|/|tau| " << r.relResidual << "  maxExcessST " << r.maxExcessST << "  |dBeta| "
+        << r.lastStepNorm << "  " << toString(r.report.status) << (r.written ? "  (written)" : "")
+        << "\n";
+    log.flush();
+    results.push_back(std::move(r));
+  }
+  return results;
+}
+
+void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta) {
+  const int precision = time_->writePrecision();
+  TimeFolder folder(caseDir_, time_->timeName(r.time));
+  const FractureSystem& sys = *system_;
+
+  // Displacement at the split-mesh points (P2: the vertices, which come first).
+  const Eigen::VectorXd u = sys.lastSplitDisplacement();
+  std::vector<Vector2> points(split_.mesh.points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = u.segment<2>(2 * i);
+  writeDisplacementField(folder.file("D"), points, precision);
+
+  std::ostringstream status;
+  status << "status " << toString(r.report.status) << " iterations " << r.report.iterations
+         << " backSubstitutions " << r.backSubstitutions << " J " << r.J << " relResidual "
+         << r.relResidual << " maxExcessST " << r.maxExcessST;
+  const auto& nodes = sys.controlNodes();
+  for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
+    std::vector<FractureRow> rows;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (nodes[k].fracture != static_cast<int>(f)) continue;
+      const double sn = last_.sigmaN[k], tau = last_.tau[k];
+      const bool held = sys.freeMask()[k] == 0;
+      FractureRow row;
+      row.s = nodes[k].arclength;
+      row.x = nodes[k].x.x();
+      row.y = nodes[k].x.y();
+      row.slip = slip_[k];
+      row.slipIncrement = beta[k];
+      // At a tip (single node) the two sides are not told apart: no traction is recovered.
+      row.sigmaN = nodes[k].tip ? 0 : sn;
+      row.tau = nodes[k].tip ? 0 : tau;
+      row.ST = (!nodes[k].tip && sn < 0) ? std::abs(tau) / -sn : 0.0;
+      row.D = last_.D[k];
+      // Tips and nodes on Dirichlet patches have their jump held at zero: they stick.
+      row.state = (nodes[k].tip || held) ? "stick" : toString(last_.node[k].state);
+      rows.push_back(row);
+    }
+    writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), rows,
+                       status.str(), precision);
+  }
+  DictionaryWriter st("dictionary", "solverStatus");
+  st.entryWord("status", toString(r.report.status));
+  st.entry("iterations", r.report.iterations);
+  st.entry("backSubstitutions", r.backSubstitutions);
+  st.entry("J", r.J);
+  st.entry("relResidual", r.relResidual);
+  st.entry("maxExcessST", r.maxExcessST);
+  st.writeAtomic(folder.file("solverStatus"));
+  folder.commit();
+}
+
+}  // namespace friction

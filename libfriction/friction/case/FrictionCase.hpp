@@ -1,0 +1,92 @@
+// FrictionCase: a case folder run by frictionSolver, deal.II-style (setup, factor, run):
+// read and validate every dictionary before any work, build the FractureSystem on the split
+// mesh, factor once, then the quasi-static time loop — per step apply the loads, solve the
+// control problem for the slip increment β, accumulate s_{n+1} = s_n + β, write the time
+// folder when due (atomically), one log line.
+//
+// Dictionaries (see README.md, "Case reference"):
+//   system/controlDict             TimeControl
+//   system/frictionSolution        element order, linear solver, control-problem settings
+//   constant/mechanicalProperties  E, ν (or λ, μ), planeStress, bodyForce
+//   constant/fractureProperties    per fracture: law and its parameters
+//   constant/splitMesh             from splitFractureNodes
+//   0/D                            boundary conditions (BoundaryConditions.hpp)
+#pragma once
+
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "friction/case/BoundaryConditions.hpp"
+#include "friction/control/ControlProblem.hpp"
+#include "friction/control/Optimizer.hpp"
+#include "friction/fe/Material.hpp"
+#include "friction/fracture/FractureSystem.hpp"
+#include "friction/fracture/SplitMesh.hpp"
+#include "friction/law/FrictionLaw.hpp"
+#include "friction/time/TimeControl.hpp"
+
+namespace friction {
+
+/// Outcome of one time step.
+struct StepResult {
+  double time = 0;
+  OptimizerReport report;
+  long backSubstitutions = 0;
+  double J = 0, relResidual = 0, maxExcessST = 0, lastStepNorm = 0;
+  bool written = false;
+};
+
+class FrictionCase {
+ public:
+  /// Reads and validates every dictionary and the split mesh (InputError on any problem).
+  explicit FrictionCase(const std::string& caseDir);
+  ~FrictionCase();
+
+  /// Build the spaces, fix the Dirichlet dofs, assemble and factor once. Returns the status.
+  FactorStatus setup(std::ostream& log);
+  /// The time loop. Returns the step results (also logged).
+  std::vector<StepResult> run(std::ostream& log);
+
+  /// Print the active models and settings (the log's first lines).
+  void printSettings(std::ostream& log) const;
+
+  FractureSystem& system() { return *system_; }
+  const SplitMesh& splitMesh() const { return split_; }
+  const TimeControl& time() const { return *time_; }
+  /// Accumulated slip per control node [m].
+  const Eigen::VectorXd& slip() const { return slip_; }
+  const ControlState& lastState() const { return last_; }
+
+ private:
+  struct FractureSettings {
+    std::string name;
+    std::unique_ptr<FrictionLaw> law;
+  };
+
+  void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta);
+  Eigen::VectorXd loadVector(double t) const;
+
+  std::string caseDir_;
+  std::unique_ptr<TimeControl> time_;
+  SplitMesh split_;
+  std::unique_ptr<Material> material_;
+  Vector2 bodyForce_ = Vector2::Zero();
+  std::unique_ptr<BoundaryConditions> bcs_;
+  std::vector<FractureSettings> fractures_;
+  int order_ = 1;
+  std::string linearSolver_ = "cholmod";
+  double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
+  bool gammaAbsolute_ = false, warmStart_ = false;
+  GradientKind gradient_ = GradientKind::exact;
+  std::unique_ptr<Optimizer> optimizer_;
+
+  std::unique_ptr<FractureSystem> system_;
+  Eigen::VectorXd mu_, cohesion_, slip_;
+  ControlState last_;
+};
+
+}  // namespace friction

@@ -1,0 +1,41 @@
+// Field and table files of a time folder: see FieldWriter.hpp.
+#include "friction/output/FieldWriter.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "friction/core/InputError.hpp"
+#include "friction/dict/DictionaryWriter.hpp"
+
+namespace friction {
+
+void writeDisplacementField(const std::string& path, const std::vector<Vector2>& u,
+                            int precision) {
+  DictionaryWriter w("pointVectorField", "D", "displacement [m] at the split-mesh points");
+  w.setPrecision(precision);
+  w.entryRaw("dimensions", "[0 1 0 0 0 0 0]");
+  std::ostringstream s;
+  s.precision(precision);
+  s << "nonuniform List<vector>\n" << u.size() << "\n(\n";
+  for (const Vector2& v : u) s << "(" << v.x() << " " << v.y() << " 0)\n";
+  s << ")";
+  w.entryRaw("internalField", s.str());
+  w.beginDict("boundaryField");
+  w.endDict();
+  w.writeAtomic(path);
+}
+
+void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,
+                        const std::string& statusLine, int precision) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path, "cannot write the fracture table (expected a writable folder)");
+  out.precision(precision);
+  out << "# s x y slip slipIncrement sigmaN tau ST D state\n# " << statusLine << "\n";
+  for (const FractureRow& r : rows)
+    out << r.s << " " << r.x << " " << r.y << " " << r.slip << " " << r.slipIncrement << " "
+        << r.sigmaN << " " << r.tau << " " << r.ST << " " << r.D << " " << r.state << "\n";
+  out.flush();
+  if (!out) throw InputError(path, "writing the fracture table failed (disk full?)");
+}
+
+}  // namespace friction
