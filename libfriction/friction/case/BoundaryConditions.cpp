@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
@@ -67,7 +68,17 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
     }
     patches_.push_back(std::move(patch));
   }
+  // Labelled lines inside the body (sides of two triangles) carry no boundary condition
+  // unless one is given: only patches on the outer boundary must be listed.
+  std::map<std::pair<Index, Index>, int> sideCount;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++sideCount[std::minmax(t[k], t[(k + 1) % 3])];
+  std::set<int> onBoundary;
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e)
+    if (sideCount[std::minmax(mesh.edges[e][0], mesh.edges[e][1])] == 1)
+      onBoundary.insert(mesh.edgeLabel[e]);
   for (const auto& [name, label] : labelOf) {
+    if (!onBoundary.count(label)) continue;
     bool listed = false;
     for (const Patch& p : patches_) listed |= p.label == label;
     if (!listed)

@@ -108,6 +108,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
       << "Material: E " << material_->youngModulus() << " Pa, nu " << material_->poissonRatio()
       << (material_->planeStress() ? ", plane stress" : ", plane strain") << "\n"
       << "Elements: P" << order_ << ", linear solver " << linearSolver_ << "\n";
+  if (fractures_.empty()) log << "Fractures: none (a plain elastic solve, no control loop)\n";
   for (const auto& f : fractures_) {
     log << "Fracture " << f.name << ": law " << f.law->name();
     if (f.law->mu() > 0) log << ", frictionCoefficient " << f.law->mu();
@@ -145,7 +146,8 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   }
   // γ has units of stress/length; its scale-free default is E over the mean fracture edge
   // length h (METHOD.md §3): then γβ and τ are of the same size for slips of order h·τ/E.
-  if (!gammaAbsolute_) gamma_ = gammaRelative_ * material_->youngModulus() / (hSum / std::max(hCount, 1));
+  if (!gammaAbsolute_)
+    gamma_ = hCount > 0 ? gammaRelative_ * material_->youngModulus() / (hSum / hCount) : 1.0;
   slip_ = Eigen::VectorXd::Zero(n);
 
   const auto& f = system_->factorization();
@@ -188,15 +190,17 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     sys.setStep(loadVector(r.time), slip_);
     ControlProblem problem(sys, mu_, cohesion_, gamma_, zeta_, gradient_);
     beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(n);
-    r.report = optimizer_->minimize(problem, beta);
+    if (n > 0)
+      r.report = optimizer_->minimize(problem, beta);
+    else
+      r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
     // The accepted β once more, so that displacement and tractions on disk belong to it (a
     // line search may have evaluated a rejected trial last).
     last_ = problem.evaluate(beta);
 
     r.backSubstitutions = sys.factorization().numSolves() - solves0;
     r.J = last_.J;
-    const double tauNorm = problem.norm(last_.tau.cwiseProduct(sys.freeMask()));
-    r.relResidual = tauNorm > 0 ? problem.norm(last_.D) / tauNorm : problem.norm(last_.D);
+    r.relResidual = problem.relativeResidual(last_);
     r.lastStepNorm = r.report.history.empty() ? 0 : std::max(0.0, r.report.history.back().stepNorm);
     for (Eigen::Index i = 0; i < n; ++i)
       if (sys.freeMask()[i] > 0 && last_.sigmaN[i] < 0)
@@ -215,7 +219,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     }
     log << "Time = " << time_->timeName(r.time) << "  iterations " << r.report.iterations
         << "  backSubstitutions " << r.backSubstitutions << std::setprecision(4) << "  J " << r.J
-        << "  |D|/|tau| " << r.relResidual << "  maxExcessST " << r.maxExcessST << "  |dBeta| "
+        << "  |D|/|Sigma| " << r.relResidual << "  maxExcessST " << r.maxExcessST << "  |dBeta| "
         << r.lastStepNorm << "  " << toString(r.report.status) << (r.written ? "  (written)" : "")
         << "\n";
     log.flush();

@@ -6,6 +6,8 @@
 //   q = (1 − P'_N) D t_Γ + μ P'_ρ D n_Γ,  plus the local term γ P'_N D.
 #include "friction/control/ControlProblem.hpp"
 
+#include <cmath>
+
 #include "friction/core/Assert.hpp"
 
 namespace friction {
@@ -22,6 +24,15 @@ ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu,
   FRICTION_ASSERT(mu_.size() == response_.size(), "one μ per fracture node");
   FRICTION_ASSERT(cohesion_.size() == response_.size(), "one cohesion per fracture node");
   FRICTION_ASSERT(gamma_ > 0, "γ > 0");
+}
+
+double ControlProblem::relativeResidual(const ControlState& s) const {
+  const double d = norm(s.D);
+  if (d == 0) return 0;
+  const Eigen::VectorXd& m = response_.freeMask();
+  const double scale = std::sqrt(dot(s.tau.cwiseProduct(m), s.tau.cwiseProduct(m)) +
+                                 dot(s.sigmaN.cwiseProduct(m), s.sigmaN.cwiseProduct(m)));
+  return scale > 0 ? d / scale : d;
 }
 
 double ControlProblem::dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {

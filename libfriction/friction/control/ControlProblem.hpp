@@ -42,6 +42,11 @@ class ControlProblem {
   /// Gradient of J at an evaluated state, in the M inner product (one back-substitution).
   Eigen::VectorXd gradient(const ControlState& s);
 
+  /// ‖D‖_M / ‖Σ‖_M on the free nodes, Σ = (τ, σ_n) the traction on Γ: the relative
+  /// residual of the friction law. The scale is the whole traction, not ‖τ‖ alone, because
+  /// the answer may be τ = 0 (frictionless, or open in tension), where ‖D‖/‖τ‖ stays 1.
+  /// Zero when D = 0 (e.g. zero load).
+  double relativeResidual(const ControlState& s) const;
   /// ⟨a, b⟩_M
   double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
   double norm(const Eigen::VectorXd& a) const { return std::sqrt(dot(a, a)); }

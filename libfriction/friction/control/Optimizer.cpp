@@ -71,16 +71,14 @@ std::unique_ptr<Optimizer> Optimizer::New(const Dictionary& dict) {
 
 IterationRecord Optimizer::record(ControlProblem& p, const ControlState& s, int k,
                                   double stepNorm) const {
-  const double tauNorm = p.norm(s.tau.cwiseProduct(p.freeMask()));
-  const double dNorm = p.norm(s.D);
-  return {k, s.J, tauNorm > 0 ? dNorm / tauNorm : dNorm, stepNorm};
+  return {k, s.J, p.relativeResidual(s), stepNorm};
 }
 
 bool Optimizer::converged(ControlProblem& p, const ControlState& s, double stepNorm) const {
-  const double dNorm = p.norm(s.D);
-  if (dNorm == 0) return true;  // the friction law holds exactly (e.g. zero load)
+  const double rel = p.relativeResidual(s);
+  if (rel == 0) return true;  // the friction law holds exactly (e.g. zero load)
   if (stop_.on == StopRule::On::step) return stepNorm >= 0 && stepNorm <= stop_.tolerance;
-  return dNorm <= stop_.tolerance * p.norm(s.tau.cwiseProduct(p.freeMask()));
+  return rel <= stop_.tolerance;
 }
 
 OptimizerReport SteepestDescent::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
@@ -196,26 +194,37 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
       r.status = OptimizerStatus::converged;
       break;
     }
-    // Generalised Jacobian on the free nodes.
-    std::vector<Eigen::Index> free;
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (mask[i] != 0) free.push_back(i);
-    const Eigen::Index m = static_cast<Eigen::Index>(free.size());
-    Eigen::MatrixXd G(m, m);
-    Eigen::VectorXd rhs(m);
-    for (Eigen::Index a = 0; a < m; ++a) {
-      const Eigen::Index i = free[a];
-      const NodeComplementarity& c = s.node[i];
-      for (Eigen::Index b = 0; b < m; ++b) {
-        const Eigen::Index j = free[b];
-        G(a, b) = (1 - c.dPdN) * Stt_(i, j) + p.mu()[i] * c.dPdRho * Snt_(i, j) +
-                  (a == b ? p.gamma() * c.dPdN : 0.0);
-      }
-      rhs[a] = -s.D[i];
-    }
-    const Eigen::VectorXd delta = G.partialPivLu().solve(rhs);
+    // Generalised Jacobian on the free nodes. Stick rows read γ δ_i = −γ β_i: they give
+    // δ_i = −β_i exactly (β = 0 at once), so only the other nodes enter the linear solve.
+    std::vector<Eigen::Index> active;
     Eigen::VectorXd dir = Eigen::VectorXd::Zero(n);
-    for (Eigen::Index a = 0; a < m; ++a) dir[free[a]] = delta[a];
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (mask[i] == 0) continue;
+      if (s.node[i].state == SlipState::stick)
+        dir[i] = -s.beta[i];
+      else
+        active.push_back(i);
+    }
+    const Eigen::Index m = static_cast<Eigen::Index>(active.size());
+    if (m > 0) {
+      Eigen::MatrixXd G(m, m);
+      Eigen::VectorXd rhs(m);
+      for (Eigen::Index a = 0; a < m; ++a) {
+        const Eigen::Index i = active[a];
+        const double cs = p.mu()[i] * s.node[i].dPdRho;  // 0 when open
+        for (Eigen::Index b = 0; b < m; ++b) {
+          const Eigen::Index j = active[b];
+          G(a, b) = Stt_(i, j) + cs * Snt_(i, j);
+        }
+        // Move the known stick increments to the right-hand side.
+        double known = 0;
+        for (Eigen::Index j = 0; j < n; ++j)
+          if (dir[j] != 0) known += (Stt_(i, j) + cs * Snt_(i, j)) * dir[j];
+        rhs[a] = -s.D[i] - known;
+      }
+      const Eigen::VectorXd delta = G.partialPivLu().solve(rhs);
+      for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta[a];
+    }
     if (!dir.allFinite()) {
       r.status = OptimizerStatus::stalled;
       break;

@@ -27,7 +27,7 @@ const char* toString(OptimizerStatus s);
 struct IterationRecord {
   int iteration = 0;
   double J = 0;
-  double relResidual = 0;  ///< ‖D‖_M / ‖τ‖_M
+  double relResidual = 0;  ///< ‖D‖_M / ‖Σ‖_M (ControlProblem::relativeResidual)
   double stepNorm = 0;     ///< ‖β^{k+1} − β^k‖_M
 };
 
@@ -40,7 +40,7 @@ struct OptimizerReport {
 /// Settings every optimizer shares (keys of the case's 'solver' dictionary).
 struct StopRule {
   enum class On { residual, step };
-  On on = On::residual;    ///< residual: ‖D‖_M ≤ tol ‖τ‖_M; step: ‖Δβ‖_M ≤ tol (paper)
+  On on = On::residual;    ///< residual: ‖D‖_M ≤ tol ‖Σ‖_M; step: ‖Δβ‖_M ≤ tol (paper)
   double tolerance = 1e-6;  ///< relative (residual) or in m·√m (step, the paper's L²(Γ) norm)
   int maxIterations = 2000;
 };

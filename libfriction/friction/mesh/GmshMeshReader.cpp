@@ -184,6 +184,7 @@ class GmshParser {
     sectionLine = s_.lineNumber();
   }
 
+  // The tracked section opened at `openLine` (every section but $MeshFormat is tracked).
   std::string sectionName(int openLine) const {
     return std::string(openLine == nodesLine_           ? "$Nodes"
                        : openLine == elementsLine_      ? "$Elements"
@@ -193,19 +194,18 @@ class GmshParser {
   }
 
   // Move to the next line of a section's data, which must not be the section's end yet.
+  // Called for every line: the message is only built on failure.
   void dataLine(int openLine, const char* items, long long found, long long announced,
                 const char* syntax) {
-    const std::string section = sectionName(openLine);
-    if (!s_.next())
-      s_.fail("unexpected end of file in " + section + " (opened at line " +
-              std::to_string(openLine) + "): it announces " + std::to_string(announced) + " " +
-              items + ", found " + std::to_string(found) + "; expected another line \"" + syntax +
-              "\"");
-    if (s_.line().front() == '$')
-      s_.fail(s_.quotedLine() + " ends " + section + " (opened at line " +
-              std::to_string(openLine) + ") early: it announces " + std::to_string(announced) +
-              " " + items + ", found " + std::to_string(found) + "; expected another line \"" +
-              syntax + "\"");
+    const bool more = s_.next();
+    if (more && s_.line().front() != '$') return;
+    const std::string where =
+        sectionName(openLine) + " (opened at line " + std::to_string(openLine) + ")";
+    const std::string counts = "it announces " + std::to_string(announced) + " " + items +
+                               ", found " + std::to_string(found) + "; expected another line \"" +
+                               syntax + "\"";
+    if (!more) s_.fail("unexpected end of file in " + where + ": " + counts);
+    s_.fail(s_.quotedLine() + " ends " + where + " early: " + counts);
   }
 
   [[noreturn]] void syntaxError(const std::string& item, const char* syntax) {

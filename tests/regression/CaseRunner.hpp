@@ -1,0 +1,127 @@
+// Helpers for the regression tests: copy a case into the build tree, edit its dictionaries,
+// (re)mesh it with the real FreeFEM/gmsh, run the real binaries, read the fracture tables.
+// Tests never write into cases/.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace friction::regression {
+
+namespace fs = std::filesystem;
+
+inline std::string readText(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline void writeText(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+/// Run a shell command; output goes to logFile. Returns the exit status.
+inline int run(const std::string& command, const fs::path& logFile) {
+  const std::string full = command + " > '" + logFile.string() + "' 2>&1";
+  const int rc = std::system(full.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+/// One row of <time>/fractures/<name>.dat.
+struct Row {
+  double s, x, y, slip, slipIncrement, sigmaN, tau, ST, D;
+  std::string state;
+};
+
+class Case {
+ public:
+  /// Copy cases/<name> to <work>/<label> (fresh), without anything a run made.
+  Case(const std::string& name, const std::string& label)
+      : dir_(fs::path(FRICTION_WORK_DIR) / label) {
+    fs::remove_all(dir_);
+    fs::create_directories(dir_.parent_path());
+    fs::copy(fs::path(FRICTION_SOURCE_DIR) / "cases" / name, dir_, fs::copy_options::recursive);
+    for (const auto& e : fs::directory_iterator(dir_))
+      if (e.path().filename().string().rfind("log.", 0) == 0) fs::remove(e.path());
+    fs::remove(dir_ / "constant" / "splitMesh");
+  }
+
+  const fs::path& dir() const { return dir_; }
+
+  /// Replace the first match of regex `pattern` in a case file by `replacement`.
+  void edit(const std::string& file, const std::string& pattern, const std::string& replacement) {
+    const fs::path p = dir_ / file;
+    const std::string text = readText(p);
+    const std::string out = std::regex_replace(text, std::regex(pattern), replacement,
+                                               std::regex_constants::format_first_only);
+    REQUIRE(out != text);  // the edit must hit something, or the test tests nothing
+    writeText(p, out);
+  }
+
+  /// Remesh with the case's own generator script and its options (e.g. "-n 20").
+  void remesh(const std::string& options) {
+    INFO(readText(dir_ / "log.mesh"));
+    REQUIRE(run("cd '" + dir_.string() + "' && ./Allmesh " + options, dir_ / "log.mesh") == 0);
+    fs::remove(dir_ / "log.mesh");
+    for (const auto& e : fs::directory_iterator(dir_))
+      if (e.path().filename().string().rfind("log.", 0) == 0) fs::remove(e.path());
+  }
+
+  /// splitFractureNodes then frictionSolver; returns the solver's exit status. The logs are
+  /// kept in the case folder.
+  int solve() {
+    const fs::path bin = FRICTION_BIN_DIR;
+    const int split = run("'" + (bin / "splitFractureNodes").string() + "' -case '" +
+                              dir_.string() + "' -overwrite",
+                          dir_ / "log.splitFractureNodes");
+    INFO(readText(dir_ / "log.splitFractureNodes"));
+    REQUIRE(split == 0);
+    return run("'" + (bin / "frictionSolver").string() + "' -case '" + dir_.string() + "'",
+               dir_ / "log.frictionSolver");
+  }
+
+  std::string log() const { return readText(dir_ / "log.frictionSolver"); }
+
+  std::vector<Row> table(const std::string& time, const std::string& fracture) const {
+    std::ifstream in(dir_ / time / "fractures" / (fracture + ".dat"));
+    REQUIRE(in.good());
+    std::vector<Row> rows;
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream s(line);
+      Row r;
+      s >> r.s >> r.x >> r.y >> r.slip >> r.slipIncrement >> r.sigmaN >> r.tau >> r.ST >> r.D >>
+          r.state;
+      REQUIRE(!s.fail());
+      rows.push_back(r);
+    }
+    return rows;
+  }
+
+ private:
+  fs::path dir_;
+};
+
+/// Trapezoid weights along the arclength of the table's rows (the L²(Γ) inner product).
+inline std::vector<double> trapezoid(const std::vector<Row>& rows) {
+  std::vector<double> w(rows.size(), 0.0);
+  for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
+    const double h = rows[i + 1].s - rows[i].s;
+    w[i] += h / 2;
+    w[i + 1] += h / 2;
+  }
+  return w;
+}
+
+}  // namespace friction::regression

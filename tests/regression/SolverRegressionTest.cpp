@@ -1,0 +1,279 @@
+// frictionSolver on real case folders with the real binaries (issue: solver verification):
+// the known answers of METHOD.md §6, the analytic inclined crack, the paper benchmark.
+// References are analytic where one exists; each tolerance says why it is what it is.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "CaseRunner.hpp"
+
+using namespace friction::regression;
+
+namespace {
+
+constexpr double kA = 0.05;  // crack half-length [m]
+
+// Analytic slip of the inclined crack (plane strain, full slip), with the finite-square
+// factor r = 1.0033 of the issue (the infinite-plate value times r).
+double analyticSlip(double xi) {
+  const double E = 10e9, nu = 0.25, tau = 4.3301e6, sigmaN = 2.5e6, muF = 0.4, r = 1.0033;
+  return r * 4 * (1 - nu * nu) / E * (tau - muF * sigmaN) * std::sqrt(std::max(kA * kA - xi * xi, 0.0));
+}
+
+// Signed coordinate along the crack from its centre (0.5, 0.5).
+double xiOf(const Row& r, const Row& first, const Row& last) {
+  const double tx = last.x - first.x, ty = last.y - first.y, l = std::hypot(tx, ty);
+  return ((r.x - 0.5) * tx + (r.y - 0.5) * ty) / l;
+}
+
+struct CrackResult {
+  double relError;  // ‖|slip| − analytic‖_L²(Γ) / ‖analytic‖_L²(Γ)
+  double maxSTDeviation;  // max |ST − μ_f| over slipping nodes with |ξ| ≤ 0.8a
+  bool signOk;   // slip opposite to τ wherever it slips
+  std::vector<Row> rows;
+};
+
+CrackResult inclinedCrack(int hDivisor, int order, const std::string& label, int steps = 1) {
+  Case c("inclinedCrack", label);
+  if (hDivisor != 16) c.remesh("-h " + std::to_string(kA / hDivisor));
+  if (order != 1) c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+  if (steps != 1) c.edit("system/controlDict", "deltaT +1;", "deltaT " + std::to_string(1.0 / steps) + ";");
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  CrackResult r;
+  r.rows = c.table("1", "crack");
+  const auto w = trapezoid(r.rows);
+  double num = 0, den = 0;
+  r.maxSTDeviation = 0;
+  r.signOk = true;
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    const Row& row = r.rows[i];
+    const double xi = xiOf(row, r.rows.front(), r.rows.back());
+    const double ana = analyticSlip(xi);
+    num += w[i] * std::pow(std::abs(row.slip) - ana, 2);
+    den += w[i] * ana * ana;
+    if (row.state == "slip") {
+      if (std::abs(xi) <= 0.8 * kA) r.maxSTDeviation = std::max(r.maxSTDeviation, std::abs(row.ST - 0.4));
+      if (row.slip * row.tau >= 0) r.signOk = false;
+    }
+  }
+  r.relError = std::sqrt(num / den);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("inclined crack: slip converges to the analytic solution", "[regression][analytic]") {
+  // Required by the issue: relative L²(Γ) error ≤ 2.5 h/a for h ≤ a/8, observed order ≥ 0.75
+  // from a/8 to a/32, ST = μ_f within 1e-3 at slipping nodes away from the tips.
+  std::map<int, double> error;
+  for (int d : {8, 16, 32}) {
+    const CrackResult r = inclinedCrack(d, 1, "inclinedCrack-h" + std::to_string(d));
+    error[d] = r.relError;
+    WARN("P1 h = a/" << d << ": relative L2 slip error " << r.relError << ", max |ST - mu_f| "
+                     << r.maxSTDeviation);
+    CHECK(r.relError <= 2.5 / d);
+    CHECK(r.maxSTDeviation <= 1e-3);
+    CHECK(r.signOk);
+  }
+  const double order = std::log(error[8] / error[32]) / std::log(4.0);
+  WARN("observed order a/8 -> a/32: " << order);
+  CHECK(order >= 0.75);
+}
+
+TEST_CASE("inclined crack with P2 elements", "[regression][analytic]") {
+  const CrackResult r = inclinedCrack(16, 2, "inclinedCrack-P2");
+  WARN("P2 h = a/16: relative L2 slip error " << r.relError << ", max |ST - mu_f| " << r.maxSTDeviation);
+  CHECK(r.relError <= 2.5 / 16);
+  CHECK(r.maxSTDeviation <= 1e-3);
+  CHECK(r.signOk);
+}
+
+TEST_CASE("inclined crack: ten proportional steps give the one-step slip", "[regression]") {
+  const CrackResult one = inclinedCrack(8, 1, "inclinedCrack-1step");
+  const CrackResult ten = inclinedCrack(8, 1, "inclinedCrack-10steps", 10);
+  REQUIRE(one.rows.size() == ten.rows.size());
+  // Under proportional loading the whole crack slips from the first step on and every
+  // increment is a tenth of the total; the solves converge to ‖D‖ ≤ 1e-10 ‖τ‖, so the sums
+  // agree to about that relative level (1e-8 leaves room for the ten roundings).
+  double maxSlip = 0;
+  for (const Row& r : one.rows) maxSlip = std::max(maxSlip, std::abs(r.slip));
+  for (std::size_t i = 0; i < one.rows.size(); ++i)
+    CHECK(std::abs(one.rows[i].slip - ten.rows[i].slip) <= 1e-8 * maxSlip);
+}
+
+TEST_CASE("paper benchmark: Coulomb holds, slip only where ST reaches mu_f",
+          "[regression][paper]") {
+  Case c("paperBenchmark", "paperBenchmark");
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  const auto rows = c.table("1", "fracture");
+  int slipping = 0, sticking = 0;
+  double maxSlip = 0;
+  for (const Row& r : rows) maxSlip = std::max(maxSlip, std::abs(r.slip));
+  for (const Row& r : rows) {
+    // max(ST − μ_f, 0) ≤ 1e-3 (issue); the Newton solve gets it to round-off.
+    CHECK(r.ST - 0.2 <= 1e-3);
+    if (r.state == "slip") {
+      ++slipping;
+      CHECK(std::abs(r.ST - 0.2) <= 1e-6);
+      CHECK(r.slip * r.tau < 0);  // opposite to τ
+    } else {
+      ++sticking;
+      // Stick: β = 0. Newton sets it to zero at once; a damped last step may leave
+      // round-off of the slip's size.
+      CHECK(std::abs(r.slipIncrement) <= 1e-12 * maxSlip);
+    }
+  }
+  // The middle slips, the ends by the free sides stick (README of the case).
+  CHECK(slipping > 0);
+  CHECK(sticking > 0);
+  CHECK(rows.front().state == "stick");
+  CHECK(rows.back().state == "stick");
+  CHECK(rows[rows.size() / 2].state == "slip");
+}
+
+TEST_CASE("paper benchmark: the slip converges under mesh refinement", "[regression][paper]") {
+  // Three FreeFEM meshes, n = 20, 40, 80 segments per side. Compare the slip at the nodes
+  // x = i/20 that all three share: successive differences must shrink.
+  std::map<int, std::vector<Row>> slip;
+  for (int n : {20, 40, 80}) {
+    Case c("paperBenchmark", "paperBenchmark-n" + std::to_string(n));
+    if (n != 40) c.remesh("-n " + std::to_string(n));
+    const int rc = c.solve();
+    INFO(c.log());
+    REQUIRE(rc == 0);
+    slip[n] = c.table("1", "fracture");
+  }
+  auto at = [&](int n, int i) { return slip[n][static_cast<std::size_t>(i * n / 20)].slip; };
+  double d1 = 0, d2 = 0, size = 0;
+  for (int i = 0; i <= 20; ++i) {
+    d1 = std::max(d1, std::abs(at(20, i) - at(40, i)));
+    d2 = std::max(d2, std::abs(at(40, i) - at(80, i)));
+    size = std::max(size, std::abs(at(80, i)));
+  }
+  WARN("paper benchmark slip: max |s20 - s40| = " << d1 << ", max |s40 - s80| = " << d2
+                                                  << ", max |s80| = " << size);
+  CHECK(d2 < d1);
+  CHECK(d2 < 0.05 * size);
+}
+
+TEST_CASE("known answers: no slip with mu_f = 0.4 and 2, equal to the unsplit solve",
+          "[regression][known]") {
+  // Reference: the same case with no fracture listed, i.e. the plain elastic solve on the
+  // unsplit mesh.
+  Case plain("paperBenchmark", "paperBenchmark-unsplit");
+  plain.edit("system/meshDict", "fractures +\\(fracture\\);", "fractures ();");
+  plain.edit("constant/fractureProperties", "fracture\\s*\\{[^}]*\\}", "");
+  REQUIRE(plain.solve() == 0);
+  const std::string ref = readText(plain.dir() / "1" / "D");
+
+  for (const char* mu : {"0.4", "2"}) {
+    Case c("paperBenchmark", std::string("paperBenchmark-mu") + mu);
+    c.edit("constant/fractureProperties", "frictionCoefficient 0.2;",
+           std::string("frictionCoefficient ") + mu + ";");
+    const int rc = c.solve();
+    INFO(c.log());
+    REQUIRE(rc == 0);
+    for (const Row& r : c.table("1", "fracture")) {
+      CHECK(r.slip == 0.0);
+      CHECK(r.state == "stick");
+    }
+    // Converged at the trial state: zero iterations.
+    CHECK_THAT(c.log(), Catch::Contains("iterations 0 "));
+    // The split mesh has extra points (the ⁻ copies) after the unsplit ones: the unsplit
+    // points' displacements are identical text, and the copies repeat their origin's values
+    // (checked by the unit tests), so the first lines of the fields agree to the last digit.
+    const std::string d = readText(c.dir() / "1" / "D");
+    const auto lines = [](const std::string& s) {
+      std::vector<std::string> v;
+      std::istringstream in(s);
+      for (std::string l; std::getline(in, l);)
+        if (!l.empty() && l[0] == '(' && l.back() == ')' && l.find(' ') != std::string::npos) v.push_back(l);
+      return v;
+    };
+    const auto a = lines(ref), b = lines(d);
+    REQUIRE(a.size() > 100);
+    REQUIRE(b.size() > a.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) differ += a[i] != b[i];
+    // Round-off: the split solve lifts a zero jump, which adds exact zeros; the factor and
+    // right-hand side are the same, so the digits agree.
+    CHECK(differ == 0);
+  }
+}
+
+TEST_CASE("known answers: zero load, frictionless and tension give no friction",
+          "[regression][known]") {
+  SECTION("zero load: slip and tau exactly 0") {
+    Case c("paperBenchmark", "paperBenchmark-zeroLoad");
+    c.edit("0/D", "\\(1 \\(-0.02 -0.025\\)\\)", "(1 (0 0))");
+    REQUIRE(c.solve() == 0);
+    for (const Row& r : c.table("1", "fracture")) {
+      CHECK(r.slip == 0.0);
+      CHECK(r.tau == 0.0);
+      CHECK(r.sigmaN == 0.0);
+    }
+  }
+  SECTION("mu_f = 0: tau = 0 on the fracture") {
+    Case c("paperBenchmark", "paperBenchmark-frictionless");
+    c.edit("constant/fractureProperties", "law +coulomb;\\s*frictionCoefficient 0.2;",
+           "law frictionless;");
+    REQUIRE(c.solve() == 0);
+    double tauMax = 0, sigmaMax = 0;
+    for (const Row& r : c.table("1", "fracture")) {
+      tauMax = std::max(tauMax, std::abs(r.tau));
+      sigmaMax = std::max(sigmaMax, std::abs(r.sigmaN));
+    }
+    // Converged to ‖D‖_M ≤ 1e-10 ‖τ₀‖: τ is zero to that level of the loading stress.
+    CHECK(tauMax <= 1e-8 * sigmaMax);
+  }
+  SECTION("tension across the fracture: tau = 0, open") {
+    Case c("paperBenchmark", "paperBenchmark-tension");
+    c.edit("0/D", "\\(1 \\(-0.02 -0.025\\)\\)", "(1 (-0.02 0.025))");
+    REQUIRE(c.solve() == 0);
+    for (const Row& r : c.table("1", "fracture")) {
+      if (r.sigmaN > 1e-12) {
+        CHECK(r.state == "open");
+        CHECK(std::abs(r.tau) <= 1e-9);
+      }
+    }
+  }
+}
+
+TEST_CASE("one factorisation for a multi-step run", "[regression]") {
+  Case c("paperBenchmark", "paperBenchmark-steps");
+  c.edit("system/controlDict", "deltaT +1;", "deltaT 0.25;");
+  REQUIRE(c.solve() == 0);
+  const std::string log = c.log();
+  CHECK_THAT(log, Catch::Contains("Factorisations 1,"));
+  for (const char* t : {"0.25", "0.5", "0.75", "1"}) CHECK(fs::exists(c.dir() / t / "D"));
+}
+
+TEST_CASE("the paper's steepest descent and Armijo decrease J", "[regression][paper]") {
+  // The paper's fixed step α = 2e-4 (γ = 2, ζ = 0) on the coarse mesh: J must fall steadily;
+  // 2000 iterations do not reach the residual tolerance, which the log must say.
+  Case c("paperBenchmark", "paperBenchmark-steepest");
+  c.remesh("-n 20");
+  c.edit("system/frictionSolution", "type +semismoothNewton;", "type steepestDescent; alpha 2e-4;");
+  c.edit("system/frictionSolution", "maxIterations +[0-9]+;", "maxIterations 2000;");
+  const int rc = c.solve();
+  INFO(c.log());
+  CHECK((rc == 0 || rc == 3));
+  const std::string hist = readText(c.dir() / "postProcessing" / "convergence.dat");
+  std::istringstream in(hist);
+  std::vector<double> J;
+  for (std::string line; std::getline(in, line);) {
+    if (line[0] == '#') continue;
+    std::istringstream s(line);
+    double t, k, j;
+    s >> t >> k >> j;
+    J.push_back(j);
+  }
+  REQUIRE(J.size() > 100);
+  CHECK(J.back() < 0.05 * J.front());
+  if (rc == 3) CHECK_THAT(c.log(), Catch::Contains("maxIterations"));
+}
