@@ -13,6 +13,7 @@
 #include <boost/program_options.hpp>
 #include <iostream>
 
+#include "friction/core/CommandLine.hpp"
 #include "friction/case/FrictionCase.hpp"
 #include "friction/control/Optimizer.hpp"
 #include "friction/core/Suggest.hpp"
@@ -28,19 +29,9 @@ int main(int argc, char** argv) {
   options.add_options()("case", po::value<std::string>()->default_value("."), "case folder")(
       "listModels", "list the friction laws, optimizers and linear solvers")("help",
                                                                             "print this help");
-  po::variables_map args;
-  try {
-    po::store(po::command_line_parser(argc, argv)
-                  .options(options)
-                  .style(po::command_line_style::default_style |
-                         po::command_line_style::allow_long_disguise)
-                  .run(),
-              args);
-    po::notify(args);
-  } catch (const po::error& e) {
-    std::cerr << "frictionSolver: " << e.what() << "\n(run with -help for usage)\n";
-    return 2;
-  }
+  const auto parsed = parseCommandLine(argc, argv, options, "frictionSolver");
+  if (!parsed) return 2;
+  const po::variables_map& args = *parsed;
   if (args.count("help")) {
     std::cout << "Usage: frictionSolver [-case DIR] [-listModels]\n\n"
                  "Runs the case in DIR (split by splitFractureNodes) through quasi-static time.\n\n"

@@ -277,3 +277,56 @@ TEST_CASE("the paper's steepest descent and Armijo decrease J", "[regression][pa
   CHECK(J.back() < 0.05 * J.front());
   if (rc == 3) CHECK_THAT(c.log(), Catch::Contains("maxIterations"));
 }
+
+TEST_CASE("bad solver input names file, line and what was expected, and writes nothing",
+          "[regression][errors]") {
+  struct Bad {
+    const char* label;
+    const char* file;
+    const char* pattern;
+    const char* replacement;
+    std::vector<std::string> expected;
+  };
+  const std::vector<Bad> cases = {
+      {"unknownLaw", "constant/fractureProperties", "law +coulomb;", "law columb;",
+       {"constant/fractureProperties:", "columb", "frictionless, tresca, coulomb"}},
+      {"typoKey", "system/frictionSolution", "elementOrder", "elementOrdr",
+       {"system/frictionSolution:", "elementOrdr", "elementOrder"}},
+      {"badOrder", "system/frictionSolution", "elementOrder +1;", "elementOrder 3;",
+       {"system/frictionSolution:", "elementOrder", "3"}},
+      {"unknownPatch", "0/D", "left +\\{ type free; \\}", "lefft { type free; }",
+       {"0/D:", "lefft", "did you mean 'left'"}},
+      {"badPoisson", "constant/mechanicalProperties", "lambda +1;", "E 1; nu 0.7;",
+       {"constant/mechanicalProperties:", "nu", "0.7"}},
+      {"unknownOptimizer", "system/frictionSolution", "type +semismoothNewton;", "type newton;",
+       {"system/frictionSolution:", "newton", "steepestDescent, armijo, semismoothNewton"}},
+  };
+  for (const Bad& b : cases) {
+    DYNAMIC_SECTION(b.label) {
+      Case c("paperBenchmark", std::string("paperBenchmark-bad-") + b.label);
+      c.edit(b.file, b.pattern, b.replacement);
+      if (std::string(b.label) == "badPoisson")
+        c.edit("constant/mechanicalProperties", "mu +1;", "");
+      const int rc = c.solve();
+      const std::string log = c.log();
+      INFO(log);
+      CHECK(rc == 1);
+      for (const std::string& e : b.expected) CHECK_THAT(log, Catch::Contains(e));
+      CHECK_FALSE(fs::exists(c.dir() / "1"));
+    }
+  }
+}
+
+TEST_CASE("OpenFOAM's foamDictionary reads the fields and status the solver writes",
+          "[regression][foam]") {
+  Case c("paperBenchmark", "paperBenchmark-foam");
+  REQUIRE(c.solve() == 0);
+  const std::string env = "WM_PROJECT_DIR=/usr/share/openfoam ";
+  REQUIRE(fs::exists("/usr/bin/foamDictionary"));  // installed by etc/setup (openfoam)
+  CHECK(run(env + "foamDictionary '" + (c.dir() / "1" / "D").string() + "' -keywords",
+            c.dir() / "log.foamD") == 0);
+  CHECK(run(env + "foamDictionary '" + (c.dir() / "1" / "solverStatus").string() +
+                "' -entry status -value",
+            c.dir() / "log.foamStatus") == 0);
+  CHECK(readText(c.dir() / "log.foamStatus").find("converged") != std::string::npos);
+}

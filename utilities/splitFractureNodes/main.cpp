@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 
+#include "friction/core/CommandLine.hpp"
 #include "friction/case/MeshSettings.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/fracture/SplitMeshIO.hpp"
@@ -104,19 +105,9 @@ int main(int argc, char** argv) {
                         "case folder (holds system/meshDict)")(
       "overwrite", "split again, replacing an existing constant/splitMesh")("help",
                                                                              "print this help");
-  po::variables_map args;
-  try {
-    po::store(po::command_line_parser(argc, argv)
-                  .options(options)
-                  .style(po::command_line_style::default_style |
-                         po::command_line_style::allow_long_disguise)
-                  .run(),
-              args);
-    po::notify(args);
-  } catch (const po::error& e) {
-    std::cerr << "splitFractureNodes: " << e.what() << "\n(run with -help for usage)\n";
-    return 2;
-  }
+  const auto parsed = parseCommandLine(argc, argv, options, "splitFractureNodes");
+  if (!parsed) return 2;
+  const po::variables_map& args = *parsed;
   if (args.count("help")) {
     std::cout << "Usage: splitFractureNodes [-case DIR] [-overwrite]\n\n"
                  "Duplicates the mesh nodes along the fractures named in DIR/system/meshDict\n"

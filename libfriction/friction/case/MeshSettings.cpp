@@ -1,6 +1,8 @@
 // system/meshDict: see MeshSettings.hpp.
 #include "friction/case/MeshSettings.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -72,6 +74,18 @@ void MeshSettings::nameLabels(Mesh& mesh) const {
     if (!names.count(l)) {
       auto it = mesh.labelNames.find(l);
       names[l] = it != mesh.labelNames.end() ? it->second : "patch" + std::to_string(l);
+      // Patch names become dictionary keys (constant/splitMesh, 0/D): they must be words.
+      const std::string& n = names[l];
+      const bool word = !n.empty() && (std::isalpha(static_cast<unsigned char>(n[0])) || n[0] == '_') &&
+                        std::all_of(n.begin(), n.end(), [](char c) {
+                          return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+                        });
+      if (!word)
+        throw InputError(mesh.source, "physical name '" + n + "' of label " + std::to_string(l) +
+                                          " is not a valid patch name (letters, digits, '_' and "
+                                          "'.', starting with a letter); name the label in " +
+                                          dictPath + ", e.g. patches { myPatch " +
+                                          std::to_string(l) + "; }");
     }
     auto [it, fresh] = labelOf.emplace(names[l], l);
     if (!fresh)

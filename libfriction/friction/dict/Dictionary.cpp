@@ -3,6 +3,8 @@
 // entries the program never read. Grammar and semantics: Dictionary.hpp.
 #include "friction/dict/Dictionary.hpp"
 
+#include "friction/core/Suggest.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -114,21 +116,6 @@ using Kind = Value::Kind;
 // ---------------------------------------------------------------------------------------
 // Messages
 // ---------------------------------------------------------------------------------------
-
-std::size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
 
 /// The candidate nearest to word in edit distance (first one on ties), or "" if none.
 template <typename Range>

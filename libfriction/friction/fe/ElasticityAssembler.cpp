@@ -268,8 +268,9 @@ Eigen::SparseMatrix<double> ElasticityAssembler::consistentEdgeMass(
   const LagrangeSpace& V = *space_;
   // ∫_0^1 φ_i φ_j ds for the edge bases in order (a, [mid], b).
   static constexpr double kP1[2][2] = {{2.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 6}};
-  static constexpr double kP2[3][3] = {
-      {4.0 / 30, 2.0 / 30, -1.0 / 30}, {2.0 / 30, 16.0 / 30, 2.0 / 30}, {-1.0 / 30, 2.0 / 30, 4.0 / 30}};
+  static constexpr double kP2[3][3] = {{4.0 / 30, 2.0 / 30, -1.0 / 30},
+                                       {2.0 / 30, 16.0 / 30, 2.0 / 30},
+                                       {-1.0 / 30, 2.0 / 30, 4.0 / 30}};
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(edges.size() * static_cast<std::size_t>(V.nodesPerEdge() * V.nodesPerEdge()));
   for (const auto& e : edges) {

@@ -63,7 +63,8 @@ LagrangeSpace::LagrangeSpace(const Mesh& mesh, int degree) : mesh_(&mesh), degre
     out[1] = t[1];
     out[2] = t[2];
     if (degree_ == 2)
-      for (int e = 0; e < 3; ++e) out[3 + e] = np + findEdge(t[kEdgeVertex[e][0]], t[kEdgeVertex[e][1]]);
+      for (int e = 0; e < 3; ++e)
+        out[3 + e] = np + findEdge(t[kEdgeVertex[e][0]], t[kEdgeVertex[e][1]]);
   }
 
   // A labelled edge that no triangle has would get no midpoint and no stiffness: the mesh is

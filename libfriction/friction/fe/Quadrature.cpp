@@ -29,7 +29,7 @@ SegmentQuadrature gaussLegendre(int numPoints) {
         p0 = p1;
         p1 = p2;
       }
-        dp = n * (x * p1 - p0) / (x * x - 1.0);
+      dp = n * (x * p1 - p0) / (x * x - 1.0);
       const double dx = p1 / dp;
       x -= dx;
       if (std::abs(dx) < 1e-16) break;

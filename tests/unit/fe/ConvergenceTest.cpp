@@ -63,8 +63,8 @@ TEST_CASE("fe manufactured solution converges at the optimal rates", "[fe][conve
   const int degree = GENERATE(1, 2);
   CAPTURE(degree);
   const Material material = Material::fromYoungPoisson(1.0, 0.3);
-  const std::vector<int> sizes = degree == 1 ? std::vector<int>{8, 16, 32, 64}
-                                             : std::vector<int>{4, 8, 16, 32};
+  const std::vector<int> sizes =
+      degree == 1 ? std::vector<int>{8, 16, 32, 64} : std::vector<int>{4, 8, 16, 32};
   std::vector<ErrorNorms> errors;
   for (int n : sizes) errors.push_back(solveManufactured(n, degree, material));
   for (std::size_t k = 1; k < sizes.size(); ++k) {

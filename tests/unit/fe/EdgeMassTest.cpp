@@ -47,7 +47,8 @@ TEST_CASE("fe lumped edge mass sums to the edge lengths", "[fe][edgeMass]") {
   }
   // An interior set of edges (the cell diagonals of the first row) works the same way.
   std::vector<std::array<Index, 2>> diagonals;
-  for (int i = 0; i < 5; ++i) diagonals.push_back({mesh.triangles[2 * i][0], mesh.triangles[2 * i][2]});
+  for (int i = 0; i < 5; ++i)
+    diagonals.push_back({mesh.triangles[2 * i][0], mesh.triangles[2 * i][2]});
   double total = 0.0;
   for (const auto& e : diagonals) total += edgeLength(V, e);
   REQUIRE(assembler.lumpedEdgeMass(diagonals).sum() == Approx(total).margin(1e-14));

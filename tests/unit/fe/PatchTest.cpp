@@ -55,8 +55,7 @@ constexpr double kTol = 1e-14;
 
 }  // namespace
 
-TEST_CASE("fe patch test linear field with Dirichlet on the whole boundary",
-          "[fe][patch]") {
+TEST_CASE("fe patch test linear field with Dirichlet on the whole boundary", "[fe][patch]") {
   const int degree = GENERATE(1, 2);
   CAPTURE(degree);
   const Mesh mesh = test::unitSquareMesh(6, 0.5);
@@ -64,8 +63,8 @@ TEST_CASE("fe patch test linear field with Dirichlet on the whole boundary",
   const Material material = Material::fromYoungPoisson(1.0, 0.3);
   const ElasticityAssembler assembler(V, material);
   const Eigen::SparseMatrix<double> K = assembler.stiffness();
-  const Eigen::VectorXd u = solveWith(V, K, Eigen::VectorXd::Zero(V.numDofs()), {1, 2, 3, 4},
-                                      linearField);
+  const Eigen::VectorXd u =
+      solveWith(V, K, Eigen::VectorXd::Zero(V.numDofs()), {1, 2, 3, 4}, linearField);
   REQUIRE(maxNodalError(V, u, linearField) <= kTol);
   // The recovered stress is the constant stress of the field, in every cell. Stress
   // tolerance: kTol / h · E · (a few) = 1e-14 · 6 · 3 ≈ 2e-13 Pa.
@@ -80,8 +79,7 @@ TEST_CASE("fe patch test linear field with Dirichlet on the whole boundary",
   }
 }
 
-TEST_CASE("fe patch test linear field with tractions of the constant stress",
-          "[fe][patch]") {
+TEST_CASE("fe patch test linear field with tractions of the constant stress", "[fe][patch]") {
   const int degree = GENERATE(1, 2);
   const bool planeStress = GENERATE(false, true);
   CAPTURE(degree, planeStress);

@@ -13,12 +13,15 @@ double factorial(int k) { return k <= 1 ? 1.0 : k * factorial(k - 1); }
 
 /// ∫ over the reference triangle (0,0), (1,0), (0,1) of ξ^i η^j = i! j! / (i + j + 2)!,
 /// divided by its area 1/2 (the rules' weights are area fractions).
-double exactMeanMonomial(int i, int j) { return 2.0 * factorial(i) * factorial(j) / factorial(i + j + 2); }
+double exactMeanMonomial(int i, int j) {
+  return 2.0 * factorial(i) * factorial(j) / factorial(i + j + 2);
+}
 
 double ruleMeanMonomial(const TriangleQuadrature& rule, int i, int j) {
   double s = 0.0;
   for (int q = 0; q < rule.size(); ++q)
-    s += rule.weights[q] * std::pow(rule.barycentric[q][1], i) * std::pow(rule.barycentric[q][2], j);
+    s +=
+        rule.weights[q] * std::pow(rule.barycentric[q][1], i) * std::pow(rule.barycentric[q][2], j);
   return s;
 }
 
@@ -50,8 +53,8 @@ TEST_CASE("fe triangle quadrature is exact to its degree", "[fe][quadrature]") {
     const TriangleQuadrature rule = triangleQuadrature(d);
     double worst = 0.0;
     for (int i = 0; i <= d + 1; ++i)
-      worst = std::max(worst, std::abs(ruleMeanMonomial(rule, i, d + 1 - i) -
-                                       exactMeanMonomial(i, d + 1 - i)));
+      worst = std::max(
+          worst, std::abs(ruleMeanMonomial(rule, i, d + 1 - i) - exactMeanMonomial(i, d + 1 - i)));
     CAPTURE(d);
     REQUIRE(worst > 1e-4);
   }

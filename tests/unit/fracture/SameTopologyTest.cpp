@@ -10,6 +10,7 @@
 #include <set>
 #include <unistd.h>
 
+#include "TestMeshes.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/mesh/MeshReader.hpp"
 
@@ -26,24 +27,12 @@ struct Topology {
   std::map<std::string, double> patchLength;
 };
 
-int components(const Mesh& m) {
-  std::vector<int> parent(m.numPoints());
-  std::iota(parent.begin(), parent.end(), 0);
-  std::function<int(int)> find = [&](int i) { return parent[i] == i ? i : parent[i] = find(parent[i]); };
-  for (const auto& t : m.triangles) {
-    parent[find(t[0])] = find(t[1]);
-    parent[find(t[1])] = find(t[2]);
-  }
-  std::set<int> roots;
-  for (const auto& t : m.triangles) roots.insert(find(t[0]));
-  return static_cast<int>(roots.size());
-}
 
 Topology topologyOf(const Mesh& mesh, int fractureLabel) {
   const SplitMesh s = splitFractures(mesh, {{"fracture", fractureLabel, {}}});
   const FractureGeometry& g = s.fractures.at(0);
   Topology t{g.numNodes(), g.numDuplicated(), g.numTips(), g.kind.front(), g.kind.back(),
-             g.length(), components(s.mesh), g.normal[g.numNodes() / 2], {}};
+             g.length(), test::connectedComponents(s.mesh), g.normal[g.numNodes() / 2], {}};
   for (std::size_t e = 0; e < s.mesh.edges.size(); ++e)
     t.patchLength[s.mesh.labelNames.at(s.mesh.edgeLabel[e])] +=
         (s.mesh.points[s.mesh.edges[e][1]] - s.mesh.points[s.mesh.edges[e][0]]).norm();

@@ -19,19 +19,6 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-// Number of groups of triangles connected through shared nodes.
-int connectedComponents(const Mesh& m) {
-  std::vector<int> parent(m.numPoints());
-  std::iota(parent.begin(), parent.end(), 0);
-  std::function<int(int)> find = [&](int i) { return parent[i] == i ? i : parent[i] = find(parent[i]); };
-  for (const auto& t : m.triangles) {
-    parent[find(t[0])] = find(t[1]);
-    parent[find(t[1])] = find(t[2]);
-  }
-  std::set<int> roots;
-  for (const auto& t : m.triangles) roots.insert(find(t[0]));
-  return static_cast<int>(roots.size());
-}
 
 Vector2 centroid(const Mesh& m, Index t) {
   return (m.points[m.triangles[t][0]] + m.points[m.triangles[t][1]] + m.points[m.triangles[t][2]]) / 3;

@@ -3,6 +3,10 @@
 // 1..4 = bottom, right, top, left (FreeFEM's convention); the caller adds fracture edges.
 #pragma once
 
+#include <functional>
+#include <numeric>
+#include <set>
+
 #include "friction/mesh/Mesh.hpp"
 
 namespace friction::test {
@@ -47,6 +51,20 @@ inline void addHorizontalFracture(Mesh& m, int n, int j, int i0, int i1, int lab
     m.edgeLabel.push_back(label);
   }
   m.labelNames[label] = name;
+}
+
+/// Number of groups of triangles connected through shared nodes.
+inline int connectedComponents(const Mesh& m) {
+  std::vector<int> parent(m.numPoints());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<int(int)> find = [&](int i) { return parent[i] == i ? i : parent[i] = find(parent[i]); };
+  for (const auto& t : m.triangles) {
+    parent[find(t[0])] = find(t[1]);
+    parent[find(t[1])] = find(t[2]);
+  }
+  std::set<int> roots;
+  for (const auto& t : m.triangles) roots.insert(find(t[0]));
+  return static_cast<int>(roots.size());
 }
 
 }  // namespace friction::test

@@ -75,8 +75,7 @@ TEST_CASE("linalg SparseFactor backends agree with each other", "[linalg]") {
   REQUIRE((xa - xc).norm() <= 1e-10 * xa.norm());
 }
 
-TEST_CASE("linalg SparseFactor reports singular and indefinite matrices as values",
-          "[linalg]") {
+TEST_CASE("linalg SparseFactor reports singular and indefinite matrices as values", "[linalg]") {
   const std::string backend = GENERATE(as<std::string>{}, "cholmod", "simplicialLDLT");
   CAPTURE(backend);
   SparseFactor factor(backend);
