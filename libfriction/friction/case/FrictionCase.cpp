@@ -58,7 +58,6 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
                               std::to_string(lambda));
     material_ = std::make_unique<Material>(Material::fromLame(lambda, mu, planeStress));
   }
-  if (mech.found("bodyForce")) bodyForce_ = mech.getVector("bodyForce");
   mech.checkAllRead();
 
   std::vector<int> fractureLabels;
@@ -83,6 +82,26 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
     fractures_.push_back({g.name, FrictionLaw::New(fp.subDict(g.name))});
   }
   fp.checkAllRead();
+
+  // Effects: only what the case lists is built (constant/effects is optional).
+  const std::string effectsPath = (fs::path(caseDir) / "constant" / "effects").string();
+  if (fs::exists(effectsPath)) {
+    const Dictionary ed = Dictionary::read(effectsPath);
+    for (const std::string& key : ed.keys()) {
+      if (key == "FoamFile") continue;
+      if (!ed.isDict(key))
+        ed.fail(key, "key '" + key + "': expected a sub-dictionary { type ...; } (types: " +
+                         joinWords(Effect::names()) + ")");
+      const Dictionary& e = ed.subDict(key);
+      if (!e.getBoolOr("active", true)) {
+        e.markAllRead();  // switched off: its keys are the user's to keep
+        skippedEffects_.push_back(key);
+        continue;
+      }
+      effects_.push_back(Effect::New(key, e, names, caseDir));
+    }
+    ed.checkAllRead();
+  }
 
   const Dictionary sol = readCaseFile(caseDir, "system/frictionSolution");
   order_ = static_cast<int>(sol.getIntOr("elementOrder", 1, {1, 2}));
@@ -120,8 +139,18 @@ void FrictionCase::printSettings(std::ostream& log) const {
       << " Pa/m" << (gammaAbsolute_ ? "" : " (gammaRelative " + std::to_string(gammaRelative_) + " x E/h)")
       << ", zeta " << zeta_ << ", tolerance " << optimizer_->stopRule().tolerance << " ("
       << (optimizer_->stopRule().on == StopRule::On::residual ? "residual" : "step")
-      << "), maxIterations " << optimizer_->stopRule().maxIterations << "\n"
-      << "Body force: " << (bodyForce_.isZero() ? "none" : "on") << "\n";
+      << "), maxIterations " << optimizer_->stopRule().maxIterations << "\n";
+  // The effects switched on, and those that cost nothing because they are not.
+  std::vector<std::string> off;
+  for (const std::string& type : Effect::names()) {
+    bool on = false;
+    for (const auto& e : effects_) on |= e->type() == type;
+    if (!on) off.push_back(type);
+  }
+  for (const auto& e : effects_)
+    log << "Effect " << e->name() << ": " << e->type() << ", " << e->describe() << "\n";
+  for (const auto& name : skippedEffects_) log << "Effect " << name << ": switched off (active no)\n";
+  log << "Not simulated (not in the case): " << (off.empty() ? std::string("-") : joinWords(off)) << "\n";
 }
 
 FactorStatus FrictionCase::setup(std::ostream& log) {
@@ -156,6 +185,9 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       << n << " fracture control nodes\n";
   if (int held = system_->numHeldOnDirichlet())
     log << "Note: " << held << " fracture node(s) lie on a Dirichlet patch: their jump is held at zero\n";
+  log << "Assemblies: " << system_->numAssemblies() << " stiffness matri"
+      << (system_->numAssemblies() == 1 ? "x" : "ces")
+      << (n == 0 ? " (no fracture: no split stiffness, no control loop)" : "") << "\n";
   log << "Factorisation: " << toString(status) << " (" << f.backend() << ", "
       << std::setprecision(3) << f.factorSeconds() << " s)\n";
   printSettings(log);
@@ -166,8 +198,16 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
 Eigen::VectorXd FrictionCase::loadVector(double t) const {
   const LagrangeSpace& space = system_->splitSpace();
   Eigen::VectorXd F = bcs_->neumannLoad(space, t);
-  if (!bodyForce_.isZero()) F += system_->splitAssembler().bodyForce(bodyForce_);
+  for (const auto& e : effects_) e->addLoad(system_->splitAssembler(), t, F);
   return F;
+}
+
+Eigen::VectorXd FrictionCase::fracturePressure(double t) const {
+  std::vector<std::string> names;
+  for (const auto& g : split_.fractures) names.push_back(g.name);
+  Eigen::VectorXd p = Eigen::VectorXd::Zero(system_->size());
+  for (const auto& e : effects_) e->addFracturePressure(system_->controlNodes(), names, t, p);
+  return p;
 }
 
 std::vector<StepResult> FrictionCase::run(std::ostream& log) {
@@ -181,31 +221,57 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   history << "# time iteration J relResidual stepNorm\n";
   history.precision(8);
 
+  Eigen::VectorXd lastLoad, lastDirichlet, lastPressure;
   for (int k = 1; k <= time_->numSteps(); ++k) {
     StepResult r;
     r.time = time_->time(k);
     const long solves0 = sys.factorization().numSolves();
 
     bcs_->setValues(sys.dirichlet(), r.time);
-    sys.setStep(loadVector(r.time), slip_);
-    ControlProblem problem(sys, mu_, cohesion_, gamma_, zeta_, gradient_);
-    beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(n);
-    if (n > 0)
-      r.report = optimizer_->minimize(problem, beta);
-    else
-      r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
-    // The accepted β once more, so that displacement and tractions on disk belong to it (a
-    // line search may have evaluated a rejected trial last).
-    last_ = problem.evaluate(beta);
+    const Eigen::VectorXd load = loadVector(r.time);
+    const Eigen::VectorXd pressure = fracturePressure(r.time);
+    // Only what changed is recomputed: a step whose loads equal the previous step's has the
+    // previous (converged) solution, with β = 0.
+    if (k > 1 && load == lastLoad && sys.dirichlet().values() == lastDirichlet &&
+        pressure == lastPressure && results.back().report.status == OptimizerStatus::converged) {
+      r.reused = true;
+      r.report.status = OptimizerStatus::converged;
+      r.relResidual = results.back().relResidual;
+      last_.beta.setZero();
+    } else {
+      sys.setStep(load, slip_);
+      if (n > 0) {
+        Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(n);
+        for (const auto& e : effects_) e->addFractureTraction(sys.controlNodes(), r.time, sn0, tau0);
+        sys.setTractionOffset(sn0, tau0);
+      }
+      // ρ = c − μ(σ_n + p): the pressure lowers the cohesion term node by node.
+      const Eigen::VectorXd cohesion = cohesion_ - mu_.cwiseProduct(pressure);
+      ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_);
+      beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(n);
+      if (n > 0)
+        r.report = optimizer_->minimize(problem, beta);
+      else
+        r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
+      // The accepted β once more, so that displacement and tractions on disk belong to it (a
+      // line search may have evaluated a rejected trial last).
+      last_ = problem.evaluate(beta);
+      r.relResidual = problem.relativeResidual(last_);
+    }
+    lastLoad = load;
+    lastDirichlet = sys.dirichlet().values();
+    lastPressure = pressure;
+    pressure_ = pressure;
 
     r.backSubstitutions = sys.factorization().numSolves() - solves0;
     r.J = last_.J;
-    r.relResidual = problem.relativeResidual(last_);
     r.lastStepNorm = r.report.history.empty() ? 0 : std::max(0.0, r.report.history.back().stepNorm);
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (sys.freeMask()[i] > 0 && last_.sigmaN[i] < 0)
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double effective = last_.sigmaN[i] + pressure[i];
+      if (sys.freeMask()[i] > 0 && effective < 0)
         r.maxExcessST = std::max(r.maxExcessST, (std::abs(last_.tau[i]) - std::max(last_.rho[i], 0.0)) /
-                                                    -last_.sigmaN[i]);
+                                                    -effective);
+    }
     slip_ += last_.beta;
     lastBeta = last_.beta;
     for (const auto& h : r.report.history)
@@ -217,7 +283,8 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       writeTimeFolder(r, last_.beta);
       r.written = true;
     }
-    log << "Time = " << time_->timeName(r.time) << "  iterations " << r.report.iterations
+    log << "Time = " << time_->timeName(r.time) << (r.reused ? "  loads unchanged: previous solution reused" : "")
+        << "  iterations " << r.report.iterations
         << "  backSubstitutions " << r.backSubstitutions << std::setprecision(4) << "  J " << r.J
         << "  |D|/|Sigma| " << r.relResidual << "  maxExcessST " << r.maxExcessST << "  |dBeta| "
         << r.lastStepNorm << "  " << toString(r.report.status) << (r.written ? "  (written)" : "")
@@ -259,7 +326,9 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
       // At a tip (single node) the two sides are not told apart: no traction is recovered.
       row.sigmaN = nodes[k].tip ? 0 : sn;
       row.tau = nodes[k].tip ? 0 : tau;
-      row.ST = (!nodes[k].tip && sn < 0) ? std::abs(tau) / -sn : 0.0;
+      // Slip tendency on the effective normal stress σ_n + p (p = 0 without fracturePressure).
+      const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
+      row.ST = (!nodes[k].tip && effective < 0) ? std::abs(tau) / -effective : 0.0;
       row.D = last_.D[k];
       // Tips and nodes on Dirichlet patches have their jump held at zero: they stick.
       row.state = (nodes[k].tip || held) ? "stick" : toString(last_.node[k].state);

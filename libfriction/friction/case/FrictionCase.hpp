@@ -9,6 +9,7 @@
 //   system/frictionSolution        element order, linear solver, control-problem settings
 //   constant/mechanicalProperties  E, ν (or λ, μ), planeStress, bodyForce
 //   constant/fractureProperties    per fracture: law and its parameters
+//   constant/effects               optional: bodyForce, initialStress, fracturePressure
 //   constant/splitMesh             from splitFractureNodes
 //   0/D                            boundary conditions (BoundaryConditions.hpp)
 #pragma once
@@ -23,6 +24,7 @@
 #include "friction/case/BoundaryConditions.hpp"
 #include "friction/control/ControlProblem.hpp"
 #include "friction/control/Optimizer.hpp"
+#include "friction/effect/Effect.hpp"
 #include "friction/fe/Material.hpp"
 #include "friction/fracture/FractureSystem.hpp"
 #include "friction/fracture/SplitMesh.hpp"
@@ -38,6 +40,7 @@ struct StepResult {
   long backSubstitutions = 0;
   double J = 0, relResidual = 0, maxExcessST = 0, lastStepNorm = 0;
   bool written = false;
+  bool reused = false;  ///< loads unchanged since the previous step: its solution reused
 };
 
 class FrictionCase {
@@ -69,12 +72,15 @@ class FrictionCase {
 
   void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta);
   Eigen::VectorXd loadVector(double t) const;
+  /// Effective fluid pressure per control node at t [Pa] (zero without fracturePressure).
+  Eigen::VectorXd fracturePressure(double t) const;
 
   std::string caseDir_;
   std::unique_ptr<TimeControl> time_;
   SplitMesh split_;
   std::unique_ptr<Material> material_;
-  Vector2 bodyForce_ = Vector2::Zero();
+  std::vector<std::unique_ptr<Effect>> effects_;
+  std::vector<std::string> skippedEffects_;  ///< listed but 'active no'
   std::unique_ptr<BoundaryConditions> bcs_;
   std::vector<FractureSettings> fractures_;
   int order_ = 1;
@@ -87,6 +93,7 @@ class FrictionCase {
   std::unique_ptr<FractureSystem> system_;
   Eigen::VectorXd mu_, cohesion_, slip_;
   ControlState last_;
+  Eigen::VectorXd pressure_;  ///< p of the last step, per control node
 };
 
 }  // namespace friction

@@ -28,7 +28,7 @@ using TensorField = std::function<Eigen::Matrix2d(const Vector2&)>;
 
 /// Errors of a discrete displacement against an exact one.
 struct ErrorNorms {
-  double l2 = 0.0;          ///< ‖u − u_h‖_{L²(Ω)} [m · m]
+  double l2 = 0.0;          ///< ‖u − u_h‖_{L²(Ω)} [m²] (displacement [m] times √area)
   double h1Seminorm = 0.0;  ///< ‖∇(u − u_h)‖_{L²(Ω)} [m]
 };
 

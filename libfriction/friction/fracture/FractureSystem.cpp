@@ -139,7 +139,11 @@ FactorStatus FractureSystem::factor(const std::string& backend) {
     }
   }
 
+  if (n > 0) {
+  // The split stiffness is needed only for the lifting and the traction recovery: a case
+  // without fractures never assembles it.
   const Eigen::SparseMatrix<double> Ksplit = splitAssembler_->stiffness();
+  ++numAssemblies_;
   B_ = P_.transpose() * (Ksplit * L_);
   // Rows of K_split at the copies, scaled: Σ_k = (r⁺_k − r⁻_k) / (2 w_k).
   Triplets et;
@@ -156,11 +160,23 @@ FactorStatus FractureSystem::factor(const std::string& backend) {
   Tx_ = EK * P_;
   Tj_ = EK * L_;
   Tf_ = -E;
+  } else {
+    B_.resize(unsplitSpace_->numDofs(), 0);
+    Tx_.resize(0, unsplitSpace_->numDofs());
+    Tj_.resize(0, 0);
+    Tf_.resize(0, splitSpace_->numDofs());
+  }
 
   const Eigen::SparseMatrix<double> K = unsplitAssembler_->stiffness();
+  ++numAssemblies_;
   reduced_ = std::make_unique<ReducedSystem>(K, *dirichlet_);
   factor_ = std::make_unique<SparseFactor>(backend);
   return factor_->factor(reduced_->matrix());
+}
+
+void FractureSystem::setTractionOffset(const Eigen::VectorXd& sigmaN, const Eigen::VectorXd& tau) {
+  offsetSigmaN_ = sigmaN;
+  offsetTau_ = tau;
 }
 
 void FractureSystem::setStep(const Eigen::VectorXd& loadSplit,
@@ -202,6 +218,10 @@ void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
     const Vector2 S = sigma.segment<2>(2 * k);
     tau[k] = S.dot(nodes_[k].tangent);
     sigmaN[k] = S.dot(nodes_[k].normal);
+  }
+  if (offsetSigmaN_.size() == n) {
+    sigmaN += offsetSigmaN_;
+    tau += offsetTau_;
   }
 }
 

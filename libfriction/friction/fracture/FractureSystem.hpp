@@ -62,6 +62,14 @@ class FractureSystem : public SlipResponse {
   /// dirichlet() before the solves.
   void setStep(const Eigen::VectorXd& loadSplit, const Eigen::VectorXd& accumulatedSlip);
 
+  /// Tractions added to every primal solve's σ_n and τ at the control nodes [Pa] (an
+  /// in-situ stress); zero by default.
+  void setTractionOffset(const Eigen::VectorXd& sigmaN, const Eigen::VectorXd& tau);
+
+  /// Stiffness matrices assembled so far (the unsplit one, plus the split one when there is
+  /// a fracture): a counter that shows skipped work in the log.
+  int numAssemblies() const { return numAssemblies_; }
+
   const std::vector<ControlNode>& controlNodes() const { return nodes_; }
   /// Control nodes where the jump is held although the fracture is there (Dirichlet).
   int numHeldOnDirichlet() const;
@@ -105,6 +113,8 @@ class FractureSystem : public SlipResponse {
 
   Eigen::VectorXd loadUnsplit_, sigmaLoad_, slip_;
   Eigen::VectorXd x_, lastJump_;
+  Eigen::VectorXd offsetSigmaN_, offsetTau_;
+  int numAssemblies_ = 0;
 };
 
 }  // namespace friction

@@ -23,6 +23,11 @@ const LawEntry lawTable[] = {
     {"coulomb", [](const Dictionary& d) -> std::unique_ptr<FrictionLaw> {
        return std::make_unique<Coulomb>(d.getScalar("frictionCoefficient", Bounds::nonNegative()));
      }},
+    {"coulombCohesion", [](const Dictionary& d) -> std::unique_ptr<FrictionLaw> {
+       return std::make_unique<CoulombCohesion>(
+           d.getScalar("frictionCoefficient", Bounds::nonNegative()),
+           d.getScalar("cohesion", Bounds::nonNegative()));
+     }},
 };
 
 }  // namespace

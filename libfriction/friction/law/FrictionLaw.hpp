@@ -59,4 +59,16 @@ class Coulomb : public FrictionLaw {
   double mu_;
 };
 
+/// |τ| ≤ c − μ_f σ_n: Coulomb with cohesion c ≥ 0 [Pa] ('frictionCoefficient', 'cohesion').
+class CoulombCohesion : public FrictionLaw {
+ public:
+  CoulombCohesion(double muF, double c) : mu_(muF), c_(c) {}
+  std::string name() const override { return "coulombCohesion"; }
+  double mu() const override { return mu_; }
+  double cohesion() const override { return c_; }
+
+ private:
+  double mu_, c_;
+};
+
 }  // namespace friction

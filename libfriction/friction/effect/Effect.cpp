@@ -1,0 +1,186 @@
+// Effects and their selection table: see Effect.hpp.
+#include "friction/effect/Effect.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "friction/core/Suggest.hpp"
+#include "friction/dict/Dictionary.hpp"
+#include "friction/fe/ElasticityAssembler.hpp"
+#include "friction/fracture/FractureSystem.hpp"
+
+namespace friction {
+
+namespace {
+
+std::string vec(const Vector2& v) {
+  std::ostringstream s;
+  s << "(" << v.x() << " " << v.y() << ")";
+  return s.str();
+}
+
+class BodyForce : public Effect {
+ public:
+  BodyForce(const std::string& name, const Dictionary& d) {
+    name_ = name;
+    density_ = d.getScalar("density", Bounds::positive());
+    g_ = d.getVector("g");
+  }
+  std::string type() const override { return "bodyForce"; }
+  std::string describe() const override {
+    std::ostringstream s;
+    s << "density " << density_ << " kg/m3, g " << vec(g_) << " m/s2";
+    return s.str();
+  }
+  void addLoad(const ElasticityAssembler& a, double, Eigen::VectorXd& F) const override {
+    F += a.bodyForce(Vector2(density_ * g_));
+  }
+
+ private:
+  double density_ = 0;
+  Vector2 g_ = Vector2::Zero();
+};
+
+class InitialStress : public Effect {
+ public:
+  InitialStress(const std::string& name, const Dictionary& d) {
+    name_ = name;
+    const std::vector<double> s = d.getScalarList("stress");
+    if (s.size() != 3) d.fail("stress", "key 'stress': expected (sxx syy sxy) [Pa]");
+    s0_ << s[0], s[2], s[2], s[1];
+    if (d.found("gradient")) {
+      const std::vector<double> g = d.getScalarList("gradient");
+      if (g.size() != 3) d.fail("gradient", "key 'gradient': expected (dsxx/dy dsyy/dy dsxy/dy) [Pa/m]");
+      gradY_ << g[0], g[2], g[2], g[1];
+    }
+  }
+  std::string type() const override { return "initialStress"; }
+  std::string describe() const override {
+    std::ostringstream s;
+    s << "sigma0 (xx yy xy) = (" << s0_(0, 0) << " " << s0_(1, 1) << " " << s0_(0, 1) << ") Pa";
+    if (!gradY_.isZero()) s << " + y (" << gradY_(0, 0) << " " << gradY_(1, 1) << " " << gradY_(0, 1) << ") Pa/m";
+    return s.str();
+  }
+  Eigen::Matrix2d initialStress(const Vector2& x) const override { return s0_ + x.y() * gradY_; }
+  void addLoad(const ElasticityAssembler& a, double, Eigen::VectorXd& F) const override {
+    // div σ⁰ = ∂σ⁰/∂y · e_y (σ⁰ varies with y only); zero for a uniform in-situ stress, so
+    // the common case assembles nothing.
+    if (gradY_.isZero()) return;
+    F += a.bodyForce(Vector2(gradY_.col(1)));
+  }
+  void addFractureTraction(const std::vector<ControlNode>& nodes, double,
+                           Eigen::VectorXd& sigmaN, Eigen::VectorXd& tau) const override {
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      const Vector2 t = initialStress(nodes[k].x) * nodes[k].normal;
+      sigmaN[k] += t.dot(nodes[k].normal);
+      tau[k] += t.dot(nodes[k].tangent);
+    }
+  }
+
+ private:
+  Eigen::Matrix2d s0_ = Eigen::Matrix2d::Zero(), gradY_ = Eigen::Matrix2d::Zero();
+};
+
+class FracturePressure : public Effect {
+ public:
+  FracturePressure(const std::string& name, const Dictionary& d,
+                   const std::vector<std::string>& fractures, const std::string& caseDir) {
+    name_ = name;
+    fracture_ = d.getWord("fracture");
+    if (std::find(fractures.begin(), fractures.end(), fracture_) == fractures.end())
+      d.fail("fracture", "key 'fracture': '" + fracture_ + "' is not a fracture of the case" +
+                             suggestionText(fracture_, fractures) + " (fractures: " +
+                             joinWords(fractures) + ")");
+    if (d.found("values")) {
+      // Per-node values: "s p" per line, s the arclength [m]; interpolated linearly.
+      file_ = (std::filesystem::path(caseDir) / d.getFileName("values")).lexically_normal().string();
+      std::ifstream in(file_);
+      if (!in) d.fail("values", "key 'values': cannot open '" + file_ + "' (relative to the case folder)");
+      std::string line;
+      int lineNo = 0;
+      while (std::getline(in, line)) {
+        ++lineNo;
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream s(line);
+        double a, p;
+        if (!(s >> a >> p) || (!s_.empty() && a <= s_.back()))
+          throw InputError(SourceLocation{file_, lineNo},
+                           "expected two numbers 's p' with s increasing, got '" + line + "'");
+        s_.push_back(a);
+        p_.push_back(p);
+      }
+      if (s_.empty()) throw InputError(file_, "no values: expected lines 's p'");
+    } else {
+      pressure_ = TimeFunction::read(d, "pressure", 1);
+    }
+  }
+  std::string type() const override { return "fracturePressure"; }
+  std::string describe() const override {
+    return "on fracture " + fracture_ + (file_.empty() ? "" : ", values from " + file_);
+  }
+  void addFracturePressure(const std::vector<ControlNode>& nodes,
+                           const std::vector<std::string>& fractureNames, double t,
+                           Eigen::VectorXd& p) const override {
+    const double uniform = file_.empty() ? pressure_(t)[0] : 0.0;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (fractureNames[nodes[k].fracture] != fracture_) continue;
+      p[k] += file_.empty() ? uniform : interpolate(nodes[k].arclength);
+    }
+  }
+
+ private:
+  double interpolate(double s) const {
+    if (s <= s_.front()) return p_.front();
+    if (s >= s_.back()) return p_.back();
+    const std::size_t i = std::upper_bound(s_.begin(), s_.end(), s) - s_.begin();
+    const double w = (s - s_[i - 1]) / (s_[i] - s_[i - 1]);
+    return (1 - w) * p_[i - 1] + w * p_[i];
+  }
+  std::string fracture_, file_;
+  TimeFunction pressure_;
+  std::vector<double> s_, p_;
+};
+
+struct EffectEntry {
+  const char* name;
+  std::unique_ptr<Effect> (*make)(const std::string&, const Dictionary&,
+                                  const std::vector<std::string>&, const std::string&);
+};
+
+// The one table of effects: adding one is one line here.
+const EffectEntry effectTable[] = {
+    {"bodyForce",
+     [](const std::string& n, const Dictionary& d, const std::vector<std::string>&,
+        const std::string&) -> std::unique_ptr<Effect> { return std::make_unique<BodyForce>(n, d); }},
+    {"initialStress",
+     [](const std::string& n, const Dictionary& d, const std::vector<std::string>&,
+        const std::string&) -> std::unique_ptr<Effect> {
+       return std::make_unique<InitialStress>(n, d);
+     }},
+    {"fracturePressure",
+     [](const std::string& n, const Dictionary& d, const std::vector<std::string>& f,
+        const std::string& c) -> std::unique_ptr<Effect> {
+       return std::make_unique<FracturePressure>(n, d, f, c);
+     }},
+};
+
+}  // namespace
+
+std::vector<std::string> Effect::names() {
+  std::vector<std::string> n;
+  for (const auto& e : effectTable) n.push_back(e.name);
+  return n;
+}
+
+std::unique_ptr<Effect> Effect::New(const std::string& name, const Dictionary& dict,
+                                    const std::vector<std::string>& fractureNames,
+                                    const std::string& caseDir) {
+  const std::string type = dict.getChoice("type", names());
+  for (const auto& e : effectTable)
+    if (type == e.name) return e.make(name, dict, fractureNames, caseDir);
+  return nullptr;  // unreachable: getChoice validated the name
+}
+
+}  // namespace friction

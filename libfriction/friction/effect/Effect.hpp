@@ -1,0 +1,72 @@
+// Effect: a physical effect a case switches on by name in constant/effects (issue: simulate
+// only the effects a scene calls for). What a case does not list costs nothing: no
+// allocation, no assembly, no solve. Run-time selectable from the table in Effect.cpp:
+//
+//   gravity  { type bodyForce;        density 2500; g (0 -9.81); }        // f = ρ g [N/m³]
+//   inSitu   { type initialStress;    stress (sxx syy sxy);               // σ⁰ [Pa]
+//                                     gradient (gxx gyy gxy); }           // optional, ∂σ⁰/∂y [Pa/m]
+//   pore     { type fracturePressure; fracture crack; pressure 1e6; }     // p [Pa], or a table,
+//                                     // or values "constant/p.dat" (s p per line, interpolated)
+// Any entry may say `active no;` to be switched off without deleting it.
+//
+// Physics (METHOD.md §1, extended):
+//  * bodyForce adds ∫ f·φ to the load.
+//  * initialStress is an in-situ stress σ⁰(y) = σ⁰ + y ∂σ⁰/∂y in equilibrium with the
+//    surroundings: the boundary conditions act on the perturbation (a "free" side keeps its
+//    in-situ traction), its divergence ∂σ⁰/∂y·e_y-part loads the body, and σ⁰ is added to
+//    the fracture tractions (σ_n += n·σ⁰n, τ += t·σ⁰n) and to every stress written.
+//  * fracturePressure p on a fracture: the friction bound uses the effective normal stress,
+//    ρ = c − μ(σ_n + p) (the paper's poroelastic remark).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "friction/core/Types.hpp"
+#include "friction/time/TimeFunction.hpp"
+
+namespace friction {
+
+class Dictionary;
+class ElasticityAssembler;
+struct ControlNode;
+
+class Effect {
+ public:
+  virtual ~Effect() = default;
+
+  static std::vector<std::string> names();
+  /// Reads 'type' and that type's keys. fractureNames: to check 'fracture' entries; caseDir:
+  /// files named in the dictionary are relative to it.
+  static std::unique_ptr<Effect> New(const std::string& name, const Dictionary& dict,
+                                     const std::vector<std::string>& fractureNames,
+                                     const std::string& caseDir);
+
+  const std::string& name() const { return name_; }
+  virtual std::string type() const = 0;
+  /// One line for the log: what the effect does with which values.
+  virtual std::string describe() const = 0;
+
+  /// Add this effect's nodal forces at time t (split space) [N per m].
+  virtual void addLoad(const ElasticityAssembler& /*split*/, double /*t*/,
+                       Eigen::VectorXd& /*F*/) const {}
+  /// Add to the fracture tractions at the control nodes at time t [Pa].
+  virtual void addFractureTraction(const std::vector<ControlNode>& /*nodes*/, double /*t*/,
+                                   Eigen::VectorXd& /*sigmaN*/, Eigen::VectorXd& /*tau*/) const {}
+  /// Add the fluid pressure p at the control nodes at time t [Pa].
+  virtual void addFracturePressure(const std::vector<ControlNode>& /*nodes*/,
+                                   const std::vector<std::string>& /*fractureNames*/,
+                                   double /*t*/, Eigen::VectorXd& /*p*/) const {}
+  /// In-situ stress at x (zero unless initialStress) [Pa]: added to written stresses.
+  virtual Eigen::Matrix2d initialStress(const Vector2& /*x*/) const {
+    return Eigen::Matrix2d::Zero();
+  }
+
+ protected:
+  std::string name_;
+};
+
+}  // namespace friction

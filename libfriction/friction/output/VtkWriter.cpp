@@ -1,0 +1,342 @@
+// VTK XML (ASCII) writers for ParaView: see VtkWriter.hpp.
+//
+// Format notes (VTK file formats, XML "version 1.0"): cell offsets are the END of each cell's
+// connectivity (no leading 0); header_type only matters for binary data but is stated so
+// that the files are unambiguous. A 6-component "Tensors" array is read by VTK as a
+// symmetric tensor in the order xx yy zz xy yz xz.
+#include "friction/output/VtkWriter.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "friction/core/InputError.hpp"
+
+namespace friction {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A reader (or a crash) sees either the old file or the complete new one: write a temporary
+// file beside the target, flush it, rename it over the target (as DictionaryWriter does).
+void writeTextAtomic(const std::string& path, const std::string& text) {
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw InputError(path, "cannot write: the folder '" + folder.string() + "' does not exist");
+  std::string temp = (folder / ("." + target.filename().string() + ".tmpXXXXXX")).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0)
+    throw InputError(path, "cannot write: cannot create a file in the folder '" +
+                               folder.string() + "' (" + std::strerror(errno) + ")");
+  const auto failAndClean = [&](const std::string& what) {
+    const int err = errno;
+    ::close(fd);
+    ::unlink(temp.c_str());
+    throw InputError(path, "cannot write: " + what + " (" + std::strerror(err) + ")");
+  };
+  // mkstemp creates the file private (0600); give it the permissions a new file would get.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  if (::fchmod(fd, 0666 & ~mask) != 0) failAndClean("cannot set permissions");
+  const char* p = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      failAndClean("write error");
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0) failAndClean("cannot flush to disk");
+  if (::close(fd) != 0) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    throw InputError(path, std::string("cannot write: ") + std::strerror(err));
+  }
+  if (::rename(temp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    throw InputError(path, "cannot write: cannot replace the file (" +
+                               std::string(std::strerror(err)) + ")");
+  }
+}
+
+// Attribute values: file and fracture names are user words, but a name with & < > " must not
+// break the XML.
+std::string xmlEscape(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// VTK's ASCII parser reads "nan"/"inf" inconsistently across versions; a non-finite value is
+// a solver failure the log already reports, so write it as a number ParaView can show.
+double finite(double v) {
+  if (std::isnan(v)) return 0.0;
+  if (std::isinf(v)) return v > 0 ? 1e300 : -1e300;
+  return v;
+}
+
+void openArray(std::ostream& s, const char* type, const std::string& name, int components,
+               const char* extra = "") {
+  s << "        <DataArray type=\"" << type << "\"";
+  if (!name.empty()) s << " Name=\"" << name << "\"";
+  if (components > 1) s << " NumberOfComponents=\"" << components << "\"";
+  s << extra << " format=\"ascii\">\n";
+}
+void closeArray(std::ostream& s) { s << "        </DataArray>\n"; }
+
+const char* const kHeader =
+    "<?xml version=\"1.0\"?>\n";
+const char* const kFileAttributes =
+    " version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
+
+}  // namespace
+
+int vtkStateCode(const std::string& state) {
+  if (state == "stick") return 0;
+  if (state == "slip") return 1;
+  if (state == "open") return 2;
+  throw std::invalid_argument("vtkStateCode: unknown fracture-node state '" + state +
+                              "' (expected stick, slip or open)");
+}
+
+void writeVtu(const std::string& path, const LagrangeSpace& space,
+              const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision) {
+  if (u.size() != space.numDofs())
+    throw std::invalid_argument("writeVtu: u has " + std::to_string(u.size()) +
+                                " values, the space " + std::to_string(space.numDofs()) +
+                                " dofs");
+  const Mesh& mesh = space.mesh();
+  const Index numNodes = space.numNodes();
+  const Index numCells = space.numCells();
+  const int perCell = space.nodesPerCell();
+  const int cellType = space.degree() == 1 ? kVtkTriangle : kVtkQuadraticTriangle;
+  const Material& material = assembler.material();
+
+  std::ostringstream s;
+  s.precision(precision);
+  s << kHeader << "<VTKFile type=\"UnstructuredGrid\"" << kFileAttributes << ">\n"
+    << "  <UnstructuredGrid>\n"
+    << "    <Piece NumberOfPoints=\"" << numNodes << "\" NumberOfCells=\"" << numCells
+    << "\">\n";
+
+  s << "      <PointData Vectors=\"displacement\">\n";
+  openArray(s, "Float64", "displacement", 3);
+  for (Index n = 0; n < numNodes; ++n)
+    s << "          " << finite(u[LagrangeSpace::dof(n, 0)]) << " "
+      << finite(u[LagrangeSpace::dof(n, 1)]) << " 0\n";
+  closeArray(s);
+  s << "      </PointData>\n";
+
+  // Stress at the centroid: exact for P1 (constant per cell), the cell's mean value's best
+  // single-point stand-in for P2.
+  s << "      <CellData Tensors=\"stress\" Scalars=\"vonMises\">\n";
+  std::ostringstream vm, region;
+  vm.precision(precision);
+  openArray(s, "Float64", "stress", 6,
+            " ComponentName0=\"XX\" ComponentName1=\"YY\" ComponentName2=\"ZZ\""
+            " ComponentName3=\"XY\" ComponentName4=\"YZ\" ComponentName5=\"XZ\"");
+  for (Index c = 0; c < numCells; ++c) {
+    const auto& t = mesh.triangles[static_cast<std::size_t>(c)];
+    const Vector2 centroid = (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]]) / 3.0;
+    const Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
+    const double szz = material.outOfPlaneStress(assembler.strain(u, c, centroid));
+    const double sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
+    s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
+      << finite(sxy) << " 0 0\n";
+    const double vonMises = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) +
+                                             (syy - szz) * (syy - szz) +
+                                             (szz - sxx) * (szz - sxx)) +
+                                      3.0 * sxy * sxy);
+    vm << "          " << finite(vonMises) << "\n";
+    const int r = static_cast<std::size_t>(c) < mesh.triangleRegion.size()
+                      ? mesh.triangleRegion[static_cast<std::size_t>(c)]
+                      : 0;
+    region << "          " << r << "\n";
+  }
+  closeArray(s);
+  openArray(s, "Float64", "vonMises", 1);
+  s << vm.str();
+  closeArray(s);
+  openArray(s, "Int32", "region", 1);
+  s << region.str();
+  closeArray(s);
+  s << "      </CellData>\n";
+
+  s << "      <Points>\n";
+  openArray(s, "Float64", "", 3);
+  for (Index n = 0; n < numNodes; ++n) {
+    const Vector2& x = space.coordinate(n);
+    s << "          " << x.x() << " " << x.y() << " 0\n";
+  }
+  closeArray(s);
+  s << "      </Points>\n";
+
+  s << "      <Cells>\n";
+  openArray(s, "Int64", "connectivity", 1);
+  for (Index c = 0; c < numCells; ++c) {
+    s << "         ";
+    for (const Index n : space.cellNodes(c)) s << " " << n;
+    s << "\n";
+  }
+  closeArray(s);
+  openArray(s, "Int64", "offsets", 1);
+  for (Index c = 0; c < numCells; ++c)
+    s << "          " << static_cast<long long>(c + 1) * perCell << "\n";
+  closeArray(s);
+  openArray(s, "UInt8", "types", 1);
+  for (Index c = 0; c < numCells; ++c) s << "          " << cellType << "\n";
+  closeArray(s);
+  s << "      </Cells>\n"
+    << "    </Piece>\n"
+    << "  </UnstructuredGrid>\n"
+    << "</VTKFile>\n";
+  writeTextAtomic(path, s.str());
+}
+
+void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows,
+                      int precision) {
+  const std::size_t n = rows.size();
+  std::ostringstream s;
+  s.precision(precision);
+  s << kHeader
+    << "<!-- fracture table as a polyline; point array state: 0 stick, 1 slip, 2 open -->\n"
+    << "<VTKFile type=\"PolyData\"" << kFileAttributes << ">\n"
+    << "  <PolyData>\n"
+    << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\""
+    << (n > 0 ? 1 : 0) << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+    << "      <PointData Scalars=\"ST\">\n";
+  const auto array = [&](const char* name, double FractureRow::*field) {
+    openArray(s, "Float64", name, 1);
+    for (const FractureRow& r : rows) s << "          " << finite(r.*field) << "\n";
+    closeArray(s);
+  };
+  array("s", &FractureRow::s);
+  array("slip", &FractureRow::slip);
+  array("slipIncrement", &FractureRow::slipIncrement);
+  array("sigmaN", &FractureRow::sigmaN);
+  array("tau", &FractureRow::tau);
+  array("ST", &FractureRow::ST);
+  array("D", &FractureRow::D);
+  openArray(s, "Int32", "state", 1);
+  for (const FractureRow& r : rows) s << "          " << vtkStateCode(r.state) << "\n";
+  closeArray(s);
+  s << "      </PointData>\n";
+
+  s << "      <Points>\n";
+  openArray(s, "Float64", "", 3);
+  for (const FractureRow& r : rows) s << "          " << r.x << " " << r.y << " 0\n";
+  closeArray(s);
+  s << "      </Points>\n";
+
+  s << "      <Lines>\n";
+  openArray(s, "Int64", "connectivity", 1);
+  for (std::size_t i = 0; i < n; ++i) s << "          " << i << "\n";
+  closeArray(s);
+  openArray(s, "Int64", "offsets", 1);
+  if (n > 0) s << "          " << n << "\n";
+  closeArray(s);
+  s << "      </Lines>\n"
+    << "    </Piece>\n"
+    << "  </PolyData>\n"
+    << "</VTKFile>\n";
+  writeTextAtomic(path, s.str());
+}
+
+void writePvd(const std::string& path, const std::vector<PvdTime>& times, int precision) {
+  std::ostringstream s;
+  s.precision(precision);
+  s << kHeader << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+    << "  <Collection>\n";
+  for (const PvdTime& t : times)
+    for (std::size_t k = 0; k < t.files.size(); ++k) {
+      s << "    <DataSet timestep=\"" << t.time << "\" group=\"\" part=\"" << k << "\"";
+      if (k < t.names.size() && !t.names[k].empty())
+        s << " name=\"" << xmlEscape(t.names[k]) << "\"";
+      s << " file=\"" << xmlEscape(t.files[k]) << "\"/>\n";
+    }
+  s << "  </Collection>\n"
+    << "</VTKFile>\n";
+  writeTextAtomic(path, s.str());
+}
+
+VtkSeries::VtkSeries(std::string caseDir, std::string caseName)
+    : vtkDir_((fs::path(caseDir) / "VTK").string()), caseName_(std::move(caseName)) {
+  if (caseName_.empty()) {
+    // "cases/paperBenchmark/" and "." must give the folder's own name too.
+    const fs::path p = fs::absolute(fs::path(caseDir)).lexically_normal();
+    caseName_ = p.has_filename() ? p.filename().string() : p.parent_path().filename().string();
+    if (caseName_.empty()) caseName_ = "case";
+  }
+}
+
+std::string VtkSeries::pvdPath() const {
+  return (fs::path(vtkDir_) / (caseName_ + ".pvd")).string();
+}
+
+std::string VtkSeries::vtuPath(const std::string& timeName) const {
+  return (fs::path(vtkDir_) / (caseName_ + "_" + timeName + ".vtu")).string();
+}
+
+std::string VtkSeries::vtpPath(const std::string& fracture, const std::string& timeName) const {
+  return (fs::path(vtkDir_) / "fractures" / (fracture + "_" + timeName + ".vtp")).string();
+}
+
+void VtkSeries::write(double time, const std::string& timeName, const LagrangeSpace& space,
+                      const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
+                      const std::vector<Fracture>& fractures, int precision) {
+  std::error_code ec;
+  fs::create_directories(fs::path(vtkDir_) / "fractures", ec);
+  if (ec)
+    throw InputError((fs::path(vtkDir_) / "fractures").string(),
+                     "cannot create the VTK output folder (" + ec.message() + ")");
+
+  PvdTime entry;
+  entry.time = time;
+  writeVtu(vtuPath(timeName), space, assembler, u, precision);
+  entry.files.push_back(fs::path(vtuPath(timeName)).filename().string());
+  entry.names.push_back("mesh");
+  for (const Fracture& f : fractures) {
+    writeFractureVtp(vtpPath(f.name, timeName), f.rows, precision);
+    entry.files.push_back("fractures/" + fs::path(vtpPath(f.name, timeName)).filename().string());
+    entry.names.push_back(f.name);
+  }
+
+  bool replaced = false;
+  for (auto& [name, t] : times_)
+    if (name == timeName) {
+      t = entry;
+      replaced = true;
+    }
+  if (!replaced) times_.emplace_back(timeName, entry);
+
+  std::vector<PvdTime> all;
+  all.reserve(times_.size());
+  for (const auto& nt : times_) all.push_back(nt.second);
+  // Time values need enough digits to stay distinct and ordered even when the files'
+  // precision is low.
+  writePvd(pvdPath(), all, std::max(precision, 12));
+}
+
+}  // namespace friction

@@ -1,0 +1,122 @@
+// VtkWriter: ParaView-ready output in VTK's XML formats, written as ASCII by hand (no VTK
+// library in C++):
+//  * writeVtu: the displacement and the stress on the SPLIT mesh (.vtu, an unstructured
+//    grid). The fracture nodes are duplicated (coincident points), so the jump of the
+//    displacement across a fracture shows when the mesh is warped by "displacement".
+//  * writeFractureVtp: one fracture's table (FieldWriter.hpp, FractureRow) as a polyline
+//    (.vtp, poly data) with the fracture quantities as point data.
+//  * writePvd: a .pvd collection tying, per time, the .vtu (part 0) and each fracture's
+//    .vtp (parts 1, 2, ...), so that ParaView opens one file and gets the time series.
+//  * VtkSeries: the folder layout and the .pvd of a run, for the solver to call once per
+//    written time:
+//        <case>/VTK/<caseName>_<time>.vtu
+//        <case>/VTK/fractures/<fracture>_<time>.vtp
+//        <case>/VTK/<caseName>.pvd            (rewritten after every time)
+//
+// Every file is written atomically (temporary file beside the target, then rename), like
+// DictionaryWriter::writeAtomic: ParaView, or a crash, sees the old file or the new one whole.
+// The .pvd is written last, so it never names a file that is not there yet.
+//
+// Units are those of the solver: coordinates and displacement [m], stresses [Pa]; signs of
+// σ_n, τ and the slip: fracture/SignConventions.hpp.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "friction/fe/ElasticityAssembler.hpp"
+#include "friction/fe/LagrangeSpace.hpp"
+#include "friction/output/FieldWriter.hpp"
+
+namespace friction {
+
+/// VTK cell type numbers used here (vtkCellType.h).
+constexpr int kVtkPolyLine = 4;
+constexpr int kVtkTriangle = 5;
+constexpr int kVtkQuadraticTriangle = 22;
+
+/// Integer code of a fracture-node state in the .vtp "state" array: 0 stick, 1 slip,
+/// 2 open. Throws std::invalid_argument for any other string (the solver writes only these).
+int vtkStateCode(const std::string& state);
+
+/// Write the displacement and stress of `u` on the mesh of `space` as a VTK XML unstructured
+/// grid (ASCII) at `path`; the folder must exist (InputError otherwise, naming path).
+///  * points: every node of `space` (P2: the vertices, then the edge midpoints), z = 0 [m];
+///  * cells: VTK_TRIANGLE (5) for P1, VTK_QUADRATIC_TRIANGLE (22) for P2 with its six nodes
+///    in LagrangeSpace's local order v0 v1 v2 mid01 mid12 mid20, which is VTK's;
+///  * point data "displacement" [m], 3 components, z = 0;
+///  * cell data "stress" [Pa], 6 components xx yy zz xy yz xz (VTK's symmetric-tensor order),
+///    at the cell centroid; σ_zz from Material::outOfPlaneStress (λ tr ε in plane strain, 0 in
+///    plane stress), σ_yz = σ_xz = 0; "vonMises" [Pa] of that 3D stress (so it includes σ_zz
+///    in plane strain); "region" (Int32), the mesh's region number per triangle.
+/// `space` must be the space `assembler` was built on and `u` its interleaved dof vector
+/// (2 · numNodes values [m]). `precision`: significant digits of every number.
+void writeVtu(const std::string& path, const LagrangeSpace& space,
+              const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision);
+
+/// Write one fracture's rows as VTK XML poly data (ASCII) at `path`: the points (x, y, 0) [m]
+/// in row order (arclength order) joined by one VTK_POLY_LINE, and point data
+///  s [m], slip [m], slipIncrement [m], sigmaN [Pa], tau [Pa], ST [-], D [Pa] (Float64) and
+///  state (Int32: 0 stick, 1 slip, 2 open; see vtkStateCode).
+/// The file also says the state coding in an XML comment. No rows: an empty data set (no
+/// points, no line). The folder must exist.
+void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows,
+                      int precision);
+
+/// One time of a .pvd collection.
+struct PvdTime {
+  double time = 0.0;  ///< the time value ParaView shows (the solver's time [s or load])
+  /// Files of this time, relative to the .pvd; files[k] is written as part k. A part's
+  /// optional name (ParaView's block name) goes in names[k] when names has that entry.
+  std::vector<std::string> files;
+  std::vector<std::string> names;
+};
+
+/// Write a .pvd collection at `path`: for each time and each of its files one
+/// <DataSet timestep=... part=k file=.../>, times in the order given. `precision`:
+/// significant digits of the time values. The folder must exist.
+void writePvd(const std::string& path, const std::vector<PvdTime>& times, int precision);
+
+/// The VTK output of one run (layout in the file comment). Construct it once per run and call
+/// write() at each written time; it creates <case>/VTK/ and <case>/VTK/fractures/ on the first
+/// write and rewrites the .pvd with every time written so far by this object (a time name
+/// written twice replaces its entry). It does not read an existing .pvd: a new run starts a
+/// new collection.
+class VtkSeries {
+ public:
+  /// `caseDir`: the case folder; `caseName`: the base name of the .vtu and .pvd files
+  /// (default: the case folder's own name).
+  explicit VtkSeries(std::string caseDir, std::string caseName = "");
+
+  /// One fracture's rows for write(): its name (file name and ParaView block name) and table.
+  struct Fracture {
+    std::string name;
+    std::vector<FractureRow> rows;
+  };
+
+  /// Write the .vtu of (space, assembler, u) (see writeVtu), one .vtp per fracture (see
+  /// writeFractureVtp) and then the .pvd. `time`: the time value [s or load parameter];
+  /// `timeName`: the time folder's name (TimeControl::timeName), used in the file names.
+  /// Throws InputError naming the file if a folder or file cannot be written.
+  void write(double time, const std::string& timeName, const LagrangeSpace& space,
+             const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
+             const std::vector<Fracture>& fractures, int precision);
+
+  /// <case>/VTK/<caseName>.pvd
+  std::string pvdPath() const;
+  /// <case>/VTK/<caseName>_<timeName>.vtu
+  std::string vtuPath(const std::string& timeName) const;
+  /// <case>/VTK/fractures/<fracture>_<timeName>.vtp
+  std::string vtpPath(const std::string& fracture, const std::string& timeName) const;
+  const std::string& caseName() const { return caseName_; }
+
+ private:
+  std::string vtkDir_;
+  std::string caseName_;
+  std::vector<std::pair<std::string, PvdTime>> times_;  ///< by time name, in write order
+};
+
+}  // namespace friction

@@ -1,0 +1,202 @@
+// Effects switched on per case (constant/effects) against known answers, and the work a case
+// does not call for being skipped (issue: simulate only the effects a scene calls for).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "CaseRunner.hpp"
+#include "friction/case/FrictionCase.hpp"
+
+using namespace friction::regression;
+
+namespace {
+
+const char* kEffectsHeader =
+    "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object effects;\n}\n";
+
+double maxAbsSlip(const std::vector<Row>& rows) {
+  double m = 0;
+  for (const Row& r : rows) m = std::max(m, std::abs(r.slip));
+  return m;
+}
+
+// Relative L²(Γ) error of the inclined crack's slip against the analytic profile with
+// effective shear τ_eff (plane strain, r = 1.0033 for the finite square).
+double crackError(const std::vector<Row>& rows, double tauEff) {
+  const double a = 0.05, E = 10e9, nu = 0.25;
+  const auto w = trapezoid(rows);
+  double num = 0, den = 0;
+  const Row &f = rows.front(), &l = rows.back();
+  const double tx = l.x - f.x, ty = l.y - f.y, len = std::hypot(tx, ty);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double xi = ((rows[i].x - 0.5) * tx + (rows[i].y - 0.5) * ty) / len;
+    const double ana = 1.0033 * 4 * (1 - nu * nu) / E * tauEff * std::sqrt(std::max(a * a - xi * xi, 0.0));
+    num += w[i] * std::pow(std::abs(rows[i].slip) - ana, 2);
+    den += w[i] * ana * ana;
+  }
+  return std::sqrt(num / den);
+}
+
+bool sameTables(const Case& a, const Case& b, const std::string& time, const std::string& f) {
+  return readText(a.dir() / time / "fractures" / (f + ".dat")) ==
+         readText(b.dir() / time / "fractures" / (f + ".dat"));
+}
+
+}  // namespace
+
+TEST_CASE("gravity column: sigma_yy = -rho g (H - y), with no fracture and no control loop",
+          "[regression][effects]") {
+  Case c("paperBenchmark", "effects-gravity");
+  // The unit square without its fracture: bottom fixed, sides on rollers, top free.
+  c.edit("system/meshDict", "fractures +\\(fracture\\);", "fractures ();");
+  c.edit("constant/fractureProperties", "fracture\\s*\\{[^}]*\\}", "");
+  c.edit("0/D", "top\\s*\\{[^}]*\\}", "top { type free; }");
+  c.edit("0/D", "left +\\{ type free; \\}", "left { type fixedDisplacement; components (x); value (0 0); }");
+  c.edit("0/D", "right +\\{ type free; \\}", "right { type fixedDisplacement; components (x); value (0 0); }");
+  c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+  writeText(c.dir() / "constant" / "effects",
+            std::string(kEffectsHeader) + "gravity { type bodyForce; density 2000; g (0 -9.81); }\n");
+  // The utility splits nothing; then the library runs the case so the stress can be probed.
+  REQUIRE(run("'" + (fs::path(FRICTION_BIN_DIR) / "splitFractureNodes").string() + "' -case '" +
+                  c.dir().string() + "'",
+              c.dir() / "log.splitFractureNodes") == 0);
+  friction::FrictionCase fc(c.dir().string());
+  std::ostringstream log;
+  REQUIRE(fc.setup(log) == friction::FactorStatus::ok);
+  const auto results = fc.run(log);
+  INFO(log.str());
+  CHECK_THAT(log.str(), Catch::Contains("Effect gravity: bodyForce"));
+  CHECK_THAT(log.str(), Catch::Contains("no fracture: no split stiffness, no control loop"));
+  CHECK(fc.system().numAssemblies() == 1);
+  CHECK(fc.system().size() == 0);
+  CHECK(fc.system().factorization().numSolves() == 1);  // one step, one solve, no iteration
+  REQUIRE(results.size() == 1);
+  CHECK(results[0].report.iterations == 0);
+
+  // P2 holds the exact (quadratic) displacement of the column: the stress is exact.
+  const auto& asmb = fc.system().splitAssembler();
+  const Eigen::VectorXd u = fc.system().lastSplitDisplacement();
+  const double rhoG = 2000 * 9.81;
+  for (friction::Index cell = 0; cell < fc.splitMesh().mesh.numTriangles(); cell += 97) {
+    const auto& t = fc.splitMesh().mesh.triangles[cell];
+    const friction::Vector2 x = (fc.splitMesh().mesh.points[t[0]] + fc.splitMesh().mesh.points[t[1]] +
+                                 fc.splitMesh().mesh.points[t[2]]) / 3;
+    const Eigen::Matrix2d s = asmb.stress(u, cell, x);
+    // Round-off of a 10⁴-dof solve of stresses of size ρg ≈ 2·10⁴ Pa.
+    CHECK(s(1, 1) == Approx(-rhoG * (1 - x.y())).margin(1e-6 * rhoG));
+    CHECK(s(0, 1) == Approx(0).margin(1e-6 * rhoG));
+  }
+}
+
+TEST_CASE("initial stress alone reproduces the boundary-loaded inclined crack",
+          "[regression][effects]") {
+  Case loaded("inclinedCrack", "effects-crack-loaded");
+  REQUIRE(loaded.solve() == 0);
+  Case insitu("inclinedCrack", "effects-crack-insitu");
+  insitu.edit("0/D", "top +\\{[^}]*\\}", "top { type free; }");
+  writeText(insitu.dir() / "constant" / "effects",
+            std::string(kEffectsHeader) + "inSitu { type initialStress; stress (0 -1e7 0); }\n");
+  const int rc = insitu.solve();
+  INFO(insitu.log());
+  REQUIRE(rc == 0);
+  CHECK_THAT(insitu.log(), Catch::Contains("Effect inSitu: initialStress"));
+  const auto a = loaded.table("1", "crack"), b = insitu.table("1", "crack");
+  REQUIRE(a.size() == b.size());
+  // The uniform far field is exact in P1 either way; the crack's perturbation problem is the
+  // same, so only round-off separates the two (1e-8 of the slip).
+  for (std::size_t i = 0; i < a.size(); ++i) CHECK(std::abs(a[i].slip - b[i].slip) <= 1e-8 * maxAbsSlip(a));
+  CHECK(crackError(b, 4.3301e6 - 0.4 * 2.5e6) <= 2.5 / 16);
+}
+
+TEST_CASE("a uniform fracture pressure acts through the effective normal stress",
+          "[regression][effects]") {
+  Case c("inclinedCrack", "effects-crack-pressure");
+  writeText(c.dir() / "constant" / "effects",
+            std::string(kEffectsHeader) + "pore { type fracturePressure; fracture crack; pressure 1e6; }\n");
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  const auto rows = c.table("1", "crack");
+  // Analytic slip with σ_n replaced by σ_n + p: τ_eff = |τ| − μ_f(|σ_n| − p). The same
+  // tolerance as the analytic test at h = a/16; and the error must be of the same size as
+  // without pressure (0.062), which a wrong effective stress (error ~0.12) would exceed.
+  const double err = crackError(rows, 4.3301e6 - 0.4 * (2.5e6 - 1e6));
+  WARN("inclined crack with p = 1 MPa: relative L2 slip error " << err);
+  CHECK(err <= 0.08);
+  for (const Row& r : rows)
+    if (r.state == "slip") CHECK(r.ST == Approx(0.4).epsilon(1e-9));  // ST on σ_n + p
+}
+
+TEST_CASE("cohesion shifts the threshold exactly", "[regression][effects]") {
+  SECTION("coulombCohesion with mu_f = 0 is Tresca, bit for bit") {
+    Case a("paperBenchmark", "effects-cohesion-mu0");
+    a.edit("constant/fractureProperties", "law +coulomb;\\s*frictionCoefficient 0.2;",
+           "law coulombCohesion; frictionCoefficient 0; cohesion 0.01;");
+    Case b("paperBenchmark", "effects-tresca");
+    b.edit("constant/fractureProperties", "law +coulomb;\\s*frictionCoefficient 0.2;",
+           "law tresca; threshold 0.01;");
+    REQUIRE(a.solve() == 0);
+    REQUIRE(b.solve() == 0);
+    CHECK(sameTables(a, b, "1", "fracture"));
+  }
+  SECTION("at slipping nodes |tau| = c - mu_f sigma_n") {
+    Case c("paperBenchmark", "effects-cohesion");
+    c.edit("constant/fractureProperties", "law +coulomb;\\s*frictionCoefficient 0.2;",
+           "law coulombCohesion; frictionCoefficient 0.2; cohesion 0.001;");
+    REQUIRE(c.solve() == 0);
+    int slipping = 0;
+    for (const Row& r : c.table("1", "fracture")) {
+      if (r.state != "slip") continue;
+      ++slipping;
+      // Newton converges to ‖D‖ ≤ 1e-10 ‖Σ‖: the law holds to that relative level.
+      CHECK(std::abs(r.tau) == Approx(0.001 - 0.2 * r.sigmaN).epsilon(1e-8));
+    }
+    CHECK(slipping > 0);
+  }
+}
+
+TEST_CASE("an effect switched off reproduces the run without it bit for bit",
+          "[regression][effects]") {
+  Case base("inclinedCrack", "effects-base");
+  REQUIRE(base.solve() == 0);
+  Case off("inclinedCrack", "effects-off");
+  writeText(off.dir() / "constant" / "effects",
+            std::string(kEffectsHeader) +
+                "pore { type fracturePressure; fracture crack; pressure 5e6; active no; }\n"
+                "gravity { type bodyForce; density 2500; g (0 -9.81); active no; }\n");
+  REQUIRE(off.solve() == 0);
+  CHECK_THAT(off.log(), Catch::Contains("Effect pore: switched off"));
+  CHECK(sameTables(base, off, "1", "crack"));
+  CHECK(readText(base.dir() / "1" / "D") == readText(off.dir() / "1" / "D"));
+}
+
+TEST_CASE("steps whose loads did not change reuse the previous solution",
+          "[regression][effects]") {
+  Case c("paperBenchmark", "effects-unchanged");
+  c.edit("0/D", "\\(1 \\(-0.02 -0.025\\)\\)", "(0.5 (-0.02 -0.025))");
+  c.edit("system/controlDict", "deltaT +1;", "deltaT 0.25;");
+  REQUIRE(c.solve() == 0);
+  const std::string log = c.log();
+  // Steps 0.75 and 1 have the loads of 0.5: no solve, no iteration.
+  std::istringstream in(log);
+  int reused = 0;
+  for (std::string line; std::getline(in, line);)
+    if (line.find("previous solution reused") != std::string::npos) {
+      ++reused;
+      CHECK_THAT(line, Catch::Contains("iterations 0 ") && Catch::Contains("backSubstitutions 0 "));
+    }
+  CHECK(reused == 2);
+  const auto a = c.table("0.5", "fracture"), b = c.table("1", "fracture");
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    CHECK(a[i].slip == b[i].slip);
+    CHECK(b[i].slipIncrement == 0.0);
+  }
+  // And a fracture that sticks at its trial state stops after that one primal solve.
+  Case stuck("paperBenchmark", "effects-stuck");
+  stuck.edit("constant/fractureProperties", "frictionCoefficient 0.2;", "frictionCoefficient 2;");
+  REQUIRE(stuck.solve() == 0);
+  CHECK_THAT(stuck.log(), Catch::Contains("iterations 0 "));
+}

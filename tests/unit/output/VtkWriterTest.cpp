@@ -1,0 +1,201 @@
+// The VTK XML output (output/VtkWriter) read back by VTK itself: readVtk.py, run with Debian's
+// /usr/bin/python3 and python3-vtk9, reads the .pvd, .vtu and .vtp files and checks counts,
+// cell types and node order, connectivity, the displacement on both sides of a fracture, the
+// exact stress of a linear field and the fracture arrays (see readVtk.py for the list).
+// A missing /usr/bin/python3 or vtk module fails the test: etc/debian-packages lists them.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "../fracture/TestMeshes.hpp"
+#include "friction/core/InputError.hpp"
+#include "friction/fe/ElasticityAssembler.hpp"
+#include "friction/fe/LagrangeSpace.hpp"
+#include "friction/fe/Material.hpp"
+#include "friction/fracture/SplitMesh.hpp"
+#include "friction/output/VtkWriter.hpp"
+
+using namespace friction;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kGrid = 4;              // 4 x 4 cells of the unit square, 32 triangles
+constexpr double kFractureY = 0.5;    // fracture along grid row 2, across the whole width
+constexpr int kFracturePoints = 7;    // synthetic fracture table rows
+constexpr double kE = 2.0e10, kNu = 0.25;
+// u = t (A x + b + c [x in Ω⁺]): linear on each side, so the FE stress is exact; the jump c
+// makes the two coincident copies of each fracture node differ.
+const double kA[4] = {1.0e-3, -2.0e-4, 5.0e-4, -3.0e-3};  // A = [[a11 a12] [a21 a22]]
+const double kB[2] = {1.0e-2, -2.0e-2};                    // [m]
+const double kC[2] = {4.0e-3, 1.0e-3};                     // jump [m]
+
+/// The rows readVtk.py expects (keep in step with fractureRows there), scaled by t except
+/// s and ST.
+std::vector<FractureRow> fractureRows(double t) {
+  const char* states[3] = {"stick", "slip", "open"};
+  std::vector<FractureRow> rows;
+  for (int i = 0; i < kFracturePoints; ++i) {
+    const double s = double(i) / (kFracturePoints - 1);
+    FractureRow r;
+    r.s = s;
+    r.x = s;
+    r.y = kFractureY;
+    r.slip = t * 1e-3 * s;
+    r.slipIncrement = t * 2e-4 * s;
+    r.sigmaN = t * -1e6 * (1 + s);
+    r.tau = t * 1e5 * s;
+    r.ST = std::abs(r.tau) / -r.sigmaN;
+    r.D = t * 1e-9 * i;
+    r.state = states[i % 3];
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+SplitMesh splitGrid() {
+  Mesh m = test::gridMesh(kGrid);
+  test::addHorizontalFracture(m, kGrid, kGrid / 2, 0, kGrid, 5, "crack");
+  return splitFractures(m, {FractureSpec{"crack", 5, {}}});
+}
+
+/// u on every node, by the side of the cell that uses it (a node is used by one side only).
+Eigen::VectorXd linearField(const LagrangeSpace& space, double t) {
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(space.numDofs());
+  const Mesh& mesh = space.mesh();
+  for (Index c = 0; c < space.numCells(); ++c) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(c)];
+    const double yc = (mesh.points[tri[0]].y() + mesh.points[tri[1]].y() +
+                       mesh.points[tri[2]].y()) / 3;
+    const double plus = yc > kFractureY ? 1.0 : 0.0;
+    for (const Index n : space.cellNodes(c)) {
+      const Vector2& x = space.coordinate(n);
+      u[LagrangeSpace::dof(n, 0)] = t * (kA[0] * x.x() + kA[1] * x.y() + kB[0] + plus * kC[0]);
+      u[LagrangeSpace::dof(n, 1)] = t * (kA[2] * x.x() + kA[3] * x.y() + kB[1] + plus * kC[1]);
+    }
+  }
+  return u;
+}
+
+fs::path freshTempDir(const std::string& tag) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("friction-vtk-" + tag + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int countOf(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("VTK output of a linear field on a split mesh reads back in VTK with exact values",
+          "[output][vtk]") {
+  const int degree = GENERATE(1, 2);
+  const bool planeStress = GENERATE(false, true);
+  INFO("degree " << degree << ", planeStress " << planeStress);
+
+  const SplitMesh split = splitGrid();
+  const LagrangeSpace space(split.mesh, degree);
+  const Material material = Material::fromYoungPoisson(kE, kNu, planeStress);
+  const ElasticityAssembler assembler(space, material);
+
+  // Counted by hand: 5 x 5 grid points + 5 Ω⁻ copies of the fracture nodes (both ends on the
+  // boundary, so every one is duplicated) = 30; P2 adds one node per edge: 20 horizontal + 20
+  // vertical + 16 diagonal edges of the grid + the 4 Ω⁻ fracture edges = 60, so 90.
+  const int wantPoints = degree == 1 ? 30 : 90;
+  REQUIRE(space.numNodes() == wantPoints);
+  REQUIRE(space.numCells() == 32);
+
+  const fs::path dir = freshTempDir("p" + std::to_string(degree) + (planeStress ? "s" : "e"));
+  const fs::path caseDir = dir / "myCase";
+  fs::create_directories(caseDir);
+  VtkSeries series(caseDir.string());
+  CHECK(series.caseName() == "myCase");
+  // 17 digits: the checks compare against exact values at round-off level.
+  for (const double t : {0.5, 1.0}) {
+    std::ostringstream name;
+    name << t;
+    series.write(t, name.str(), space, assembler, linearField(space, t),
+                 {{"crack", fractureRows(t)}}, 17);
+  }
+  // Rewriting a time replaces its entry instead of adding one.
+  series.write(1.0, "1", space, assembler, linearField(space, 1.0), {{"crack", fractureRows(1.0)}},
+               17);
+
+  CHECK(fs::is_regular_file(caseDir / "VTK" / "myCase.pvd"));
+  CHECK(fs::is_regular_file(caseDir / "VTK" / "myCase_0.5.vtu"));
+  CHECK(fs::is_regular_file(caseDir / "VTK" / "myCase_1.vtu"));
+  CHECK(fs::is_regular_file(caseDir / "VTK" / "fractures" / "crack_0.5.vtp"));
+  CHECK(fs::is_regular_file(caseDir / "VTK" / "fractures" / "crack_1.vtp"));
+  CHECK(series.pvdPath() == (caseDir / "VTK" / "myCase.pvd").string());
+  const std::string pvd = readFile(caseDir / "VTK" / "myCase.pvd");
+  CHECK(countOf(pvd, "<DataSet ") == 4);  // 2 times x (mesh + 1 fracture)
+  // No temporary files left beside the targets.
+  for (const auto& e : fs::recursive_directory_iterator(caseDir / "VTK"))
+    CHECK(e.path().filename().string().rfind(".", 0) != 0);
+
+  REQUIRE(fs::exists("/usr/bin/python3"));  // Debian's, which sees python3-vtk9
+  const fs::path script = fs::path(FRICTION_SOURCE_DIR) / "tests/unit/output/readVtk.py";
+  REQUIRE(fs::exists(script));
+  std::ostringstream cmd;
+  cmd.precision(17);
+  cmd << "/usr/bin/python3 '" << script.string() << "' '" << series.pvdPath() << "'"
+      << " --E " << kE << " --nu " << kNu << (planeStress ? " --planeStress" : "") << " --A "
+      << kA[0] << " " << kA[1] << " " << kA[2] << " " << kA[3] << " --b " << kB[0] << " "
+      << kB[1] << " --jump " << kC[0] << " " << kC[1] << " --fractureY " << kFractureY
+      << " --points " << wantPoints << " --cells 32 --degree " << degree
+      << " --fracturePoints " << kFracturePoints << " --times 2"
+      << " > '" << (dir / "readVtk.log").string() << "' 2>&1";
+  const int status = std::system(cmd.str().c_str());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  INFO(cmd.str() << "\n" << readFile(dir / "readVtk.log"));
+  REQUIRE(code == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("VTK writers refuse what they cannot write and unknown fracture states",
+          "[output][vtk]") {
+  CHECK(vtkStateCode("stick") == 0);
+  CHECK(vtkStateCode("slip") == 1);
+  CHECK(vtkStateCode("open") == 2);
+  CHECK_THROWS_AS(vtkStateCode("sliding"), std::invalid_argument);
+
+  const fs::path dir = freshTempDir("errors");
+  const fs::path missing = dir / "noSuchFolder" / "a.vtp";
+  CHECK_THROWS_AS(writeFractureVtp(missing.string(), fractureRows(1), 8), InputError);
+  CHECK_FALSE(fs::exists(missing));
+
+  // An empty table is an empty data set, not a polyline with no points.
+  writeFractureVtp((dir / "empty.vtp").string(), {}, 8);
+  const std::string empty = readFile(dir / "empty.vtp");
+  CHECK(empty.find("NumberOfPoints=\"0\"") != std::string::npos);
+  CHECK(empty.find("NumberOfLines=\"0\"") != std::string::npos);
+
+  // Names with XML specials stay well-formed attribute values.
+  writePvd((dir / "a.pvd").string(), {{0.25, {"a&b.vtu", "x\"y.vtp"}, {"mesh", "<f>"}}}, 8);
+  const std::string pvd = readFile(dir / "a.pvd");
+  CHECK(pvd.find("file=\"a&amp;b.vtu\"") != std::string::npos);
+  CHECK(pvd.find("file=\"x&quot;y.vtp\"") != std::string::npos);
+  CHECK(pvd.find("name=\"&lt;f&gt;\"") != std::string::npos);
+  CHECK(pvd.find("timestep=\"0.25\" group=\"\" part=\"1\"") != std::string::npos);
+  fs::remove_all(dir);
+}
