@@ -16,6 +16,7 @@
 #include "friction/core/CommandLine.hpp"
 #include "friction/case/FrictionCase.hpp"
 #include "friction/control/Optimizer.hpp"
+#include "friction/effect/Effect.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/law/FrictionLaw.hpp"
 #include "friction/linalg/SparseFactor.hpp"
@@ -44,7 +45,8 @@ int main(int argc, char** argv) {
               << "optimizers (system/frictionSolution, control/optimizer/type): "
               << joinWords(Optimizer::names()) << "\n"
               << "linear solvers (system/frictionSolution, linearSolver): "
-              << joinWords(SparseFactor::backendNames()) << "\n";
+              << joinWords(SparseFactor::backendNames()) << "\n"
+              << "effects (constant/effects, key 'type'): " << joinWords(Effect::names()) << "\n";
     return 0;
   }
 

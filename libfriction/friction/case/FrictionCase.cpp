@@ -287,7 +287,9 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         << "  iterations " << r.report.iterations
         << "  backSubstitutions " << r.backSubstitutions << std::setprecision(4) << "  J " << r.J
         << "  |D|/|Sigma| " << r.relResidual << "  maxExcessST " << r.maxExcessST << "  |dBeta| "
-        << r.lastStepNorm << "  " << toString(r.report.status) << (r.written ? "  (written)" : "")
+        << r.lastStepNorm << "  " << toString(r.report.status)
+        << (!r.reused && n > 0 && r.report.iterations == 0 ? " (stuck at the trial state)" : "")
+        << (r.written ? "  (written)" : "")
         << "\n";
     log.flush();
     results.push_back(std::move(r));

@@ -32,7 +32,7 @@ constexpr int kFracturePoints = 7;    // synthetic fracture table rows
 constexpr double kE = 2.0e10, kNu = 0.25;
 // u = t (A x + b + c [x in Ω⁺]): linear on each side, so the FE stress is exact; the jump c
 // makes the two coincident copies of each fracture node differ.
-const double kA[4] = {1.0e-3, -2.0e-4, 5.0e-4, -3.0e-3};  // A = [[a11 a12] [a21 a22]]
+const double kA[4] = {2.0e-3, -2.0e-4, 5.0e-4, -3.0e-3};  // A = [[a11 a12] [a21 a22]]
 const double kB[2] = {1.0e-2, -2.0e-2};                    // [m]
 const double kC[2] = {4.0e-3, 1.0e-3};                     // jump [m]
 
