@@ -9,7 +9,8 @@
 // <t>/fractures/<name>.dat, <t>/solverStatus and postProcessing/convergence.dat.
 //
 // Exit codes: 0 every step converged; 1 bad input (file:line and what was expected);
-// 2 bad command line; 3 some step did not converge (see the log); 4 the factorisation failed.
+// 2 bad command line; 3 some step did not converge (see the log); 4 the factorisation failed;
+// 5 stopped by SIGINT/SIGTERM after writing the current step.
 #include <boost/program_options.hpp>
 #include <iostream>
 
@@ -70,6 +71,10 @@ int main(int argc, char** argv) {
     const auto& f = c.system().factorization();
     std::cout << "\nFactorisations " << f.numFactorizations() << ", back-substitutions "
               << f.numSolves() << "\n";
+    if (!c.stoppedEarly().empty()) {
+      std::cout << "\nStopped early (" << c.stoppedEarly() << "); continue with startFrom latestTime\n\nEnd\n";
+      return c.stoppedEarly().rfind("SIG", 0) == 0 ? 5 : 0;
+    }
     if (notConverged) {
       std::cout << "\nWarning: " << notConverged << " of " << results.size()
                 << " steps did not converge (see the status column)\n\nEnd\n";

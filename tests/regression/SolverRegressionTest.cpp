@@ -330,3 +330,15 @@ TEST_CASE("OpenFOAM's foamDictionary reads the fields and status the solver writ
             c.dir() / "log.foamStatus") == 0);
   CHECK(readText(c.dir() / "log.foamStatus").find("converged") != std::string::npos);
 }
+
+TEST_CASE("ParaView files read by VTK hold the solver's own table values", "[regression][vtk]") {
+  Case c("paperBenchmark", "paperBenchmark-vtk");
+  REQUIRE(c.solve() == 0);
+  REQUIRE(fs::exists("/usr/bin/python3"));  // python3-vtk9 is installed by etc/setup
+  const std::string script = std::string(FRICTION_SOURCE_DIR) + "/tests/regression/vtkMatchesTables.py";
+  // The split mesh of the committed square: 1859 + 41 points, 3556 triangles (P1).
+  const int rc = run("/usr/bin/python3 '" + script + "' '" + c.dir().string() + "' 1 fracture 1900 3556",
+                     c.dir() / "log.vtk");
+  INFO(readText(c.dir() / "log.vtk"));
+  CHECK(rc == 0);
+}

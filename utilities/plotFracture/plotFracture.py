@@ -36,6 +36,7 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only: no display needed
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 
 class PlotError(Exception):
@@ -185,6 +186,7 @@ def plotConvergence(case, path, times, out):
                   "iteration")
     axR.set_ylabel(r"relResidual $\|D\|_M / \|\Sigma\|_M$")
     axR.set_xlabel("iteration")
+    axR.xaxis.set_major_locator(MaxNLocator(integer=True))
     for ax in (axJ, axR):
         ax.grid(True, which="both", alpha=0.3)
         if len(keys) <= 12:

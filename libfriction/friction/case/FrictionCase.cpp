@@ -2,6 +2,9 @@
 #include "friction/case/FrictionCase.hpp"
 
 #include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <limits>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +12,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "friction/core/StopRequest.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
@@ -210,19 +214,60 @@ Eigen::VectorXd FrictionCase::fracturePressure(double t) const {
   return p;
 }
 
+int FrictionCase::restartStep(std::ostream& log) {
+  // The newest time folder that is complete: it has a state file (a folder appears only
+  // whole, TimeFolder.hpp; a half-written one is still named .<time>.partial).
+  double latest = -std::numeric_limits<double>::infinity();
+  fs::path folder;
+  for (const auto& e : fs::directory_iterator(caseDir_)) {
+    if (!e.is_directory()) continue;
+    const std::string name = e.path().filename().string();
+    char* end = nullptr;
+    const double t = std::strtod(name.c_str(), &end);
+    if (end == name.c_str() || *end != '\0' || name[0] == '.') continue;
+    if (t > latest && fs::exists(e.path() / "uniform" / "frictionState")) latest = t, folder = e.path();
+  }
+  if (folder.empty()) {
+    log << "startFrom latestTime: no complete time folder yet, starting at startTime\n";
+    return 0;
+  }
+  const Dictionary st = Dictionary::read((folder / "uniform" / "frictionState").string());
+  const std::vector<double> slip = st.getScalarList("slip");
+  const std::vector<double> beta = st.getScalarList("lastIncrement");
+  if (static_cast<Eigen::Index>(slip.size()) != system_->size() || beta.size() != slip.size())
+    st.fail("slip", "key 'slip': " + std::to_string(slip.size()) + " values, expected one per "
+                    "fracture node (" + std::to_string(system_->size()) + "): the mesh or element "
+                    "order changed since this folder was written");
+  const long step = st.getInt("step", Bounds::nonNegative());
+  st.getScalar("time");
+  st.checkAllRead();
+  slip_ = Eigen::Map<const Eigen::VectorXd>(slip.data(), system_->size());
+  lastBeta_ = Eigen::Map<const Eigen::VectorXd>(beta.data(), system_->size());
+  log << "Restarting from time " << folder.filename().string() << " (step " << step << ")\n\n";
+  return static_cast<int>(step);
+}
+
 std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   std::vector<StepResult> results;
   FractureSystem& sys = *system_;
   const Eigen::Index n = sys.size();
-  Eigen::VectorXd beta = Eigen::VectorXd::Zero(n), lastBeta = beta;
+  Eigen::VectorXd beta = Eigen::VectorXd::Zero(n);
+  lastBeta_ = beta;
+  const int first = time_->startFromLatest() ? restartStep(log) + 1 : 1;
+  Eigen::VectorXd& lastBeta = lastBeta_;
   const fs::path post = fs::path(caseDir_) / "postProcessing";
   fs::create_directories(post);
-  std::ofstream history(post / "convergence.dat");
-  history << "# time iteration J relResidual stepNorm\n";
+  // A restart appends to the history; a fresh run starts it.
+  std::ofstream history(post / "convergence.dat", first > 1 ? std::ios::app : std::ios::trunc);
+  if (first == 1) history << "# time iteration J relResidual stepNorm\n";
   history.precision(8);
+  const std::string controlDict = (fs::path(caseDir_) / "system" / "controlDict").string();
+  auto controlStamp = fs::last_write_time(controlDict);
+  const auto start = std::chrono::steady_clock::now();
+  installStopHandlers();
 
   Eigen::VectorXd lastLoad, lastDirichlet, lastPressure;
-  for (int k = 1; k <= time_->numSteps(); ++k) {
+  for (int k = first; k <= time_->numSteps(); ++k) {
     StepResult r;
     r.time = time_->time(k);
     const long solves0 = sys.factorization().numSolves();
@@ -232,7 +277,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     const Eigen::VectorXd pressure = fracturePressure(r.time);
     // Only what changed is recomputed: a step whose loads equal the previous step's has the
     // previous (converged) solution, with β = 0.
-    if (k > 1 && load == lastLoad && sys.dirichlet().values() == lastDirichlet &&
+    if (!results.empty() && load == lastLoad && sys.dirichlet().values() == lastDirichlet &&
         pressure == lastPressure && results.back().report.status == OptimizerStatus::converged) {
       r.reused = true;
       r.report.status = OptimizerStatus::converged;
@@ -279,8 +324,23 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
               << std::max(h.stepNorm, 0.0) << "\n";
     history.flush();
 
-    if (time_->writes(k)) {
-      writeTimeFolder(r, last_.beta);
+    // Stop requests: the user edited stopAt in controlDict, or sent SIGINT/SIGTERM.
+    if (fs::last_write_time(controlDict) != controlStamp) {
+      controlStamp = fs::last_write_time(controlDict);
+      try {
+        if (time_->rereadStopAt(controlDict)) log << "controlDict changed: stopAt re-read\n";
+      } catch (const InputError& e) {
+        log << "controlDict changed but cannot be read (" << e.what() << "): ignored\n";
+      }
+    }
+    const auto stopAt = time_->stopAt();
+    const bool signalled = stopRequested() != 0;
+    const bool stopNow = signalled || stopAt == TimeControl::StopAt::writeNow ||
+                         stopAt == TimeControl::StopAt::noWriteNow ||
+                         (stopAt == TimeControl::StopAt::nextWrite && time_->writes(k));
+    const bool write = time_->writes(k) || signalled || stopAt == TimeControl::StopAt::writeNow;
+    if (write && stopAt != TimeControl::StopAt::noWriteNow) {
+      writeTimeFolder(r, last_.beta, k);
       r.written = true;
     }
     log << "Time = " << time_->timeName(r.time) << (r.reused ? "  loads unchanged: previous solution reused" : "")
@@ -289,15 +349,28 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         << "  |D|/|Sigma| " << r.relResidual << "  maxExcessST " << r.maxExcessST << "  |dBeta| "
         << r.lastStepNorm << "  " << toString(r.report.status)
         << (!r.reused && n > 0 && r.report.iterations == 0 ? " (stuck at the trial state)" : "")
-        << (r.written ? "  (written)" : "")
-        << "\n";
+        << (r.written ? "  (written)" : "");
+    // Progress: step k of n, elapsed, estimated remaining (on the step's own line, so a
+    // log gets no extra lines).
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int done = k - first + 1, total = time_->numSteps() - first + 1;
+    log << "  [step " << k << "/" << time_->numSteps() << ", " << std::setprecision(3) << elapsed
+        << " s, ~" << elapsed / done * (total - done) << " s left]\n";
     log.flush();
     results.push_back(std::move(r));
+    if (stopNow && k < time_->numSteps()) {
+      stoppedEarly_ = signalled ? std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM")
+                                : "stopAt in system/controlDict";
+      log << "\nStopped at time " << time_->timeName(time_->time(k)) << " (" << stoppedEarly_
+          << ")" << (results.back().written ? ", this time written" : "") << "\n";
+      break;
+    }
   }
   return results;
 }
 
-void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta) {
+void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, int step) {
   const int precision = time_->writePrecision();
   TimeFolder folder(caseDir_, time_->timeName(r.time));
   const FractureSystem& sys = *system_;
@@ -313,6 +386,7 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
          << " backSubstitutions " << r.backSubstitutions << " J " << r.J << " relResidual "
          << r.relResidual << " maxExcessST " << r.maxExcessST;
   const auto& nodes = sys.controlNodes();
+  std::vector<VtkSeries::Fracture> vtkFractures;
   for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
     std::vector<FractureRow> rows;
     for (std::size_t k = 0; k < nodes.size(); ++k) {
@@ -338,6 +412,7 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
     }
     writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), rows,
                        status.str(), precision);
+    vtkFractures.push_back({split_.fractures[f].name, std::move(rows)});
   }
   DictionaryWriter st("dictionary", "solverStatus");
   st.entryWord("status", toString(r.report.status));
@@ -347,7 +422,30 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   st.entry("relResidual", r.relResidual);
   st.entry("maxExcessST", r.maxExcessST);
   st.writeAtomic(folder.file("solverStatus"));
+
+  // What a restart needs, at full precision (the tables above use writePrecision).
+  DictionaryWriter state("dictionary", "frictionState", "restart state of frictionSolver");
+  state.entry("time", r.time);
+  state.entry("step", static_cast<long>(step));
+  state.entry("slip", std::vector<double>(slip_.data(), slip_.data() + slip_.size()));
+  state.entry("lastIncrement", std::vector<double>(beta.data(), beta.data() + beta.size()));
+  state.writeAtomic(folder.file("uniform/frictionState"));
   folder.commit();
+
+  if (time_->writeVTK()) {
+    if (!vtk_) vtk_ = std::make_unique<VtkSeries>(caseDir_);
+    std::function<Eigen::Matrix2d(const Vector2&)> sigma0;
+    bool hasInitialStress = false;
+    for (const auto& e : effects_) hasInitialStress |= e->type() == "initialStress";
+    if (hasInitialStress)
+      sigma0 = [this](const Vector2& x) {
+        Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
+        for (const auto& e : effects_) s += e->initialStress(x);
+        return s;
+      };
+    vtk_->write(r.time, time_->timeName(r.time), sys.splitSpace(), sys.splitAssembler(), u,
+                vtkFractures, precision, sigma0);
+  }
 }
 
 }  // namespace friction

@@ -29,6 +29,7 @@
 #include "friction/fracture/FractureSystem.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/law/FrictionLaw.hpp"
+#include "friction/output/VtkWriter.hpp"
 #include "friction/time/TimeControl.hpp"
 
 namespace friction {
@@ -51,8 +52,11 @@ class FrictionCase {
 
   /// Build the spaces, fix the Dirichlet dofs, assemble and factor once. Returns the status.
   FactorStatus setup(std::ostream& log);
-  /// The time loop. Returns the step results (also logged).
+  /// The time loop. Returns the step results (also logged). With startFrom latestTime it
+  /// continues from the newest complete time folder (its uniform/frictionState).
   std::vector<StepResult> run(std::ostream& log);
+  /// Why run() stopped before endTime ("" if it reached it): stopAt or a signal.
+  const std::string& stoppedEarly() const { return stoppedEarly_; }
 
   /// Print the active models and settings (the log's first lines).
   void printSettings(std::ostream& log) const;
@@ -70,7 +74,7 @@ class FrictionCase {
     std::unique_ptr<FrictionLaw> law;
   };
 
-  void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta);
+  void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, int step);
   Eigen::VectorXd loadVector(double t) const;
   /// Effective fluid pressure per control node at t [Pa] (zero without fracturePressure).
   Eigen::VectorXd fracturePressure(double t) const;
@@ -94,6 +98,11 @@ class FrictionCase {
   Eigen::VectorXd mu_, cohesion_, slip_;
   ControlState last_;
   Eigen::VectorXd pressure_;  ///< p of the last step, per control node
+  Eigen::VectorXd lastBeta_;  ///< increment of the last step (warm start, restart)
+  std::string stoppedEarly_;
+  std::unique_ptr<VtkSeries> vtk_;  ///< ParaView files, when controlDict's writeVTK is on
+  /// Restart: the step to continue after, and the state read from its time folder.
+  int restartStep(std::ostream& log);
 };
 
 }  // namespace friction

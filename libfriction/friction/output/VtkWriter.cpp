@@ -122,7 +122,8 @@ int vtkStateCode(const std::string& state) {
 }
 
 void writeVtu(const std::string& path, const LagrangeSpace& space,
-              const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision) {
+              const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
+              const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress) {
   if (u.size() != space.numDofs())
     throw std::invalid_argument("writeVtu: u has " + std::to_string(u.size()) +
                                 " values, the space " + std::to_string(space.numDofs()) +
@@ -160,7 +161,8 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
   for (Index c = 0; c < numCells; ++c) {
     const auto& t = mesh.triangles[static_cast<std::size_t>(c)];
     const Vector2 centroid = (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]]) / 3.0;
-    const Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
+    Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
+    if (initialStress) sigma += initialStress(centroid);
     const double szz = material.outOfPlaneStress(assembler.strain(u, c, centroid));
     const double sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
     s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
@@ -305,7 +307,8 @@ std::string VtkSeries::vtpPath(const std::string& fracture, const std::string& t
 
 void VtkSeries::write(double time, const std::string& timeName, const LagrangeSpace& space,
                       const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
-                      const std::vector<Fracture>& fractures, int precision) {
+                      const std::vector<Fracture>& fractures, int precision,
+                      const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress) {
   std::error_code ec;
   fs::create_directories(fs::path(vtkDir_) / "fractures", ec);
   if (ec)
@@ -314,7 +317,7 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
 
   PvdTime entry;
   entry.time = time;
-  writeVtu(vtuPath(timeName), space, assembler, u, precision);
+  writeVtu(vtuPath(timeName), space, assembler, u, precision, initialStress);
   entry.files.push_back(fs::path(vtuPath(timeName)).filename().string());
   entry.names.push_back("mesh");
   for (const Fracture& f : fractures) {

@@ -21,6 +21,7 @@
 // σ_n, τ and the slip: fracture/SignConventions.hpp.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,8 +55,11 @@ int vtkStateCode(const std::string& state);
 ///    in plane strain); "region" (Int32), the mesh's region number per triangle.
 /// `space` must be the space `assembler` was built on and `u` its interleaved dof vector
 /// (2 · numNodes values [m]). `precision`: significant digits of every number.
+/// `initialStress`, if given, is an in-situ stress σ⁰(x) [Pa] added to the in-plane stress
+/// (effect initialStress; its σ_zz is taken as 0).
 void writeVtu(const std::string& path, const LagrangeSpace& space,
-              const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision);
+              const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
+              const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress = {});
 
 /// Write one fracture's rows as VTK XML poly data (ASCII) at `path`: the points (x, y, 0) [m]
 /// in row order (arclength order) joined by one VTK_POLY_LINE, and point data
@@ -103,7 +107,8 @@ class VtkSeries {
   /// Throws InputError naming the file if a folder or file cannot be written.
   void write(double time, const std::string& timeName, const LagrangeSpace& space,
              const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
-             const std::vector<Fracture>& fractures, int precision);
+             const std::vector<Fracture>& fractures, int precision,
+             const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress = {});
 
   /// <case>/VTK/<caseName>.pvd
   std::string pvdPath() const;

@@ -6,6 +6,19 @@
 
 namespace friction {
 
+namespace {
+
+std::vector<std::string> stopAtNames() { return {"endTime", "writeNow", "noWriteNow", "nextWrite"}; }
+
+TimeControl::StopAt parseStopAt(const std::string& w) {
+  if (w == "writeNow") return TimeControl::StopAt::writeNow;
+  if (w == "noWriteNow") return TimeControl::StopAt::noWriteNow;
+  if (w == "nextWrite") return TimeControl::StopAt::nextWrite;
+  return TimeControl::StopAt::endTime;
+}
+
+}  // namespace
+
 TimeControl::TimeControl(double startTime, double endTime, double deltaT)
     : startTime_(startTime), endTime_(endTime), deltaT_(deltaT) {}
 
@@ -14,7 +27,7 @@ TimeControl::TimeControl(const Dictionary& d) {
   startFromLatest_ = d.getChoiceOr("startFrom", {"startTime", "latestTime"}, "startTime") ==
                      "latestTime";
   startTime_ = d.getScalarOr("startTime", 0.0);
-  d.getChoiceOr("stopAt", {"endTime"}, "endTime");
+  stopAt_ = parseStopAt(d.getChoiceOr("stopAt", stopAtNames(), "endTime"));
   endTime_ = d.getScalar("endTime");
   if (endTime_ <= startTime_)
     d.fail("endTime", "key 'endTime': expected a time after startTime (" +
@@ -27,6 +40,7 @@ TimeControl::TimeControl(const Dictionary& d) {
                             "number of steps");
   writePrecision_ = static_cast<int>(d.getIntOr("writePrecision", 8, {1, 17}));
   timePrecision_ = static_cast<int>(d.getIntOr("timePrecision", 6, {1, 17}));
+  writeVTK_ = d.getBoolOr("writeVTK", true);
 }
 
 int TimeControl::numSteps() const {
@@ -52,6 +66,23 @@ std::string TimeControl::timeName(double t) const {
   s.precision(timePrecision_);
   s << t;  // general format, like OpenFOAM's default timeFormat
   return s.str();
+}
+
+}  // namespace friction
+
+namespace friction {
+
+bool TimeControl::rereadStopAt(const std::string& controlDictPath) {
+  const Dictionary d = Dictionary::read(controlDictPath);
+  const StopAt before = stopAt_;
+  stopAt_ = parseStopAt(d.getChoiceOr("stopAt", stopAtNames(), "endTime"));
+  d.markAllRead();
+  return stopAt_ != before;
+}
+
+int TimeControl::stepOf(double t) const {
+  if (t >= endTime_) return numSteps();
+  return static_cast<int>(std::lround((t - startTime_) / deltaT_));
 }
 
 }  // namespace friction

@@ -1,0 +1,60 @@
+#!/usr/bin/python3
+"""The solver's VTK files, read with real VTK, hold what its own tables hold.
+
+Usage: vtkMatchesTables.py CASE_DIR TIME FRACTURE NUM_POINTS NUM_CELLS
+Checks: the .pvd names files that exist; the .vtu has the split mesh's point and cell
+counts, connectivity in range (VTK itself does not check it) and finite arrays; the .vtp
+has one point per table row with sigmaN, tau, ST, slip and state equal to the table's
+values (the table is written with writePrecision digits: relative 1e-6 is ample).
+"""
+import math
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+case, time, fracture, npoints, ncells = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), int(sys.argv[5])
+vtkdir = os.path.join(case, "VTK")
+pvds = [f for f in os.listdir(vtkdir) if f.endswith(".pvd")]
+assert len(pvds) == 1, pvds
+root = ET.parse(os.path.join(vtkdir, pvds[0])).getroot()
+files = [d.get("file") for d in root.iter("DataSet") if d.get("timestep") is not None and math.isclose(float(d.get("timestep")), float(time))]
+assert files, "no dataset for time %s in the .pvd" % time
+for f in files:
+    assert os.path.exists(os.path.join(vtkdir, f)), "the .pvd names a missing file " + f
+
+vtu = [f for f in files if f.endswith(".vtu")][0]
+r = vtk.vtkXMLUnstructuredGridReader()
+r.SetFileName(os.path.join(vtkdir, vtu))
+r.Update()
+grid = r.GetOutput()
+assert grid.GetNumberOfPoints() == npoints, (grid.GetNumberOfPoints(), npoints)
+assert grid.GetNumberOfCells() == ncells, (grid.GetNumberOfCells(), ncells)
+conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
+assert conn.min() >= 0 and conn.max() < npoints, "connectivity out of range"
+for name in ("displacement",):
+    a = vtk_to_numpy(grid.GetPointData().GetArray(name))
+    assert a.shape[0] == npoints and all(map(math.isfinite, a.ravel())), name
+for name in ("stress", "vonMises"):
+    a = vtk_to_numpy(grid.GetCellData().GetArray(name))
+    assert a.shape[0] == ncells and all(map(math.isfinite, a.ravel())), name
+
+rows = [l.split() for l in open(os.path.join(case, time, "fractures", fracture + ".dat")) if not l.startswith("#")]
+vtp = [f for f in files if f.endswith(".vtp") and os.path.basename(f).startswith(fracture + "_")][0]
+p = vtk.vtkXMLPolyDataReader()
+p.SetFileName(os.path.join(vtkdir, vtp))
+p.Update()
+poly = p.GetOutput()
+assert poly.GetNumberOfPoints() == len(rows), (poly.GetNumberOfPoints(), len(rows))
+columns = {"slip": 3, "sigmaN": 5, "tau": 6, "ST": 7}
+for name, col in columns.items():
+    a = vtk_to_numpy(poly.GetPointData().GetArray(name))
+    for i, row in enumerate(rows):
+        want = float(row[col])
+        assert math.isclose(a[i], want, rel_tol=1e-6, abs_tol=1e-12 * (1 + abs(want))), (name, i, a[i], want)
+codes = {"stick": 0, "slip": 1, "open": 2}
+state = vtk_to_numpy(poly.GetPointData().GetArray("state"))
+assert [int(s) for s in state] == [codes[row[9]] for row in rows], "state differs"
+print("PASS: %s and %s match the tables (%d points, %d cells, %d fracture nodes)" % (vtu, vtp, npoints, ncells, len(rows)))
