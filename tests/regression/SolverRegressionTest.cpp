@@ -317,14 +317,17 @@ TEST_CASE("bad solver input names file, line and what was expected, and writes n
   }
 }
 
-TEST_CASE("OpenFOAM's foamDictionary reads the fields and status the solver writes",
+TEST_CASE("OpenFOAM's foamDictionary reads every dictionary and field the solver writes",
           "[regression][foam]") {
   Case c("paperBenchmark", "paperBenchmark-foam");
   REQUIRE(c.solve() == 0);
   const std::string env = "WM_PROJECT_DIR=/usr/share/openfoam ";
   REQUIRE(fs::exists("/usr/bin/foamDictionary"));  // installed by etc/setup (openfoam)
-  CHECK(run(env + "foamDictionary '" + (c.dir() / "1" / "D").string() + "' -keywords",
-            c.dir() / "log.foamD") == 0);
+  for (const char* f : {"1/D", "1/solverStatus", "1/uniform/frictionState", "constant/splitMesh"}) {
+    INFO(f);
+    CHECK(run(env + "foamDictionary '" + (c.dir() / f).string() + "' -keywords",
+              c.dir() / "log.foam") == 0);
+  }
   CHECK(run(env + "foamDictionary '" + (c.dir() / "1" / "solverStatus").string() +
                 "' -entry status -value",
             c.dir() / "log.foamStatus") == 0);

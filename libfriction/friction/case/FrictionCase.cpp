@@ -187,6 +187,12 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   log << "Split mesh: " << split_.mesh.numPoints() << " points, " << split_.mesh.numTriangles()
       << " triangles, " << system_->unsplitSpace().numDofs() << " dofs (P" << order_ << "), "
       << n << " fracture control nodes\n";
+  // P1 triangles lock for nearly incompressible material (the discrete divergence-free
+  // space is too small): the displacement comes out too small. P2 copes far better.
+  if (order_ == 1 && !material_->planeStress() && material_->poissonRatio() > 0.45)
+    log << "Warning: nu = " << material_->poissonRatio()
+        << " with P1 elements: P1 locks for nearly incompressible material (displacements and "
+           "slip come out too small); use elementOrder 2\n";
   if (int held = system_->numHeldOnDirichlet())
     log << "Note: " << held << " fracture node(s) lie on a Dirichlet patch: their jump is held at zero\n";
   log << "Assemblies: " << system_->numAssemblies() << " stiffness matri"
@@ -309,6 +315,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     pressure_ = pressure;
 
     r.backSubstitutions = sys.factorization().numSolves() - solves0;
+    r.equilibrium = r.reused ? results.back().equilibrium : sys.equilibriumResidual();
     r.J = last_.J;
     r.lastStepNorm = r.report.history.empty() ? 0 : std::max(0.0, r.report.history.back().stepNorm);
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -384,7 +391,7 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   std::ostringstream status;
   status << "status " << toString(r.report.status) << " iterations " << r.report.iterations
          << " backSubstitutions " << r.backSubstitutions << " J " << r.J << " relResidual "
-         << r.relResidual << " maxExcessST " << r.maxExcessST;
+         << r.relResidual << " maxExcessST " << r.maxExcessST << " equilibrium " << r.equilibrium;
   const auto& nodes = sys.controlNodes();
   std::vector<VtkSeries::Fracture> vtkFractures;
   for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
@@ -421,6 +428,7 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   st.entry("J", r.J);
   st.entry("relResidual", r.relResidual);
   st.entry("maxExcessST", r.maxExcessST);
+  st.entry("equilibriumResidual", r.equilibrium);
   st.writeAtomic(folder.file("solverStatus"));
 
   // What a restart needs, at full precision (the tables above use writePrecision).

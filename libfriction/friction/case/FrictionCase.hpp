@@ -40,6 +40,7 @@ struct StepResult {
   OptimizerReport report;
   long backSubstitutions = 0;
   double J = 0, relResidual = 0, maxExcessST = 0, lastStepNorm = 0;
+  double equilibrium = 0;  ///< ‖K x − b‖/‖b‖ of the step's final primal solve
   bool written = false;
   bool reused = false;  ///< loads unchanged since the previous step: its solution reused
 };

@@ -190,8 +190,9 @@ void FractureSystem::solve(const Eigen::VectorXd& j, bool withLoads, Eigen::Vect
   FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before solving");
   const Eigen::VectorXd Bj = B_ * j;
   if (withLoads) {
-    const Eigen::VectorXd rhs = reduced_->rhs(Eigen::VectorXd(loadUnsplit_ - Bj), *dirichlet_);
-    x_ = reduced_->expand(factor_->solve(rhs), *dirichlet_);
+    lastRhs_ = reduced_->rhs(Eigen::VectorXd(loadUnsplit_ - Bj), *dirichlet_);
+    lastFree_ = factor_->solve(lastRhs_);
+    x_ = reduced_->expand(lastFree_, *dirichlet_);
   } else {
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dirichlet_->numFixed());
     const Eigen::VectorXd rhs = reduced_->rhs(Eigen::VectorXd(-Bj), zero);
@@ -239,6 +240,13 @@ void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
     sigmaNDual->resize(n);
     for (Index k = 0; k < n; ++k) (*sigmaNDual)[k] = sigma.segment<2>(2 * k).dot(nodes_[k].normal);
   }
+}
+
+double FractureSystem::equilibriumResidual() const {
+  if (lastRhs_.size() == 0) return 0;
+  const double scale = lastRhs_.norm();
+  const double r = (reduced_->matrix() * lastFree_ - lastRhs_).norm();
+  return scale > 0 ? r / scale : r;
 }
 
 Eigen::VectorXd FractureSystem::lastSplitDisplacement() const { return P_ * x_ + L_ * lastJump_; }

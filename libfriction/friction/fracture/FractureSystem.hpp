@@ -83,6 +83,9 @@ class FractureSystem : public SlipResponse {
   void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
             Eigen::VectorXd* sigmaNDual = nullptr) override;
 
+  /// ‖K_ff x_f − b‖ / ‖b‖ of the last primal solve: how well the discrete equilibrium holds
+  /// (round-off of the factorisation; large values flag an ill-conditioned problem).
+  double equilibriumResidual() const;
   /// The split displacement [m] of the last primal solve (all split-space dofs).
   Eigen::VectorXd lastSplitDisplacement() const;
   /// The unsplit dofs x of the last primal solve (for tests: equal to the unsplit linear
@@ -112,7 +115,7 @@ class FractureSystem : public SlipResponse {
   Eigen::SparseMatrix<double> Tf_;  ///< Σ from f_split: −W⁻¹ (E⁺ − E⁻)/2 (row selection)
 
   Eigen::VectorXd loadUnsplit_, sigmaLoad_, slip_;
-  Eigen::VectorXd x_, lastJump_;
+  Eigen::VectorXd x_, lastJump_, lastRhs_, lastFree_;
   Eigen::VectorXd offsetSigmaN_, offsetTau_;
   int numAssemblies_ = 0;
 };
