@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "friction/core/InputError.hpp"
+#include "friction/core/AtomicFile.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 
 namespace friction {
@@ -27,15 +27,13 @@ void writeDisplacementField(const std::string& path, const std::vector<Vector2>&
 
 void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,
                         const std::string& statusLine, int precision) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path, "cannot write the fracture table (expected a writable folder)");
+  std::ostringstream out;
   out.precision(precision);
   out << "# s x y slip slipIncrement sigmaN tau ST D state\n# " << statusLine << "\n";
   for (const FractureRow& r : rows)
     out << r.s << " " << r.x << " " << r.y << " " << r.slip << " " << r.slipIncrement << " "
         << r.sigmaN << " " << r.tau << " " << r.ST << " " << r.D << " " << r.state << "\n";
-  out.flush();
-  if (!out) throw InputError(path, "writing the fracture table failed (disk full?)");
+  writeTextAtomic(path, out.str());
 }
 
 }  // namespace friction

@@ -1,0 +1,411 @@
+// Bad input, one mistake at a time, through the real binaries (splitFractureNodes and
+// frictionSolver) on copies of the cases: every user-facing error path must exit non-zero,
+// name the file (and the line, where there is one), the key or item, and what was expected,
+// and leave the case folder exactly as it was (STYLE.md "Errors and numbers"). The line
+// numbers are computed from the edited file, never written down, so a reformatted case
+// cannot make a check pass by accident or fail for no reason.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "CaseRunner.hpp"
+
+using namespace friction::regression;
+
+namespace {
+
+/// Every file and folder under dir (relative paths), except the logs a run writes.
+std::set<std::string> snapshot(const fs::path& dir) {
+  std::set<std::string> s;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string rel = fs::relative(e.path(), dir).string();
+    if (rel.rfind("log.", 0) == 0) continue;
+    s.insert(rel);
+  }
+  return s;
+}
+
+/// 1-based number of the first line of dir/file containing text (0 if none).
+int lineOf(const fs::path& file, const std::string& text) {
+  std::ifstream in(file);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (line.find(text) != std::string::npos) return n;
+  return 0;
+}
+
+std::string bin(const std::string& tool) { return (fs::path(FRICTION_BIN_DIR) / tool).string(); }
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+/// Split the case; the scenario's mistake is elsewhere, so this must work.
+void split(const Case& c) {
+  const int rc = run(bin("splitFractureNodes") + " -case " + quoted(c.dir()),
+                     c.dir() / "log.splitFractureNodes");
+  INFO(readText(c.dir() / "log.splitFractureNodes"));
+  REQUIRE(rc == 0);
+}
+
+/// Run `tool args` in the case, expect exit status rc, every text of `expected` in its output
+/// and no file created, removed or renamed in the case (logs aside). Returns the output.
+std::string expectFailure(const Case& c, const std::string& tool, const std::string& args,
+                          int rc, const std::vector<std::string>& expected) {
+  const auto before = snapshot(c.dir());
+  const fs::path log = c.dir() / ("log." + tool);
+  const int status = run(bin(tool) + " " + args, log);
+  const std::string out = readText(log);
+  INFO(out);
+  CHECK(status == rc);
+  for (const std::string& e : expected) CHECK_THAT(out, Catch::Contains(e));
+  CHECK(snapshot(c.dir()) == before);
+  return out;
+}
+
+/// The usual shape: frictionSolver on a split case must fail with exit status 1.
+void solverFails(const Case& c, const std::vector<std::string>& expected) {
+  expectFailure(c, "frictionSolver", "-case " + quoted(c.dir()), 1, expected);
+}
+
+std::string at(const std::string& file, int line) {
+  REQUIRE(line > 0);  // the edit's text must be found, or the line check checks nothing
+  return file + ":" + std::to_string(line) + ":";
+}
+
+}  // namespace
+
+TEST_CASE("bad command lines and case folders are refused with exit status 1 or 2",
+          "[regression][errors]") {
+  Case c("paperBenchmark", "bad-commandLine");
+
+  SECTION("unknown option of frictionSolver") {
+    split(c);
+    expectFailure(c, "frictionSolver", "-case " + quoted(c.dir()) + " -bogusOption", 2,
+                  {"bogusOption", "-help"});
+  }
+  SECTION("unknown option of splitFractureNodes") {
+    expectFailure(c, "splitFractureNodes", "-case " + quoted(c.dir()) + " -bogusOption", 2,
+                  {"bogusOption", "-help"});
+  }
+  SECTION("-case without its value") {
+    expectFailure(c, "frictionSolver", "-case", 2, {"case"});
+  }
+  SECTION("frictionSolver on a case folder that does not exist") {
+    const fs::path missing = c.dir() / "noSuchCase";
+    expectFailure(c, "frictionSolver", "-case " + quoted(missing), 1,
+                  {"noSuchCase", "system/controlDict", "cannot open"});
+    CHECK_FALSE(fs::exists(missing));
+  }
+  SECTION("splitFractureNodes on a case folder that does not exist") {
+    const fs::path missing = c.dir() / "noSuchCase";
+    expectFailure(c, "splitFractureNodes", "-case " + quoted(missing), 1,
+                  {"noSuchCase", "system/meshDict", "cannot open"});
+    CHECK_FALSE(fs::exists(missing));
+  }
+  SECTION("frictionSolver with -case naming a file") {
+    split(c);
+    expectFailure(c, "frictionSolver", "-case " + quoted(c.dir() / "system" / "controlDict"), 1,
+                  {"system/controlDict", "cannot open"});
+  }
+  SECTION("splitFractureNodes with -case naming a file") {
+    expectFailure(c, "splitFractureNodes", "-case " + quoted(c.dir() / "system" / "meshDict"), 1,
+                  {"system/meshDict", "cannot open"});
+  }
+}
+
+TEST_CASE("a missing dictionary or split mesh is named with what the case needs",
+          "[regression][errors]") {
+  for (const char* file : {"system/controlDict", "system/frictionSolution",
+                           "constant/mechanicalProperties", "constant/fractureProperties", "0/D"}) {
+    DYNAMIC_SECTION("missing " << file) {
+      Case c("paperBenchmark", std::string("bad-missing-") + fs::path(file).filename().string());
+      split(c);
+      fs::remove(c.dir() / file);
+      solverFails(c, {file, "cannot open"});
+    }
+  }
+  SECTION("no constant/splitMesh") {
+    Case c("paperBenchmark", "bad-missing-splitMesh");
+    solverFails(c, {"constant/splitMesh", "run splitFractureNodes"});
+  }
+  SECTION("system/meshDict missing") {
+    Case c("paperBenchmark", "bad-missing-meshDict");
+    fs::remove(c.dir() / "system/meshDict");
+    expectFailure(c, "splitFractureNodes", "-case " + quoted(c.dir()), 1,
+                  {"system/meshDict", "cannot open"});
+  }
+}
+
+TEST_CASE("bad meshDict entries name file, line, key and what was expected",
+          "[regression][errors]") {
+  Case c("paperBenchmark", "bad-meshDict");
+  const fs::path dict = c.dir() / "system/meshDict";
+  const std::string args = "-case " + quoted(c.dir());
+
+  SECTION("mesh file that does not exist") {
+    c.edit("system/meshDict", "square\\.msh", "squar.msh");
+    expectFailure(c, "splitFractureNodes", args, 1,
+                  {at("system/meshDict", lineOf(dict, "squar.msh")), "mesh", "squar.msh",
+                   "does not exist"});
+  }
+  SECTION("patch label absent from the mesh") {
+    c.edit("system/meshDict", "left +4;", "left 44;");
+    expectFailure(c, "splitFractureNodes", args, 1,
+                  {at("system/meshDict", lineOf(dict, "left 44;")), "left", "44"});
+  }
+  SECTION("negative patch label") {
+    c.edit("system/meshDict", "left +4;", "left -4;");
+    expectFailure(c, "splitFractureNodes", args, 1,
+                  {at("system/meshDict", lineOf(dict, "left -4;")), "left", ">= 0"});
+  }
+  SECTION("a fracture listed twice") {
+    c.edit("system/meshDict", "\\(fracture\\)", "(fracture fracture)");
+    expectFailure(c, "splitFractureNodes", args, 1,
+                  {at("system/meshDict", lineOf(dict, "(fracture fracture)")), "fractures",
+                   "listed twice"});
+  }
+}
+
+TEST_CASE("bad controlDict entries name file, line, key and what was expected",
+          "[regression][errors]") {
+  struct Bad {
+    const char* label;
+    const char* pattern;
+    const char* replacement;
+    const char* lineText;  // text of the edited line, to find its number
+    std::vector<std::string> expected;
+  };
+  const std::vector<Bad> cases = {
+      {"endBeforeStart", "endTime +1;", "endTime 0;", "endTime 0;",
+       {"endTime", "after startTime"}},
+      {"zeroDeltaT", "deltaT +1;", "deltaT 0;", "deltaT 0;", {"deltaT", "> 0"}},
+      {"fractionalInterval", "writeInterval +1;", "writeInterval 1.5;", "writeInterval 1.5;",
+       {"writeInterval", "whole number"}},
+      {"unknownStopAt", "stopAt +endTime;", "stopAt end;", "stopAt end;",
+       {"stopAt", "endTime, writeNow, noWriteNow, nextWrite"}},
+      {"unknownStartFrom", "startFrom +startTime;", "startFrom latest;", "startFrom latest;",
+       {"startFrom", "startTime, latestTime"}},
+      {"unknownWriteControl", "writeControl +timeStep;", "writeControl clockTime;",
+       "writeControl clockTime;", {"writeControl", "timeStep, runTime"}},
+      {"precisionTooLarge", "writePrecision +10;", "writePrecision 40;", "writePrecision 40;",
+       {"writePrecision", "40", "17"}},
+      {"endTimeNotANumber", "endTime +1;", "endTime one;", "endTime one;", {"endTime", "one"}},
+      {"typoKey", "deltaT +1;", "deltaT 1; writeVtk no;", "writeVtk",
+       {"writeVtk", "did you mean 'writeVTK'"}},
+  };
+  for (const Bad& b : cases) {
+    DYNAMIC_SECTION(b.label) {
+      Case c("paperBenchmark", std::string("bad-controlDict-") + b.label);
+      split(c);
+      c.edit("system/controlDict", b.pattern, b.replacement);
+      std::vector<std::string> expected = b.expected;
+      expected.push_back(at("system/controlDict", lineOf(c.dir() / "system/controlDict", b.lineText)));
+      solverFails(c, expected);
+    }
+  }
+}
+
+TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties entries are named",
+          "[regression][errors]") {
+  struct Bad {
+    const char* label;
+    const char* file;
+    const char* pattern;
+    const char* replacement;
+    const char* lineText;
+    std::vector<std::string> expected;
+  };
+  const std::vector<Bad> cases = {
+      {"unknownLinearSolver", "system/frictionSolution", "linearSolver +cholmod;",
+       "linearSolver lu;", "linearSolver lu;", {"linearSolver", "lu", "cholmod, simplicialLDLT"}},
+      {"unknownGradient", "system/frictionSolution", "gradient +exact;", "gradient adjoint;",
+       "gradient adjoint;", {"gradient", "adjoint", "exact, frozenRho"}},
+      {"negativeGamma", "system/frictionSolution", "gamma +2;", "gamma -2;", "gamma -2;",
+       {"gamma", "> 0"}},
+      {"negativeZeta", "system/frictionSolution", "zeta +0;", "zeta -1;", "zeta -1;",
+       {"zeta", ">= 0"}},
+      {"unknownStopOn", "system/frictionSolution", "maxIterations +100;",
+       "maxIterations 100; stopOn slip;", "stopOn slip;", {"stopOn", "residual, step"}},
+      {"zeroTolerance", "system/frictionSolution", "tolerance +1e-10;", "tolerance 0;",
+       "tolerance 0;", {"tolerance", "> 0"}},
+      {"negativeMaxIterations", "system/frictionSolution", "maxIterations +100;",
+       "maxIterations -1;", "maxIterations -1;", {"maxIterations", "-1"}},
+      {"armijoCOutOfRange", "system/frictionSolution", "type +semismoothNewton;",
+       "type armijo; armijoC 2;", "armijoC 2;", {"armijoC", "(0, 1)"}},
+      {"negativeMu", "constant/mechanicalProperties", "mu +1;", "mu -1;", "mu -1;",
+       {"mu", "> 0"}},
+      {"negativeBulkModulus", "constant/mechanicalProperties", "lambda +1;", "lambda -1;",
+       "lambda -1;", {"lambda", "λ + 2μ/3 > 0"}},
+      {"negativeFrictionCoefficient", "constant/fractureProperties", "frictionCoefficient +0.2;",
+       "frictionCoefficient -0.2;", "frictionCoefficient -0.2;",
+       {"frictionCoefficient", ">= 0"}},
+      {"trescaWithoutThreshold", "constant/fractureProperties", "law +coulomb;", "law tresca;",
+       "frictionCoefficient", {"frictionCoefficient", "threshold"}},
+      {"unknownFractureEntry", "constant/fractureProperties", "\\nfracture\\n", "\nfractur\n",
+       "fractur", {"fractur", "did you mean 'fracture'"}},
+  };
+  for (const Bad& b : cases) {
+    DYNAMIC_SECTION(b.label) {
+      Case c("paperBenchmark", std::string("bad-settings-") + b.label);
+      split(c);
+      c.edit(b.file, b.pattern, b.replacement);
+      std::vector<std::string> expected = b.expected;
+      // A key the law does not read is reported where it is; a missing key where its
+      // dictionary starts: either way a line of the file.
+      if (std::string(b.label) != "trescaWithoutThreshold")
+        expected.push_back(at(b.file, lineOf(c.dir() / b.file, b.lineText)));
+      else
+        expected.push_back(std::string(b.file) + ":");
+      solverFails(c, expected);
+    }
+  }
+  SECTION("no entry for a fracture of the mesh") {
+    Case c("paperBenchmark", "bad-settings-noFractureEntry");
+    split(c);
+    c.edit("constant/fractureProperties", "\\nfracture\\n\\{[^}]*\\}", "\n");
+    solverFails(c, {"constant/fractureProperties", "fracture", "law"});
+  }
+}
+
+TEST_CASE("bad boundary conditions in 0/D name file, line, patch and what was expected",
+          "[regression][errors]") {
+  Case c("paperBenchmark", "bad-D");
+  split(c);
+  const fs::path D = c.dir() / "0/D";
+
+  SECTION("a boundary patch missing") {
+    c.edit("0/D", "left +\\{ type free; \\}", "");
+    solverFails(c, {"0/D:", "left", "no entry", "type free"});
+  }
+  SECTION("unknown boundary condition type") {
+    c.edit("0/D", "left +\\{ type free; \\}", "left { type slip; }");
+    solverFails(c, {at("0/D", lineOf(D, "type slip;")), "slip",
+                    "fixedDisplacement, traction, pressure, free"});
+  }
+  SECTION("fixedDisplacement with bad components") {
+    c.edit("0/D", "bottom +\\{ type fixedDisplacement; value \\(0 0\\); \\}",
+           "bottom { type fixedDisplacement; value (0 0); components (z); }");
+    solverFails(c, {at("0/D", lineOf(D, "components (z)")), "components", "(x), (y) or (x y)"});
+  }
+  SECTION("fixedDisplacement with a component twice") {
+    c.edit("0/D", "bottom +\\{ type fixedDisplacement; value \\(0 0\\); \\}",
+           "bottom { type fixedDisplacement; value (0 0); components (x x); }");
+    solverFails(c, {at("0/D", lineOf(D, "components (x x)")), "components", "(x), (y) or (x y)"});
+  }
+  SECTION("fixedDisplacement value with one component") {
+    c.edit("0/D", "value +\\(0 0\\);", "value (0);");
+    solverFails(c, {at("0/D", lineOf(D, "value (0);")), "value", "(x y)"});
+  }
+  SECTION("table with decreasing times") {
+    c.edit("0/D", "table \\(\\(0 \\(0 0\\)\\) \\(1 ", "table ((1 (0 0)) (0 ");
+    solverFails(c, {at("0/D", lineOf(D, "table ((1 (0 0)) (0 ")), "value", "increasing"});
+  }
+  SECTION("table rows of the wrong size") {
+    c.edit("0/D", "table \\(\\(0 \\(0 0\\)\\) \\(1 \\(-0.02 -0.025\\)\\)\\)",
+           "table ((0 0) (1 -0.02))");
+    solverFails(c, {at("0/D", lineOf(D, "table ((0 0) (1 -0.02))")), "value", "(x y)"});
+  }
+  SECTION("no boundaryField") {
+    c.edit("0/D", "boundaryField", "boundaryFields");
+    solverFails(c, {"0/D", "boundaryField"});
+  }
+}
+
+TEST_CASE("bad constant/effects entries name file, line, key and the valid choices",
+          "[regression][errors]") {
+  Case c("paperBenchmark", "bad-effects");
+  split(c);
+  const fs::path effects = c.dir() / "constant/effects";
+  auto write = [&](const std::string& body) { writeText(effects, body); };
+
+  SECTION("unknown effect type lists the valid types") {
+    write("gravity\n{\n    type gravitation;\n}\n");
+    solverFails(c, {at("constant/effects", 3), "type", "gravitation",
+                    "bodyForce, initialStress, fracturePressure"});
+  }
+  SECTION("an entry that is not a dictionary lists the valid types") {
+    write("\ngravity 9.81;\n");
+    solverFails(c, {at("constant/effects", 2), "gravity", "bodyForce, initialStress, fracturePressure"});
+  }
+  SECTION("fracturePressure on a fracture that does not exist suggests the nearest") {
+    write("pore\n{\n    type fracturePressure;\n    fracture fractur;\n    pressure 1;\n}\n");
+    solverFails(c, {at("constant/effects", 4), "fracture", "fractur", "did you mean 'fracture'"});
+  }
+  SECTION("fracturePressure values file with a malformed line") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
+    writeText(c.dir() / "constant/pressure.dat", "# s p\n0 1\n0.5 one\n1 3\n");
+    solverFails(c, {"constant/pressure.dat:3:", "0.5 one", "s p"});
+  }
+  SECTION("fracturePressure values file with decreasing arclength") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
+    writeText(c.dir() / "constant/pressure.dat", "0 1\n0.5 2\n0.25 3\n");
+    solverFails(c, {"constant/pressure.dat:3:", "increasing"});
+  }
+  SECTION("fracturePressure values file that does not exist") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant/nothing.dat\"; }\n");
+    solverFails(c, {at("constant/effects", 1), "values", "nothing.dat", "cannot open"});
+  }
+  SECTION("fracturePressure values file without values") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
+    writeText(c.dir() / "constant/pressure.dat", "# nothing yet\n");
+    solverFails(c, {"constant/pressure.dat", "no values", "s p"});
+  }
+  SECTION("initialStress with two components") {
+    write("inSitu\n{\n    type initialStress;\n    stress (0 -1e7);\n}\n");
+    solverFails(c, {at("constant/effects", 4), "stress", "(sxx syy sxy)"});
+  }
+  SECTION("initialStress gradient with two components") {
+    write("inSitu { type initialStress; stress (0 -1e7 0);\n gradient (0 1); }\n");
+    solverFails(c, {at("constant/effects", 2), "gradient", "(dsxx/dy dsyy/dy dsxy/dy)"});
+  }
+  SECTION("bodyForce with a negative density") {
+    write("gravity { type bodyForce; density -1; g (0 -9.81); }\n");
+    solverFails(c, {at("constant/effects", 1), "density", "> 0"});
+  }
+  SECTION("fracturePressure table of vectors") {
+    write("pore { type fracturePressure; fracture fracture;\n"
+          "       pressure table ((0 (0 0)) (1 (1 1))); }\n");
+    solverFails(c, {at("constant/effects", 2), "pressure", "a number"});
+  }
+}
+
+TEST_CASE("a damaged split mesh is refused with file, line and key", "[regression][errors]") {
+  Case c("paperBenchmark", "bad-splitMesh");
+  split(c);
+  const fs::path splitMesh = c.dir() / "constant/splitMesh";
+
+  SECTION("an unknown node kind") {
+    c.edit("constant/splitMesh", "\\binterior\\b", "inner");
+    solverFails(c, {at("constant/splitMesh", lineOf(splitMesh, "inner")), "kind", "inner",
+                    "interior"});
+  }
+  SECTION("a triangle with a node number out of range") {
+    c.edit("constant/splitMesh", "triangles\\s*\\n?\\s*(\\d+)\\s*\\n?\\s*\\(\\s*\\(\\d+",
+           "triangles\n$1\n(\n(999999");
+    solverFails(c, {"constant/splitMesh:", "triangles", "999999"});
+  }
+}
+
+TEST_CASE("startFrom latestTime with a state of another size is refused before any step",
+          "[regression][errors]") {
+  Case c("paperBenchmark", "bad-restartState");
+  split(c);
+  {
+    const fs::path log = c.dir() / "log.frictionSolver.first";
+    const int rc = run(bin("frictionSolver") + " -case " + quoted(c.dir()), log);
+    INFO(readText(log));
+    REQUIRE(rc == 0);
+  }
+  REQUIRE(fs::exists(c.dir() / "1/uniform/frictionState"));
+  c.edit("system/controlDict", "startFrom +startTime;", "startFrom latestTime;");
+  c.edit("system/controlDict", "endTime +1;", "endTime 2;");
+  // Drop the first value of the slip list (its size prefix goes too, so the list parses).
+  c.edit("1/uniform/frictionState", "slip\\s*\\n?\\s*\\d*\\s*\\n?\\s*\\(\\s*[^\\s)]+", "slip\n(");
+  const fs::path state = c.dir() / "1/uniform/frictionState";
+  solverFails(c, {at("1/uniform/frictionState", lineOf(state, "slip")), "slip",
+                  "expected one per fracture node"});
+  CHECK_FALSE(fs::exists(c.dir() / "2"));
+}
