@@ -35,7 +35,7 @@ for target in fuzzDictionary fuzzMesh; do
   (cd "$work" && "$build/$target" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
        -print_final_stats=1 -artifact_prefix="$work/artifacts/" corpus) > "$work/log" 2>&1
   rc=$?
-  grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb)" "$work/log"
+  grep -E "^(Done [0-9]+ runs|stat::average_exec_per_sec|stat::peak_rss_mb)" "$work/log"
   findings=$(ls "$work/artifacts")
   if [ "$rc" -ne 0 ] || [ -n "$findings" ]; then
     status=1

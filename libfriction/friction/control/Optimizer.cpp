@@ -1,6 +1,7 @@
 // Optimizers of the control problem (METHOD.md §5) and their selection table.
 #include "friction/control/Optimizer.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/LU>
@@ -39,6 +40,16 @@ const OptimizerEntry optimizerTable[] = {
        return std::make_unique<Armijo>(d.getScalarOr("alpha", 1.0, Bounds::positive()),
                                        d.getScalarOr("armijoC", 1e-4, {0, 1, true, true}),
                                        static_cast<int>(d.getIntOr("maxBacktracks", 60, {1, 200})));
+     }},
+    {"barzilaiBorwein",
+     [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
+       return std::make_unique<BarzilaiBorwein>(d.getScalarOr("alpha", 2e-4, Bounds::positive()));
+     }},
+    {"lbfgs",
+     [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
+       return std::make_unique<Lbfgs>(static_cast<int>(d.getIntOr("memory", 10, {1, 100})),
+                                      d.getScalarOr("alpha", 2e-4, Bounds::positive()),
+                                      static_cast<int>(d.getIntOr("maxBacktracks", 60, {1, 200})));
      }},
     {"semismoothNewton",
      [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
@@ -150,6 +161,128 @@ OptimizerReport Armijo::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
     }
     r.history.push_back(record(p, s, k, lastStep));
     alpha *= 2;  // let the step grow back after a backtrack
+  }
+  if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
+  beta = s.beta;
+  return r;
+}
+
+OptimizerReport BarzilaiBorwein::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
+  // BB steps with a non-monotone safeguard (Grippo–Lampariello–Lucidi): a step is accepted
+  // when J falls below the largest of the last 10 values by c α ‖g‖²; otherwise α is halved.
+  // J is only piecewise smooth, where pure BB steps may cycle; the safeguard keeps the
+  // method's speed on smooth stretches and makes it converge on kinks.
+  OptimizerReport r;
+  ControlState s = p.evaluate(beta);
+  r.history.push_back(record(p, s, 0, -1));
+  Eigen::VectorXd g = p.gradient(s), gOld, betaOld;
+  std::vector<double> recent{s.J};
+  double alpha = alpha0_, lastStep = -1;
+  for (int k = 1; k <= stop_.maxIterations; ++k) {
+    if (converged(p, s, lastStep)) {
+      r.status = OptimizerStatus::converged;
+      break;
+    }
+    if (k > 1) {
+      const Eigen::VectorXd sv = s.beta - betaOld, y = g - gOld;
+      const double sy = p.dot(sv, y);
+      alpha = sy > 0 ? p.dot(sv, sv) / sy : alpha0_;
+    }
+    const double g2 = p.dot(g, g);
+    const double reference = *std::max_element(recent.begin(), recent.end());
+    bool accepted = false;
+    for (int b = 0; b < 60; ++b, alpha *= 0.5) {
+      ControlState trial = p.evaluate(s.beta - alpha * g);
+      if (std::isfinite(trial.J) && trial.J <= reference - 1e-4 * alpha * g2) {
+        betaOld = s.beta;
+        gOld = g;
+        s = std::move(trial);
+        accepted = true;
+        break;
+      }
+    }
+    r.iterations = k;
+    if (!accepted) {
+      r.history.push_back(record(p, s, k, 0));
+      r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
+      beta = s.beta;
+      return r;
+    }
+    lastStep = p.norm(s.beta - betaOld);
+    r.history.push_back(record(p, s, k, lastStep));
+    recent.push_back(s.J);
+    if (recent.size() > 10) recent.erase(recent.begin());
+    g = p.gradient(s);
+  }
+  if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
+  beta = s.beta;
+  return r;
+}
+
+OptimizerReport Lbfgs::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
+  OptimizerReport r;
+  ControlState s = p.evaluate(beta);
+  r.history.push_back(record(p, s, 0, -1));
+  Eigen::VectorXd g = p.gradient(s);
+  std::vector<Eigen::VectorXd> S, Y;
+  std::vector<double> rho;
+  double lastStep = -1;
+  for (int k = 1; k <= stop_.maxIterations; ++k) {
+    if (converged(p, s, lastStep)) {
+      r.status = OptimizerStatus::converged;
+      break;
+    }
+    // Two-loop recursion in the M inner product.
+    Eigen::VectorXd q = g;
+    std::vector<double> a(S.size());
+    for (int i = static_cast<int>(S.size()) - 1; i >= 0; --i) {
+      a[i] = rho[i] * p.dot(S[i], q);
+      q -= a[i] * Y[i];
+    }
+    double scale = alpha0_;
+    if (!S.empty()) scale = p.dot(S.back(), Y.back()) / p.dot(Y.back(), Y.back());
+    Eigen::VectorXd d = scale * q;
+    for (std::size_t i = 0; i < S.size(); ++i) {
+      const double b = rho[i] * p.dot(Y[i], d);
+      d += (a[i] - b) * S[i];
+    }
+    d = -d;
+    double slope = p.dot(g, d);
+    if (!(slope < 0)) {  // not a descent direction (a kink, or stale pairs): restart
+      d = -alpha0_ * g;
+      slope = p.dot(g, d);
+      S.clear(), Y.clear(), rho.clear();
+    }
+    if (slope == 0) {
+      r.status = OptimizerStatus::stalled;
+      break;
+    }
+    double t = 1;
+    bool accepted = false;
+    for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
+      ControlState trial = p.evaluate(s.beta + t * d);
+      if (std::isfinite(trial.J) && trial.J <= s.J + 1e-4 * t * slope) {
+        const Eigen::VectorXd gNew = p.gradient(trial);
+        const Eigen::VectorXd sv = trial.beta - s.beta, y = gNew - g;
+        const double sy = p.dot(sv, y);
+        if (sy > 1e-14 * p.norm(sv) * p.norm(y)) {  // keep the curvature pairs positive
+          S.push_back(sv), Y.push_back(y), rho.push_back(1 / sy);
+          if (static_cast<int>(S.size()) > memory_) S.erase(S.begin()), Y.erase(Y.begin()), rho.erase(rho.begin());
+        }
+        lastStep = p.norm(sv);
+        s = std::move(trial);
+        g = gNew;
+        accepted = true;
+        break;
+      }
+    }
+    r.iterations = k;
+    r.history.push_back(record(p, s, k, accepted ? lastStep : 0));
+    if (!accepted) {
+      r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
+      beta = s.beta;
+      return r;
+    }
   }
   if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
   beta = s.beta;

@@ -94,6 +94,36 @@ class Armijo : public Optimizer {
   int maxBacktracks_;
 };
 
+/// [beyond] Barzilai–Borwein steepest descent on J: β ← β − α_k g with the BB1 step
+/// α_k = ⟨s, s⟩_M / ⟨s, y⟩_M (s, y the last changes of β and g), safeguarded by a
+/// non-monotone line search (J may rise above the previous value, never above the largest of
+/// the last ten); a non-positive curvature ⟨s, y⟩ falls back to the first step α0.
+class BarzilaiBorwein : public Optimizer {
+ public:
+  explicit BarzilaiBorwein(double alpha0) : alpha0_(alpha0) {}
+  OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
+  std::string name() const override { return "barzilaiBorwein"; }
+
+ private:
+  double alpha0_;
+};
+
+/// [beyond] L-BFGS on J in the M inner product, with backtracking (Armijo) on J along the
+/// quasi-Newton direction; 'memory' pairs (default 10). A direction that is not a descent
+/// direction is replaced by −g.
+class Lbfgs : public Optimizer {
+ public:
+  Lbfgs(int memory, double alpha0, int maxBacktracks)
+      : memory_(memory), alpha0_(alpha0), maxBacktracks_(maxBacktracks) {}
+  OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
+  std::string name() const override { return "lbfgs"; }
+
+ private:
+  int memory_;
+  double alpha0_;
+  int maxBacktracks_;
+};
+
 /// [beyond] Semismooth Newton on D(β) = 0 (METHOD.md §5), condensed variant: the interface
 /// operators S_tt and S_nt are assembled densely once per run (one dual solve per fracture
 /// node, reused by every step, since they depend only on the mesh and the Dirichlet
