@@ -345,3 +345,18 @@ TEST_CASE("ParaView files read by VTK hold the solver's own table values", "[reg
   INFO(readText(c.dir() / "log.vtk"));
   CHECK(rc == 0);
 }
+
+TEST_CASE("matrix-free Newton gives the condensed Newton's slip", "[regression][optimizer]") {
+  Case a("paperBenchmark", "paperBenchmark-condensed");
+  REQUIRE(a.solve() == 0);
+  Case b("paperBenchmark", "paperBenchmark-krylov");
+  b.edit("system/frictionSolution", "type +semismoothNewton;", "type semismoothNewton; variant krylov;");
+  const int rc = b.solve();
+  INFO(b.log());
+  REQUIRE(rc == 0);
+  const auto x = a.table("1", "fracture"), y = b.table("1", "fracture");
+  double m = 0;
+  for (const Row& r : x) m = std::max(m, std::abs(r.slip));
+  // Both converge to ‖D‖ ≤ 1e-10 ‖Σ‖; the slips agree to that times the condition of S.
+  for (std::size_t i = 0; i < x.size(); ++i) CHECK(std::abs(x[i].slip - y[i].slip) <= 1e-6 * m);
+}

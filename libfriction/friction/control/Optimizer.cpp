@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <Eigen/LU>
 
@@ -54,7 +55,10 @@ const OptimizerEntry optimizerTable[] = {
     {"semismoothNewton",
      [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
        return std::make_unique<SemismoothNewton>(
-           static_cast<int>(d.getIntOr("maxBacktracks", 30, {1, 200})));
+           static_cast<int>(d.getIntOr("maxBacktracks", 30, {1, 200})),
+           d.getChoiceOr("variant", {"condensed", "krylov"}, "condensed") == "krylov"
+               ? SemismoothNewton::Variant::krylov
+               : SemismoothNewton::Variant::condensed);
      }},
 };
 
@@ -289,7 +293,67 @@ OptimizerReport Lbfgs::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
   return r;
 }
 
+namespace {
+
+// Restarted GMRES for a small nonsymmetric system A x = b given by its action; x starts at 0.
+// Stops at ‖b − A x‖ ≤ tol ‖b‖ or after maxProducts products.
+Eigen::VectorXd gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& A,
+                      const Eigen::VectorXd& b, double tol, int maxProducts, int restart = 60) {
+  const Eigen::Index n = b.size();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  const double bnorm = b.norm();
+  if (bnorm == 0) return x;
+  int products = 0;
+  while (products < maxProducts) {
+    const Eigen::VectorXd r0 = b - (products ? A(x) : Eigen::VectorXd::Zero(n));
+    if (products) ++products;
+    const Eigen::VectorXd r = products ? r0 : b;
+    const double beta0 = r.norm();
+    if (beta0 <= tol * bnorm) break;
+    const int m = std::min<int>(restart, static_cast<int>(n));
+    Eigen::MatrixXd V(n, m + 1), H = Eigen::MatrixXd::Zero(m + 1, m);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(m + 1), cs(m), sn(m);
+    V.col(0) = r / beta0;
+    g[0] = beta0;
+    int k = 0;
+    for (; k < m && products < maxProducts; ++k) {
+      Eigen::VectorXd w = A(V.col(k));
+      ++products;
+      for (int i = 0; i <= k; ++i) {  // modified Gram–Schmidt
+        H(i, k) = w.dot(V.col(i));
+        w -= H(i, k) * V.col(i);
+      }
+      H(k + 1, k) = w.norm();
+      if (H(k + 1, k) > 0) V.col(k + 1) = w / H(k + 1, k);
+      for (int i = 0; i < k; ++i) {  // apply the earlier rotations
+        const double t = cs[i] * H(i, k) + sn[i] * H(i + 1, k);
+        H(i + 1, k) = -sn[i] * H(i, k) + cs[i] * H(i + 1, k);
+        H(i, k) = t;
+      }
+      const double d = std::hypot(H(k, k), H(k + 1, k));
+      cs[k] = d > 0 ? H(k, k) / d : 1;
+      sn[k] = d > 0 ? H(k + 1, k) / d : 0;
+      H(k, k) = d;
+      H(k + 1, k) = 0;
+      g[k + 1] = -sn[k] * g[k];
+      g[k] = cs[k] * g[k];
+      if (std::abs(g[k + 1]) <= tol * bnorm || H(k, k) == 0) {
+        ++k;
+        break;
+      }
+    }
+    const Eigen::VectorXd y =
+        H.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
+    x += V.leftCols(k) * y;
+    if (std::abs(g[k]) <= tol * bnorm) break;
+  }
+  return x;
+}
+
+}  // namespace
+
 OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
+  if (variant_ == Variant::krylov) return minimizeKrylov(p, beta);
   SlipResponse& resp = p.response();
   const Eigen::Index n = p.size();
   const Eigen::VectorXd& mask = resp.freeMask();
@@ -368,6 +432,92 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
     bool accepted = false;
     for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
       ControlState trial = stateAt(s.beta + t * dir);
+      if (0.5 * p.dot(trial.D, trial.D) <= (1 - 1e-4 * t) * merit) {
+        lastStep = p.norm(trial.beta - s.beta);
+        std::vector<SlipState> now;
+        for (const auto& c : trial.node) now.push_back(c.state);
+        if (!states.empty() && now != states) ++activeSetChanges_;
+        states = std::move(now);
+        s = std::move(trial);
+        accepted = true;
+        break;
+      }
+    }
+    r.iterations = k;
+    r.history.push_back(record(p, s, k, accepted ? lastStep : 0));
+    if (!accepted) {
+      r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
+      beta = s.beta;
+      return r;
+    }
+  }
+  if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
+  beta = s.beta;
+  return r;
+}
+
+OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::VectorXd& beta) {
+  SlipResponse& resp = p.response();
+  const Eigen::Index n = p.size();
+  const Eigen::VectorXd& mask = resp.freeMask();
+  OptimizerReport r;
+  activeSetChanges_ = 0;
+  ControlState s = p.evaluate(beta);
+  r.history.push_back(record(p, s, 0, -1));
+  double lastStep = -1;
+  std::vector<SlipState> states;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  for (int k = 1; k <= stop_.maxIterations; ++k) {
+    if (converged(p, s, lastStep)) {
+      r.status = OptimizerStatus::converged;
+      break;
+    }
+    // G v on the free nodes: one dual solve gives S_tt v and S_nt v.
+    auto applyG = [&](const Eigen::VectorXd& v) {
+      Eigen::VectorXd t, sn;
+      resp.dual(v, zero, t, &sn);
+      Eigen::VectorXd out(n);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const NodeComplementarity& c = s.node[i];
+        out[i] = mask[i] == 0 ? 0.0
+                              : (1 - c.dPdN) * t[i] + p.mu()[i] * c.dPdRho * sn[i] +
+                                    p.gamma() * c.dPdN * v[i];
+      }
+      return out;
+    };
+    Eigen::VectorXd dir = Eigen::VectorXd::Zero(n);
+    std::vector<Eigen::Index> active;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (mask[i] == 0) continue;
+      if (s.node[i].state == SlipState::stick)
+        dir[i] = -s.beta[i];  // β = 0 at once on the stick nodes
+      else
+        active.push_back(i);
+    }
+    const Eigen::Index m = static_cast<Eigen::Index>(active.size());
+    if (m > 0) {
+      Eigen::VectorXd rhsFull = -s.D;
+      if (dir.squaredNorm() > 0) rhsFull -= applyG(dir);
+      Eigen::VectorXd rhs(m);
+      for (Eigen::Index a = 0; a < m; ++a) rhs[a] = rhsFull[active[a]];
+      auto applyActive = [&](const Eigen::VectorXd& vA) {
+        Eigen::VectorXd v = Eigen::VectorXd::Zero(n);
+        for (Eigen::Index a = 0; a < m; ++a) v[active[a]] = vA[a];
+        const Eigen::VectorXd Gv = applyG(v);
+        Eigen::VectorXd out(m);
+        for (Eigen::Index a = 0; a < m; ++a) out[a] = Gv[active[a]];
+        return out;
+      };
+      // Inexact Newton: solve as accurately as the current residual warrants.
+      const double eta = std::max(1e-10, std::min(1e-3, p.relativeResidual(s)));
+      const Eigen::VectorXd delta = gmres(applyActive, rhs, eta, static_cast<int>(std::min<Eigen::Index>(4 * m, 2000)));
+      for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta[a];
+    }
+    const double merit = 0.5 * p.dot(s.D, s.D);
+    double t = 1;
+    bool accepted = false;
+    for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
+      ControlState trial = p.evaluate(s.beta + t * dir);
       if (0.5 * p.dot(trial.D, trial.D) <= (1 - 1e-4 * t) * merit) {
         lastStep = p.norm(trial.beta - s.beta);
         std::vector<SlipState> now;

@@ -131,16 +131,25 @@ class Lbfgs : public Optimizer {
 /// row by node state, G = (1 − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt; stick nodes get β = 0 at
 /// once. Globalised by backtracking on the merit ½‖D‖²_M. Solves D = 0, the minimiser of J
 /// when ζ = 0 (with ζ > 0 it still solves the friction law exactly).
+///
+/// Variant `krylov` (matrix-free): no S is assembled; each Newton system is solved by GMRES
+/// whose every product with S is one dual back-substitution, and each trial point is one
+/// primal solve — for fractures with many nodes, where n dual solves per run cost too much.
 class SemismoothNewton : public Optimizer {
  public:
-  explicit SemismoothNewton(int maxBacktracks) : maxBacktracks_(maxBacktracks) {}
+  enum class Variant { condensed, krylov };
+  SemismoothNewton(int maxBacktracks, Variant variant = Variant::condensed)
+      : maxBacktracks_(maxBacktracks), variant_(variant) {}
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "semismoothNewton"; }
   /// Active-set changes over the last call's iterations (a cycling diagnostic).
   int activeSetChanges() const { return activeSetChanges_; }
 
  private:
+  OptimizerReport minimizeKrylov(ControlProblem& problem, Eigen::VectorXd& beta);
+
   int maxBacktracks_;
+  Variant variant_;
   int activeSetChanges_ = 0;
   Eigen::MatrixXd Stt_, Snt_;  // cached for the run
   const SlipResponse* cachedFor_ = nullptr;
