@@ -18,20 +18,14 @@ namespace {
 
 // readMesh takes a path, so the input goes through a file; one per process (pid) so that
 // parallel fuzzing jobs (-jobs=N) do not overwrite each other's input.
-// The file is removed when the process ends, so runs leave nothing in /tmp.
-struct InputFile {
-  std::string path = (std::filesystem::temp_directory_path() /
-                      ("frictionFuzzMesh." + std::to_string(::getpid()) + ".msh"))
-                         .string();
-  ~InputFile() {
-    std::error_code ignored;
-    std::filesystem::remove(path, ignored);
-  }
-};
-
+// libFuzzer ends with _Exit, so no destructor removes the file: run.sh points TMPDIR into
+// the build tree instead.
 const std::string& inputPath() {
-  static const InputFile file;
-  return file.path;
+  static const std::string path =
+      (std::filesystem::temp_directory_path() /
+       ("frictionFuzzMesh." + std::to_string(::getpid()) + ".msh"))
+          .string();
+  return path;
 }
 
 }  // namespace

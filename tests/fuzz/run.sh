@@ -28,11 +28,12 @@ for target in fuzzDictionary fuzzMesh; do
   esac
   work="$build/run/$target"
   rm -rf "$work"
-  mkdir -p "$work/corpus" "$work/artifacts"
+  mkdir -p "$work/corpus" "$work/artifacts" "$work/tmp"
   cp "$here/corpus/$corpus/"* "$work/corpus/"
   echo "== $target: ${seconds}s on $(ls "$work/corpus" | wc -l) seeds"
   # -timeout: one input taking 5 s is a hang; -rss_limit_mb: a blow-up, not a machine kill.
-  (cd "$work" && "$build/$target" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
+  # TMPDIR: fuzzMesh's input file and the dictionary target's include folder stay here.
+  (cd "$work" && TMPDIR="$work/tmp" "$build/$target" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
        -print_final_stats=1 -artifact_prefix="$work/artifacts/" corpus) > "$work/log" 2>&1
   rc=$?
   grep -E "^(Done [0-9]+ runs|stat::average_exec_per_sec|stat::peak_rss_mb)" "$work/log"

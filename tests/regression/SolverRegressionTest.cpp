@@ -299,7 +299,8 @@ TEST_CASE("bad solver input names file, line and what was expected, and writes n
       {"badPoisson", "constant/mechanicalProperties", "lambda +1;", "E 1; nu 0.7;",
        {"constant/mechanicalProperties:", "nu", "0.7"}},
       {"unknownOptimizer", "system/frictionSolution", "type +semismoothNewton;", "type newton;",
-       {"system/frictionSolution:", "newton", "steepestDescent, armijo, semismoothNewton"}},
+       {"system/frictionSolution:", "newton",
+        "steepestDescent, armijo, barzilaiBorwein, lbfgs, semismoothNewton"}},
   };
   for (const Bad& b : cases) {
     DYNAMIC_SECTION(b.label) {

@@ -30,6 +30,7 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
       field.fail(name, "'" + name + "' is not a boundary patch of the mesh" +
                            suggestionText(name, valid) + " (patches: " + joinWords(valid) + ")");
     const Dictionary& p = field.subDict(name);
+    try {
     Patch patch;
     patch.name = name;
     patch.label = it->second;
@@ -67,6 +68,11 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
       }
     }
     patches_.push_back(std::move(patch));
+    } catch (const InputError& e) {
+      // Say which patch: the same key ('value') appears once per patch.
+      if (e.message().find("patch '") != std::string::npos) throw;
+      throw InputError(e.location(), "patch '" + name + "': " + e.message());
+    }
   }
   // Labelled lines inside the body (sides of two triangles) carry no boundary condition
   // unless one is given: only patches on the outer boundary must be listed.

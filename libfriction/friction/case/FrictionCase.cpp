@@ -38,6 +38,12 @@ Dictionary readCaseFile(const std::string& caseDir, const std::string& relative)
 FrictionCase::~FrictionCase() = default;
 
 FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
+  if (!fs::exists(caseDir))
+    throw InputError(caseDir, "the case folder does not exist (expected a folder with system/, "
+                              "constant/ and 0/; see -case)");
+  if (!fs::is_directory(caseDir))
+    throw InputError(caseDir, "is not a folder (expected a case folder with system/, constant/ "
+                              "and 0/; see -case)");
   // 1. Every dictionary is read and checked before any work: a typo costs nothing.
   const Dictionary controlDict = readCaseFile(caseDir, "system/controlDict");
   time_ = std::make_unique<TimeControl>(controlDict);
@@ -59,7 +65,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
     const double lambda = mech.getScalar("lambda");
     if (lambda + 2 * mu / 3 <= 0)
       mech.fail("lambda", "key 'lambda': expected λ + 2μ/3 > 0 (a positive bulk modulus), got λ = " +
-                              std::to_string(lambda));
+                              formatNumber(lambda));
     material_ = std::make_unique<Material>(Material::fromLame(lambda, mu, planeStress));
   }
   mech.checkAllRead();
@@ -140,7 +146,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
   }
   log << "Control: optimizer " << optimizer_->name() << ", gradient "
       << (gradient_ == GradientKind::exact ? "exact" : "frozenRho") << ", gamma " << gamma_
-      << " Pa/m" << (gammaAbsolute_ ? "" : " (gammaRelative " + std::to_string(gammaRelative_) + " x E/h)")
+      << " Pa/m" << (gammaAbsolute_ ? "" : " (gammaRelative " + formatNumber(gammaRelative_) + " x E/h)")
       << ", zeta " << zeta_ << ", tolerance " << optimizer_->stopRule().tolerance << " ("
       << (optimizer_->stopRule().on == StopRule::On::residual ? "residual" : "step")
       << "), maxIterations " << optimizer_->stopRule().maxIterations << "\n";

@@ -18,10 +18,14 @@ MeshSettings MeshSettings::read(const std::string& caseDir) {
   MeshSettings s;
   s.caseDir = caseDir;
   s.dictPath = (fs::path(caseDir) / "system" / "meshDict").lexically_normal().string();
+  if (!fs::is_directory(caseDir))
+    throw InputError(caseDir, fs::exists(caseDir)
+                                  ? "is not a folder (expected a case folder holding "
+                                    "system/meshDict; see -case)"
+                                  : "the case folder does not exist (see -case)");
   if (!fs::exists(s.dictPath))
-    throw InputError(s.dictPath, "cannot open: the case '" + caseDir +
-                                     "' has no system/meshDict (is -case pointing at a case "
-                                     "folder?)");
+    throw InputError(s.dictPath, "cannot open: the case has no system/meshDict (is -case "
+                                 "pointing at a case folder?)");
   const Dictionary dict = Dictionary::read(s.dictPath);
 
   const std::string mesh = dict.getFileName("mesh");

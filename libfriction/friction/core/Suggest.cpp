@@ -1,6 +1,8 @@
 #include "friction/core/Suggest.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 namespace friction {
 
@@ -29,6 +31,15 @@ std::string suggestionText(const std::string& word, const std::vector<std::strin
   // A suggestion further than about half the word away is noise, not help.
   if (!best || bestD > std::max<std::size_t>(2, word.size() / 2)) return "";
   return "; did you mean '" + *best + "'?";
+}
+
+std::string formatNumber(double x) {
+  char buffer[32];
+  for (int digits = 6; digits <= 17; ++digits) {  // the fewest digits that read back exactly
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+    if (std::strtod(buffer, nullptr) == x) break;
+  }
+  return buffer;
 }
 
 std::string joinWords(const std::vector<std::string>& words, const std::string& sep) {

@@ -1,6 +1,8 @@
 // The time loop's settings: see TimeControl.hpp.
 #include "friction/time/TimeControl.hpp"
 
+#include "friction/core/Suggest.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -31,7 +33,7 @@ TimeControl::TimeControl(const Dictionary& d) {
   endTime_ = d.getScalar("endTime");
   if (endTime_ <= startTime_)
     d.fail("endTime", "key 'endTime': expected a time after startTime (" +
-                          std::to_string(startTime_) + "), got " + std::to_string(endTime_));
+                          formatNumber(startTime_) + "), got " + formatNumber(endTime_));
   deltaT_ = d.getScalar("deltaT", Bounds::positive());
   writeRunTime_ = d.getChoiceOr("writeControl", {"timeStep", "runTime"}, "timeStep") == "runTime";
   writeInterval_ = d.getScalarOr("writeInterval", 1.0, Bounds::positive());

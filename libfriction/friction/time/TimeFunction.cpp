@@ -15,8 +15,8 @@ TimeFunction TimeFunction::read(const Dictionary& dict, const std::string& key, 
     // Re-read through the typed accessor, which checks the table's shape; it expects the
     // table as the whole value, so a dictionary holding just the list is built here.
     Dictionary tmp;
-    tmp.set("table", std::vector<Value>(v.begin() + 1, v.end()), dict.location(key));
-    Table t = tmp.getTable("table");
+    tmp.set(key, std::vector<Value>(v.begin() + 1, v.end()), dict.location(key));
+    Table t = tmp.getTable(key);
     for (const auto& row : t.y)
       if (static_cast<int>(row.size()) != components)
         dict.fail(key, "key '" + key + "': table rows must hold " + expected + " after the time");
