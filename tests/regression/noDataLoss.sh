@@ -49,18 +49,19 @@ killRestart)
     cmp -s "$work/reference/1/$f" "$work/killed/1/$f" || fail "1/$f differs from the uninterrupted run"
   done
   ;;
-sigterm)
+sigterm | sigint)
+  sig=${scenario#sig}; sig=${sig^^}
   makeCase "$work/case" 400
   "$bin/frictionSolver" -case "$work/case" >"$work/case/log.frictionSolver" 2>&1 &
   pid=$!
   for _ in $(seq 100); do [[ -n $(timeFolders "$work/case") ]] && break; sleep 0.02; done
-  kill -TERM $pid
+  kill -"$sig" $pid
   wait $pid
   rc=$?
   grep -q "Stopped at time" "$work/case/log.frictionSolver" ||
-    { [[ -d $work/case/1 ]] && fail "the run ended before SIGTERM: nothing was tested"; }
-  ((rc == 5)) || fail "exit code $rc after SIGTERM, expected 5"
-  grep -q "SIGTERM" "$work/case/log.frictionSolver" || fail "no SIGTERM message"
+    { [[ -d $work/case/1 ]] && fail "the run ended before SIG$sig: nothing was tested"; }
+  ((rc == 5)) || fail "exit code $rc after SIG$sig, expected 5"
+  grep -q "SIG$sig" "$work/case/log.frictionSolver" || fail "no SIG$sig message"
   stopped=$(sed -n 's/.*Stopped at time \([^ ]*\) .*/\1/p' "$work/case/log.frictionSolver")
   [[ -f $work/case/$stopped/uniform/frictionState ]] || fail "the step at $stopped was not written"
   ;;
