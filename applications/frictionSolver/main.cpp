@@ -69,8 +69,8 @@ int main(int argc, char** argv) {
     int notConverged = 0;
     for (const auto& r : results) notConverged += r.report.status != OptimizerStatus::converged;
     const auto& f = c.system().factorization();
-    std::cout << "\nFactorisations " << f.numFactorizations() << ", back-substitutions "
-              << f.numSolves() << "\n";
+    std::cout << "\nFactorisations " << f.numFactorizations() << " (" << f.factorSeconds()
+              << " s), back-substitutions " << f.numSolves() << " (" << f.solveSeconds() << " s)\n";
     if (!c.stoppedEarly().empty()) {
       std::cout << "\nStopped early (" << c.stoppedEarly() << "); continue with startFrom latestTime\n\nEnd\n";
       return c.stoppedEarly().rfind("SIG", 0) == 0 ? 5 : 0;
