@@ -147,7 +147,11 @@ void FrictionCase::printSettings(std::ostream& log) const {
   log << "Control: optimizer " << optimizer_->name() << ", gradient "
       << (gradient_ == GradientKind::exact ? "exact" : "frozenRho") << ", gamma " << gamma_
       << " Pa/m" << (gammaAbsolute_ ? "" : " (gammaRelative " + formatNumber(gammaRelative_) + " x E/h)")
-      << ", zeta " << zeta_ << ", tolerance " << optimizer_->stopRule().tolerance << " ("
+      << ", zeta " << zeta_;
+  if (optimizer_->name() != "semismoothNewton")
+    log << ", alpha " << optimizer_->alpha() << " m/Pa"
+        << (optimizer_->alphaIsRelative() ? " (alphaRelative x (h/E)^2)" : "");
+  log << ", tolerance " << optimizer_->stopRule().tolerance << " ("
       << (optimizer_->stopRule().on == StopRule::On::residual ? "residual" : "step")
       << "), maxIterations " << optimizer_->stopRule().maxIterations << "\n";
   // The effects switched on, and those that cost nothing because they are not.
@@ -187,6 +191,14 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   // length h (METHOD.md §3): then γβ and τ are of the same size for slips of order h·τ/E.
   if (!gammaAbsolute_)
     gamma_ = hCount > 0 ? gammaRelative_ * material_->youngModulus() / (hSum / hCount) : 1.0;
+  // Gradient steps scale like (w/E)², w the smallest lumped weight of Γ (the M of the
+  // M-gradient): h for P1, h/3 at the vertices for P2 (Simpson).
+  if (n > 0) {
+    double w = std::numeric_limits<double>::infinity();
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (system_->freeMask()[k] > 0) w = std::min(w, system_->weights()[k]);
+    if (std::isfinite(w)) optimizer_->setStepScale(std::pow(w / material_->youngModulus(), 2));
+  }
   slip_ = Eigen::VectorXd::Zero(n);
 
   const auto& f = system_->factorization();

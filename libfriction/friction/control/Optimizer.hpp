@@ -61,36 +61,43 @@ class Optimizer {
   const StopRule& stopRule() const { return stop_; }
   void setStopRule(const StopRule& s) { stop_ = s; }
 
+  /// The step α [m/Pa] of the gradient methods: given absolutely ('alpha') or relative to
+  /// the problem's own scale ('alphaRelative' × (h/E)², with h the spacing of the fracture
+  /// nodes and E Young's modulus: the Hessian of J grows like (E/h)², so this keeps a step
+  /// stable across units and meshes). The caller sets the scale once it knows h and E.
+  void setStepScale(double hOverESquared) { stepScale_ = hOverESquared; }
+  void setStep(double alpha, bool relative) { alpha_ = alpha, alphaRelative_ = relative; }
+  double alpha() const { return alphaRelative_ ? alpha_ * stepScale_ : alpha_; }
+  bool alphaIsRelative() const { return alphaRelative_; }
+
  protected:
   /// True when the stop rule holds at state s (stepNorm: of the step that led to s).
   bool converged(ControlProblem& p, const ControlState& s, double stepNorm) const;
   IterationRecord record(ControlProblem& p, const ControlState& s, int k, double stepNorm) const;
 
   StopRule stop_;
+  double alpha_ = 1, stepScale_ = 1;
+  bool alphaRelative_ = true;
 };
 
 /// The paper's (54): β ← β − α g with a fixed step α [m/Pa].
 class SteepestDescent : public Optimizer {
  public:
-  explicit SteepestDescent(double alpha) : alpha_(alpha) {}
+  SteepestDescent() = default;
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "steepestDescent"; }
-
- private:
-  double alpha_;
 };
 
 /// Steepest descent with Armijo backtracking (paper §4.2): accept α when
 /// J(β − αg) ≤ J(β) − c α ‖g‖²_M, else halve α; the next step starts from 2α.
 class Armijo : public Optimizer {
  public:
-  Armijo(double alpha0, double c, int maxBacktracks)
-      : alpha0_(alpha0), c_(c), maxBacktracks_(maxBacktracks) {}
+  Armijo(double c, int maxBacktracks) : c_(c), maxBacktracks_(maxBacktracks) {}
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "armijo"; }
 
  private:
-  double alpha0_, c_;
+  double c_;
   int maxBacktracks_;
 };
 
@@ -100,12 +107,9 @@ class Armijo : public Optimizer {
 /// the last ten); a non-positive curvature ⟨s, y⟩ falls back to the first step α0.
 class BarzilaiBorwein : public Optimizer {
  public:
-  explicit BarzilaiBorwein(double alpha0) : alpha0_(alpha0) {}
+  BarzilaiBorwein() = default;
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "barzilaiBorwein"; }
-
- private:
-  double alpha0_;
 };
 
 /// [beyond] L-BFGS on J in the M inner product, with backtracking (Armijo) on J along the
@@ -113,14 +117,12 @@ class BarzilaiBorwein : public Optimizer {
 /// direction is replaced by −g.
 class Lbfgs : public Optimizer {
  public:
-  Lbfgs(int memory, double alpha0, int maxBacktracks)
-      : memory_(memory), alpha0_(alpha0), maxBacktracks_(maxBacktracks) {}
+  Lbfgs(int memory, int maxBacktracks) : memory_(memory), maxBacktracks_(maxBacktracks) {}
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "lbfgs"; }
 
  private:
   int memory_;
-  double alpha0_;
   int maxBacktracks_;
 };
 
