@@ -16,6 +16,17 @@ seconds="${1:-60}"
 build="${2:-$repo/build/fuzz}"
 cxx="${FRICTION_FUZZ_CXX:-clang++-14}"
 
+# clang and its libFuzzer/sanitizer runtimes are needed by this long test only, so they are
+# not in etc/debian-packages: install them here when missing (root, Debian's packages).
+if ! command -v "$cxx" >/dev/null || ! dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "ok installed"; then
+  if [[ $(id -u) -ne 0 ]]; then
+    echo "run.sh: needs clang-14 and libclang-rt-14-dev (apt-get install --no-install-recommends clang-14 libclang-rt-14-dev)" >&2
+    exit 2
+  fi
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends clang-14 libclang-rt-14-dev ||
+    { echo "run.sh: installing clang-14 failed" >&2; exit 2; }
+fi
+
 cmake -S "$here" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" > "$build.configure.log" 2>&1 \
   || { cat "$build.configure.log"; echo "run.sh: configuring the fuzz build failed" >&2; exit 2; }
 cmake --build "$build" || { echo "run.sh: building the fuzz targets failed" >&2; exit 2; }
