@@ -374,6 +374,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         << "  |D|/|Sigma| " << r.relResidual << "  maxExcessST " << r.maxExcessST << "  |dBeta| "
         << r.lastStepNorm << "  " << toString(r.report.status)
         << (!r.reused && n > 0 && r.report.iterations == 0 ? " (stuck at the trial state)" : "")
+        << (r.report.note.empty() ? "" : "  [" + r.report.note + "]")
         << (r.written ? "  (written)" : "");
     // Progress: step k of n, elapsed, estimated remaining (on the step's own line, so a
     // log gets no extra lines).

@@ -456,6 +456,11 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
     }
   }
   if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
+  // An active set that keeps changing without the residual closing is cycling: say so
+  // instead of looping silently.
+  if (r.status != OptimizerStatus::converged && activeSetChanges_ > 2)
+    r.note = "active set changed " + std::to_string(activeSetChanges_) +
+             " times without converging (cycling between stick and slip)";
   beta = s.beta;
   return r;
 }
@@ -542,6 +547,11 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
     }
   }
   if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
+  // An active set that keeps changing without the residual closing is cycling: say so
+  // instead of looping silently.
+  if (r.status != OptimizerStatus::converged && activeSetChanges_ > 2)
+    r.note = "active set changed " + std::to_string(activeSetChanges_) +
+             " times without converging (cycling between stick and slip)";
   beta = s.beta;
   return r;
 }

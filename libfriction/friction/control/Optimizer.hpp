@@ -34,6 +34,8 @@ struct IterationRecord {
 struct OptimizerReport {
   OptimizerStatus status = OptimizerStatus::maxIterations;
   int iterations = 0;
+  /// A diagnosis for the log when the status is not 'converged' (e.g. active-set cycling).
+  std::string note;
   std::vector<IterationRecord> history;
 };
 

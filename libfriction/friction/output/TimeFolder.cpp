@@ -43,7 +43,8 @@ void TimeFolder::commit() {
   std::error_code ec;
   // rename() cannot replace a non-empty folder: move the old one aside first, so that at any
   // instant one complete folder of this name exists or is recoverable (.old).
-  const std::string old = final_ + ".old";
+  const fs::path finalPath(final_);
+  const std::string old = (finalPath.parent_path() / ("." + finalPath.filename().string() + ".old")).string();
   fs::remove_all(old, ec);
   if (fs::exists(final_)) {
     fs::rename(final_, old, ec);

@@ -41,6 +41,7 @@ TEST_CASE("a time folder is invisible until committed and replaces an older one 
   std::string text;
   std::ifstream(dir / "1" / "D") >> text;
   CHECK(text == "new");
+  CHECK_FALSE(fs::exists(dir / ".1.old"));
   CHECK_FALSE(fs::exists(dir / "1.old"));
   fs::remove_all(dir);
 }
