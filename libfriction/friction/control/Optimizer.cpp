@@ -356,6 +356,41 @@ Eigen::VectorXd gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&
 
 }  // namespace
 
+bool SemismoothNewton::lineSearch(ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
+                                  const std::function<ControlState(const Eigen::VectorXd&)>& stateAt,
+                                  double& lastStep, std::vector<SlipState>& states) {
+  // Backtracking on the merit ½‖D‖²_M; counts active-set changes for the cycling report.
+  const double merit = 0.5 * p.dot(s.D, s.D);
+  double t = 1;
+  for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
+    ControlState trial = stateAt(s.beta + t * dir);
+    if (0.5 * p.dot(trial.D, trial.D) <= (1 - 1e-4 * t) * merit) {
+      lastStep = p.norm(trial.beta - s.beta);
+      std::vector<SlipState> now;
+      for (const auto& c : trial.node) now.push_back(c.state);
+      if (!states.empty() && now != states) ++activeSetChanges_;
+      states = std::move(now);
+      s = std::move(trial);
+      return true;
+    }
+  }
+  return false;
+}
+
+OptimizerReport& SemismoothNewton::finish(ControlProblem& p, const ControlState& s,
+                                          double lastStep, OptimizerReport& r,
+                                          Eigen::VectorXd& beta) {
+  if (r.status != OptimizerStatus::stalled && converged(p, s, lastStep))
+    r.status = OptimizerStatus::converged;
+  // An active set that keeps changing without the residual closing is cycling: say so
+  // instead of looping silently.
+  if (r.status != OptimizerStatus::converged && activeSetChanges_ > 2)
+    r.note = "active set changed " + std::to_string(activeSetChanges_) +
+             " times without converging (cycling between stick and slip)";
+  beta = s.beta;
+  return r;
+}
+
 OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
   if (variant_ == Variant::krylov) return minimizeKrylov(p, beta);
   SlipResponse& resp = p.response();
@@ -430,39 +465,15 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
       r.status = OptimizerStatus::stalled;
       break;
     }
-    // Backtracking on the merit ½‖D‖²_M.
-    const double merit = 0.5 * p.dot(s.D, s.D);
-    double t = 1;
-    bool accepted = false;
-    for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
-      ControlState trial = stateAt(s.beta + t * dir);
-      if (0.5 * p.dot(trial.D, trial.D) <= (1 - 1e-4 * t) * merit) {
-        lastStep = p.norm(trial.beta - s.beta);
-        std::vector<SlipState> now;
-        for (const auto& c : trial.node) now.push_back(c.state);
-        if (!states.empty() && now != states) ++activeSetChanges_;
-        states = std::move(now);
-        s = std::move(trial);
-        accepted = true;
-        break;
-      }
-    }
+    const bool accepted = lineSearch(p, s, dir, stateAt, lastStep, states);
     r.iterations = k;
     r.history.push_back(record(p, s, k, accepted ? lastStep : 0));
     if (!accepted) {
       r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
-      beta = s.beta;
-      return r;
+      break;
     }
   }
-  if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
-  // An active set that keeps changing without the residual closing is cycling: say so
-  // instead of looping silently.
-  if (r.status != OptimizerStatus::converged && activeSetChanges_ > 2)
-    r.note = "active set changed " + std::to_string(activeSetChanges_) +
-             " times without converging (cycling between stick and slip)";
-  beta = s.beta;
-  return r;
+  return finish(p, s, lastStep, r, beta);
 }
 
 OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::VectorXd& beta) {
@@ -522,38 +533,16 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
       const Eigen::VectorXd delta = gmres(applyActive, rhs, eta, static_cast<int>(std::min<Eigen::Index>(4 * m, 2000)));
       for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta[a];
     }
-    const double merit = 0.5 * p.dot(s.D, s.D);
-    double t = 1;
-    bool accepted = false;
-    for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
-      ControlState trial = p.evaluate(s.beta + t * dir);
-      if (0.5 * p.dot(trial.D, trial.D) <= (1 - 1e-4 * t) * merit) {
-        lastStep = p.norm(trial.beta - s.beta);
-        std::vector<SlipState> now;
-        for (const auto& c : trial.node) now.push_back(c.state);
-        if (!states.empty() && now != states) ++activeSetChanges_;
-        states = std::move(now);
-        s = std::move(trial);
-        accepted = true;
-        break;
-      }
-    }
+    const auto evaluate = [&](const Eigen::VectorXd& b) { return p.evaluate(b); };
+    const bool accepted = lineSearch(p, s, dir, evaluate, lastStep, states);
     r.iterations = k;
     r.history.push_back(record(p, s, k, accepted ? lastStep : 0));
     if (!accepted) {
       r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
-      beta = s.beta;
-      return r;
+      break;
     }
   }
-  if (converged(p, s, lastStep)) r.status = OptimizerStatus::converged;
-  // An active set that keeps changing without the residual closing is cycling: say so
-  // instead of looping silently.
-  if (r.status != OptimizerStatus::converged && activeSetChanges_ > 2)
-    r.note = "active set changed " + std::to_string(activeSetChanges_) +
-             " times without converging (cycling between stick and slip)";
-  beta = s.beta;
-  return r;
+  return finish(p, s, lastStep, r, beta);
 }
 
 }  // namespace friction

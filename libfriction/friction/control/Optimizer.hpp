@@ -151,6 +151,11 @@ class SemismoothNewton : public Optimizer {
 
  private:
   OptimizerReport minimizeKrylov(ControlProblem& problem, Eigen::VectorXd& beta);
+  bool lineSearch(ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
+                  const std::function<ControlState(const Eigen::VectorXd&)>& stateAt,
+                  double& lastStep, std::vector<SlipState>& states);
+  OptimizerReport& finish(ControlProblem& p, const ControlState& s, double lastStep,
+                          OptimizerReport& r, Eigen::VectorXd& beta);
 
   int maxBacktracks_;
   Variant variant_;
