@@ -45,15 +45,14 @@ struct Row {
 
 class Case {
  public:
-  /// Copy cases/<name> to <work>/<label> (fresh), without anything a run made.
+  /// Copy cases/<name> to <work>/<label> (fresh), without anything a run made: the case's
+  /// own Allclean removes it (an earlier ./Allrun leaves time folders, VTK/, logs in cases/).
   Case(const std::string& name, const std::string& label)
       : dir_(fs::path(FRICTION_WORK_DIR) / label) {
     fs::remove_all(dir_);
     fs::create_directories(dir_.parent_path());
     fs::copy(fs::path(FRICTION_SOURCE_DIR) / "cases" / name, dir_, fs::copy_options::recursive);
-    for (const auto& e : fs::directory_iterator(dir_))
-      if (e.path().filename().string().rfind("log.", 0) == 0) fs::remove(e.path());
-    fs::remove(dir_ / "constant" / "splitMesh");
+    REQUIRE(std::system(("'" + (dir_ / "Allclean").string() + "' > /dev/null").c_str()) == 0);
   }
 
   const fs::path& dir() const { return dir_; }

@@ -18,8 +18,7 @@ rm -rf "$work" && mkdir -p "$work"
 c=$work/paperBenchmark
 cp -r "$src/cases/paperBenchmark" "$c"
 # Keep only the inputs: whatever an earlier run left in cases/ must not be plotted.
-rm -rf "$c/constant/splitMesh" "$c"/log.* "$c/postProcessing"
-find "$c" -mindepth 1 -maxdepth 1 -type d -regex '.*/[0-9.eE+-]+' ! -name 0 -exec rm -rf {} +
+"$c/Allclean" >/dev/null
 
 isPng() {  # non-empty, starts with the 8-byte PNG signature
   [[ -s $1 ]] || return 1

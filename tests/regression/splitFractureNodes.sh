@@ -9,7 +9,7 @@ expect() { grep -qF -- "$2" <<<"$1" || fail "output lacks '$2'"; }
 
 copyCase() {  # copy a case without anything a run made
   cp -r "$src/cases/$1" "$work/$1"
-  rm -rf "$work/$1/constant/splitMesh" "$work/$1"/log.*
+  "$work/$1/Allclean" >/dev/null
 }
 
 run() {  # run the utility; sets out (stdout+stderr) and rc
