@@ -11,8 +11,12 @@ fail() { echo "FAIL [$scenario]: $*"; exit 1; }
 
 # The paper benchmark ramped over many small steps, written every 10 steps.
 makeCase() {  # makeCase DIR STEPS
-  cp -r "$src/cases/paperBenchmark" "$1"
-  "$1/Allclean" >/dev/null  # what an earlier ./Allrun left in cases/ must not come along
+  # Clean a copy outside the target first: what an earlier ./Allrun left in cases/ must not
+  # come along (nor fill the small tmpfs of diskFull before it is cleaned).
+  local stage="$work/stage.$RANDOM"
+  cp -r "$src/cases/paperBenchmark" "$stage"
+  "$stage/Allclean" >/dev/null
+  mv "$stage" "$1"
   sed -i "s/^deltaT .*/deltaT          $(awk -v n="$2" 'BEGIN{printf "%.10g", 1/n}');/; s/^writeInterval .*/writeInterval   10;/" \
     "$1/system/controlDict"
   "$bin/splitFractureNodes" -case "$1" >"$1/log.splitFractureNodes" 2>&1 || fail "split failed"
