@@ -120,25 +120,42 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     if (!e.is_directory() || name == "0" || *end != '\0' || name[0] == '.') continue;
     ++sum.steps;
     INFO("time folder " << name);
-    // No NaN or Inf anywhere in what was written.
+    // No NaN or Inf anywhere in what was written, except the traction columns of a tip's
+    // row (sigmaN tau ST residual: a tip has no traction, written as nan).
     for (const auto& f : fs::recursive_directory_iterator(e.path())) {
       if (!f.is_regular_file()) continue;
-      const std::string text = readText(f.path());
-      for (const char* bad : {"nan", "NaN", "inf", "Inf"}) {
-        INFO(f.path().string());
-        CHECK(text.find(bad) == std::string::npos);
+      INFO(f.path().string());
+      std::istringstream in(readText(f.path()));
+      for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> items;
+        std::istringstream s(line);
+        for (std::string item; s >> item;) items.push_back(item);
+        const bool tipRow = f.path().extension() == ".dat" && items.size() == 10 && items[9] == "tip";
+        INFO(line);
+        for (std::size_t i = 0; i < items.size(); ++i) {
+          if (tipRow && i >= 5 && i <= 8) {
+            CHECK(items[i] == "nan");
+            continue;
+          }
+          for (const char* bad : {"nan", "NaN", "inf", "Inf"}) CHECK(items[i].find(bad) == std::string::npos);
+        }
       }
     }
     const auto status = readStatus(e.path() / "solverStatus");
     REQUIRE(status.count("status"));
     sum.statuses.push_back(status.at("status"));
     CHECK((status.at("status") == "converged" || status.at("status") == "maxIterations" ||
-           status.at("status") == "stalled" || status.at("status") == "diverged"));
+           status.at("status") == "stalled" || status.at("status") == "diverged" ||
+           status.at("status") == "inaccurate"));
     // Equilibrium to round-off: the factor is exact up to κ·ε; 1e-8 leaves room for
     // the ill-conditioned cases (ν → 0.5, slivers).
     CHECK(std::stod(status.at("equilibriumResidual")) <= 1e-8);
     for (const auto& f : fractures) {
-      const auto rows = c.table(name, f);
+      auto rows = c.table(name, f);
+      // A tip has no traction (nan): leave it out of the norms and the check below.
+      rows.erase(std::remove_if(rows.begin(), rows.end(), [](const Row& r) { return r.state == "tip"; }),
+                 rows.end());
+      REQUIRE(!rows.empty());
       double sigmaMax = 0, betaMax = 0;
       for (const Row& r : rows) {
         sigmaMax = std::max({sigmaMax, std::abs(r.tau), std::abs(r.sigmaN)});
