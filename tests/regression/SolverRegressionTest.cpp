@@ -614,3 +614,31 @@ TEST_CASE("fracture tables: open only where sigma'_n >= 0, tips marked, residual
     }
   }
 }
+
+TEST_CASE("a factorisation that fails names the part nothing holds, or the free direction",
+          "[regression][errors]") {
+  SECTION("no Dirichlet patch at all: the two halves float") {
+    Case c("paperBenchmark", "paperBenchmark-noDirichlet");
+    c.edit("0/D", "bottom +\\{[^}]*\\}", "bottom { type free; }");
+    c.edit("0/D", "top\\s*\\{[^}]*\\}", "top { type traction; traction (0 -0.1); }");
+    const int rc = c.solve();
+    const std::string log = c.log();
+    INFO(log);
+    CHECK(rc == 4);
+    // The split mesh has two parts (the fracture crosses the square): both named.
+    CHECK_THAT(log, Catch::Contains("2 parts of the mesh touch no Dirichlet patch"));
+    CHECK_THAT(log, Catch::Contains("the part around (0.5037, 0.2583), 1776 triangles"));
+    CHECK_THAT(log, Catch::Contains("the part around (0.5, 0.74"));
+    CHECK_THAT(log, !Catch::Contains("overflow"));
+  }
+  SECTION("rollers that fix x only: the body slides along y") {
+    Case c("paperBenchmark", "paperBenchmark-rollersX");
+    c.edit("0/D", "bottom +\\{[^}]*\\}", "bottom { type fixedDisplacement; components (x); value (0 0); }");
+    c.edit("0/D", "top\\s*\\{[^}]*\\}", "top { type fixedDisplacement; components (x); value (0 0); }");
+    const int rc = c.solve();
+    const std::string log = c.log();
+    INFO(log);
+    CHECK(rc == 4);
+    CHECK_THAT(log, Catch::Contains("they fix only the x component: the body can slide along y"));
+  }
+}
