@@ -352,6 +352,19 @@ TEST_CASE("ParaView files read by VTK hold the solver's own table values", "[reg
                      c.dir() / "log.vtk");
   INFO(readText(c.dir() / "log.vtk"));
   CHECK(rc == 0);
+  // The inclined crack has two tips (state tip, NaN tractions in the table and the .vtp).
+  Case ic("inclinedCrack", "inclinedCrack-vtk");
+  REQUIRE(ic.solve() == 0);
+  std::smatch m;
+  const std::string log = ic.log();
+  REQUIRE(std::regex_search(log, m, std::regex("Split mesh: ([0-9]+) points, ([0-9]+) triangles")));
+  const int rcTips = run("/usr/bin/python3 '" + script + "' '" + ic.dir().string() + "' 1 crack " +
+                             m[1].str() + " " + m[2].str(),
+                         ic.dir() / "log.vtk");
+  const std::string out = readText(ic.dir() / "log.vtk");
+  INFO(out);
+  CHECK(rcTips == 0);
+  CHECK_THAT(out, Catch::Contains(", 2 tips)"));
 }
 
 TEST_CASE("matrix-free Newton gives the condensed Newton's slip", "[regression][optimizer]") {
