@@ -170,8 +170,10 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
   // J never increases within a step (Newton's merit line search; Armijo's decrease rule).
   std::istringstream hist(readText(c.dir() / "postProcessing" / "convergence.dat"));
   double lastTime = NAN, lastJ = 0;
+  int records = 0;
   for (std::string line; std::getline(hist, line);) {
     if (line.empty() || line[0] == '#') continue;
+    ++records;
     std::istringstream s(line);
     double t, k, J;
     s >> t >> k >> J;
@@ -180,6 +182,7 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     lastTime = t;
     lastJ = J;
   }
+  CHECK(records > 0);  // an empty history would check nothing
   return sum;
 }
 
