@@ -1,18 +1,22 @@
 // frictionSolver: quasi-static Coulomb friction on the fractures of an elastic body, by the
-// control-problem method of Cerroni, Formaggia and Scotti (METHOD.md). Orchestration only:
-// the numerics live in the library.
+// control-problem method of Cerroni, Formaggia and Scotti (docs/method.md). Orchestration
+// only: the numerics live in the library.
 //
 // Sample run (after splitFractureNodes):
 //   frictionSolver -case cases/paperBenchmark
 // prints the settings, one line per time step (iterations, back-substitutions, J,
-// ‖D‖/‖τ‖, max(ST − μ_f, 0), status) and End; writes time folders <t>/D,
+// |D|/|Sigma|, max(ST − μ_f, 0), status) and End; writes time folders <t>/D,
 // <t>/fractures/<name>.dat, <t>/solverStatus and postProcessing/convergence.dat.
 //
 // Exit codes: 0 every step converged; 1 bad input (file:line and what was expected);
-// 2 bad command line; 3 some step did not converge (see the log); 4 the factorisation failed;
-// 5 stopped by SIGINT/SIGTERM after writing the current step.
+// 2 bad command line; 3 some step did not converge, was inaccurate or diverged (see the log);
+// 4 the factorisation failed (the log says why); 5 stopped by SIGINT/SIGTERM (after writing
+// the current step, or at once on a second signal, without writing it); 6 an output or system
+// error (cannot write, disk full, a file vanished, internal error).
 #include <boost/program_options.hpp>
+#include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "friction/core/CommandLine.hpp"
 #include "friction/case/FrictionCase.hpp"
@@ -58,9 +62,8 @@ int main(int argc, char** argv) {
 
     // 3. Assemble and factor once.
     if (c.setup(std::cout) != FactorStatus::ok) {
-      std::cerr << "frictionSolver: error: the stiffness matrix could not be factored ("
-                << toString(c.system().factorization().status())
-                << "): are the Dirichlet conditions enough to stop rigid-body motion?\n";
+      std::cout.flush();
+      std::cerr << "frictionSolver: error: " << c.factorFailureDiagnosis() << "\n";
       return 4;
     }
 
@@ -86,5 +89,28 @@ int main(int argc, char** argv) {
     std::cout.flush();
     std::cerr << "\nfrictionSolver: error: " << e.what() << "\n";
     return 1;
+  } catch (const OutputError& e) {
+    // Everything below is not the user's input: exit 6. The stack is unwound on the way
+    // here, so TimeFolder's destructor has removed the step's partial folder.
+    std::cout.flush();
+    std::cerr << "\nfrictionSolver: error: " << e.what() << "\n";
+    return 6;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::cout.flush();
+    std::cerr << "\nfrictionSolver: error: " << e.path1().string() << ": " << e.code().message()
+              << " (" << e.what() << ")\n";
+    return 6;
+  } catch (const std::bad_alloc&) {
+    std::cout.flush();
+    std::cerr << "\nfrictionSolver: error: out of memory\n";
+    return 6;
+  } catch (const std::exception& e) {
+    std::cout.flush();
+    std::cerr << "\nfrictionSolver: internal error: " << e.what() << "\n";
+    return 6;
+  } catch (...) {
+    std::cout.flush();
+    std::cerr << "\nfrictionSolver: internal error: an unknown exception\n";
+    return 6;
   }
 }

@@ -39,8 +39,8 @@ inline int run(const std::string& command, const fs::path& logFile) {
 
 /// One row of <time>/fractures/<name>.dat.
 struct Row {
-  double s, x, y, slip, slipIncrement, sigmaN, tau, ST, D;
-  std::string state;
+  double s, x, y, slip, slipIncrement, sigmaN, tau, ST, residual;
+  std::string state;  ///< stick, slip, open or tip (a tip's sigmaN, tau, ST, residual are NaN)
 };
 
 class Case {
@@ -98,12 +98,19 @@ class Case {
     std::string line;
     while (std::getline(in, line)) {
       if (line.empty() || line[0] == '#') continue;
+      // strtod, not >>: a tip's "nan" is a value, which operator>> refuses.
       std::istringstream s(line);
-      Row r;
-      s >> r.s >> r.x >> r.y >> r.slip >> r.slipIncrement >> r.sigmaN >> r.tau >> r.ST >> r.D >>
-          r.state;
+      std::string item[10];
+      for (auto& i : item) s >> i;
+      INFO(line);
       REQUIRE(!s.fail());
-      rows.push_back(r);
+      double v[9];
+      for (int i = 0; i < 9; ++i) {
+        char* end = nullptr;
+        v[i] = std::strtod(item[i].c_str(), &end);
+        REQUIRE(*end == '\0');
+      }
+      rows.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], item[9]});
     }
     return rows;
   }

@@ -57,4 +57,39 @@ out=$("$python" "$plot" -case "$c" -fracture fracture -times 1 -o "$work/f.png" 
 ((rc == 0)) || fail "-o/-convergence run: exit $rc: $out"
 isPng "$work/f.png" || fail "-o: $work/f.png missing or not a PNG"
 isPng "$work/c.png" || fail "-convergence: $work/c.png missing or not a PNG"
+# -help (OpenFOAM style) as well as -h: usage on stdout, exit 0.
+for opt in -help -h; do
+  out=$("$python" "$plot" $opt 2>&1); rc=$?
+  ((rc == 0)) || fail "$opt: exit $rc: $out"
+  grep -qF "usage: plotFracture" <<<"$out" || fail "$opt: no usage: $out"
+done
+
+# The ST axis and the mu_f line only where they mean something: a Coulomb law with
+# compressed nodes. The paper benchmark is one; tension, Tresca and frictionless are not.
+grep -qF "fracture_fracture.png (slip tendency and slip)" <<<"$(
+  "$python" "$plot" -case "$c" -noConvergence 2>&1)" || fail "paperBenchmark: no ST panel"
+variant() {  # name, then sed expressions on 0/D and constant/fractureProperties
+  local v=$work/$1; shift
+  rm -rf "$v" && cp -r "$src/cases/paperBenchmark" "$v" && "$v/Allclean" >/dev/null
+  sed -i "$1" "$v/0/D"; sed -i "$2" "$v/constant/fractureProperties"
+  "$split" -case "$v" >"$v/log.splitFractureNodes" 2>&1 || fail "$v: split failed"
+  "$solver" -case "$v" >"$v/log.frictionSolver" 2>&1 || fail "$v: solver failed"
+  "$python" "$plot" -case "$v" -noConvergence 2>&1
+}
+out=$(variant tension 's/(1 (-0.02 -0.025))/(1 (-0.02 0.025))/' 's/x/x/')
+grep -qF "(tractions and slip)" <<<"$out" || fail "tension: ST panel drawn: $out"
+out=$(variant tresca 's/x/x/' 's/law *coulomb;/law tresca; threshold 0.01;/; s/frictionCoefficient 0.2;//')
+grep -qF "(tractions and slip)" <<<"$out" || fail "tresca: ST panel drawn: $out"
+out=$(variant frictionless 's/x/x/' 's/law *coulomb;/law frictionless;/; s/frictionCoefficient 0.2;//')
+grep -qF "(tractions and slip)" <<<"$out" || fail "frictionless: ST panel drawn: $out"
+
+# Tips: state tip, nan tractions; plotted without an error.
+ic=$work/inclinedCrack
+cp -r "$src/cases/inclinedCrack" "$ic" && "$ic/Allclean" >/dev/null
+"$split" -case "$ic" >"$ic/log.splitFractureNodes" 2>&1 || fail "inclinedCrack: split failed"
+"$solver" -case "$ic" >"$ic/log.frictionSolver" 2>&1 || fail "inclinedCrack: solver failed"
+grep -q " nan nan nan nan tip$" "$ic/1/fractures/crack.dat" || fail "inclinedCrack: no tip row"
+out=$("$python" "$plot" -case "$ic" -noConvergence 2>&1) || fail "inclinedCrack: $out"
+grep -qF "(slip tendency and slip)" <<<"$out" || fail "inclinedCrack: $out"
+isPng "$ic/postProcessing/fracture_crack.png" || fail "inclinedCrack: no PNG"
 echo "plotFracture: ok"

@@ -120,25 +120,42 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     if (!e.is_directory() || name == "0" || *end != '\0' || name[0] == '.') continue;
     ++sum.steps;
     INFO("time folder " << name);
-    // No NaN or Inf anywhere in what was written.
+    // No NaN or Inf anywhere in what was written, except the traction columns of a tip's
+    // row (sigmaN tau ST residual: a tip has no traction, written as nan).
     for (const auto& f : fs::recursive_directory_iterator(e.path())) {
       if (!f.is_regular_file()) continue;
-      const std::string text = readText(f.path());
-      for (const char* bad : {"nan", "NaN", "inf", "Inf"}) {
-        INFO(f.path().string());
-        CHECK(text.find(bad) == std::string::npos);
+      INFO(f.path().string());
+      std::istringstream in(readText(f.path()));
+      for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> items;
+        std::istringstream s(line);
+        for (std::string item; s >> item;) items.push_back(item);
+        const bool tipRow = f.path().extension() == ".dat" && items.size() == 10 && items[9] == "tip";
+        INFO(line);
+        for (std::size_t i = 0; i < items.size(); ++i) {
+          if (tipRow && i >= 5 && i <= 8) {
+            CHECK(items[i] == "nan");
+            continue;
+          }
+          for (const char* bad : {"nan", "NaN", "inf", "Inf"}) CHECK(items[i].find(bad) == std::string::npos);
+        }
       }
     }
     const auto status = readStatus(e.path() / "solverStatus");
     REQUIRE(status.count("status"));
     sum.statuses.push_back(status.at("status"));
     CHECK((status.at("status") == "converged" || status.at("status") == "maxIterations" ||
-           status.at("status") == "stalled" || status.at("status") == "diverged"));
+           status.at("status") == "stalled" || status.at("status") == "diverged" ||
+           status.at("status") == "inaccurate"));
     // Equilibrium to round-off: the factor is exact up to κ·ε; 1e-8 leaves room for
     // the ill-conditioned cases (ν → 0.5, slivers).
     CHECK(std::stod(status.at("equilibriumResidual")) <= 1e-8);
     for (const auto& f : fractures) {
-      const auto rows = c.table(name, f);
+      auto rows = c.table(name, f);
+      // A tip has no traction (nan): leave it out of the norms and the check below.
+      rows.erase(std::remove_if(rows.begin(), rows.end(), [](const Row& r) { return r.state == "tip"; }),
+                 rows.end());
+      REQUIRE(!rows.empty());
       double sigmaMax = 0, betaMax = 0;
       for (const Row& r : rows) {
         sigmaMax = std::max({sigmaMax, std::abs(r.tau), std::abs(r.sigmaN)});
@@ -153,8 +170,10 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
   // J never increases within a step (Newton's merit line search; Armijo's decrease rule).
   std::istringstream hist(readText(c.dir() / "postProcessing" / "convergence.dat"));
   double lastTime = NAN, lastJ = 0;
+  int records = 0;
   for (std::string line; std::getline(hist, line);) {
     if (line.empty() || line[0] == '#') continue;
+    ++records;
     std::istringstream s(line);
     double t, k, J;
     s >> t >> k >> J;
@@ -163,6 +182,7 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     lastTime = t;
     lastJ = J;
   }
+  CHECK(records > 0);  // an empty history would check nothing
   return sum;
 }
 
@@ -258,6 +278,42 @@ TEST_CASE("stability: slivers and strongly graded meshes along the fracture", "[
     const int rc = runWithMesh(c, m);
     checkRun(c, {"fracture"}, rc);
     CHECK(rc == 0);
+  }
+}
+
+TEST_CASE("stability: slivers of 1e-11 and 2e-12: an honest status or an honest diagnosis",
+          "[stability]") {
+  // Rows of that height beside the fracture in a well-held unit square. At 1e-11 the
+  // matrix still factors but round-off exceeds the tolerance: before, the step said
+  // 'converged' with |D|/|Sigma| ~ 2e-6. At 2e-12 it is singular to working precision (the
+  // mesh reader refuses triangles below 1e-12 of their longest edge squared, ~1e-13 here):
+  // before, the message asked whether the Dirichlet conditions stop rigid-body motion.
+  for (const double thin : {1e-11, 2e-12}) {
+    DYNAMIC_SECTION("sliver height " << thin) {
+      std::vector<double> ys;
+      const int n = 20;
+      for (int j = 0; j <= n / 2 - 1; ++j) ys.push_back(j * (0.5 - thin) / (n / 2 - 1));
+      ys.push_back(0.5);
+      for (int j = 0; j <= n / 2 - 1; ++j) ys.push_back(0.5 + thin + j * (0.5 - thin) / (n / 2 - 1));
+      const Mesh m = gridMesh(uniform(n), ys, {{n / 2, 0, n, 5}});
+      Case c("paperBenchmark", thin > 5e-12 ? "stab-sliver-1e-11" : "stab-sliver-2e-12");
+      const int rc = runWithMesh(c, m);
+      INFO(c.log());
+      if (thin > 5e-12) {
+        const RunSummary s = checkRun(c, {"fracture"}, rc);
+        REQUIRE(s.statuses.size() == 1);
+        const double rel = std::stod(readStatus(c.dir() / "1" / "solverStatus").at("relResidual"));
+        // The case's tolerance is 1e-10: the status must agree with the residual written.
+        CHECK((s.statuses[0] == "converged") == (rel <= 1e-10));
+        CHECK(s.statuses[0] == "inaccurate");  // what this mesh gives: the test has teeth
+        CHECK(rc == 3);
+      } else {
+        CHECK(rc == 4);
+        CHECK_THAT(c.log(), Catch::Contains("conditioning"));
+        CHECK_THAT(c.log(), Catch::Contains("aspect ratio"));
+        CHECK_THAT(c.log(), !Catch::Contains("rigid"));
+      }
+    }
   }
 }
 

@@ -2,28 +2,36 @@
 """plotFracture: plots of a solved case's fracture tables and convergence history.
 
 Figure 1, per fracture (default <case>/postProcessing/fracture_<name>.png):
-  top:    slip tendency ST = |tau| / -sigma_n along the arclength s, one curve per time,
+  top:    for a Coulomb fracture (law coulomb or coulombCohesion, mu_f > 0) with compressed
+          nodes:
+          the slip tendency ST = |tau| / -sigma_n along the arclength s, one curve per time,
           with the friction coefficient mu_f of constant/fractureProperties as a dashed line
-          (Coulomb: ST <= mu_f, equality where the fracture slips);
+          (Coulomb: ST <= mu_f, equality where the fracture slips). Otherwise (tresca,
+          frictionless, mu_f = 0, or a fracture in tension, where ST and mu_f mean nothing): the
+          tractions sigma_n and tau [Pa] along s.
   bottom: the accumulated slip [m] along s, one curve per time.
+Tips (state 'tip': a single node, no traction) are left out of the traction and ST curves;
+their slip, 0 (the jump is held there), is drawn.
 Figure 2 (default <case>/postProcessing/convergence.png, when postProcessing/convergence.dat
 exists): J and the relative residual |D|/|Sigma| against the iteration, log scale, one curve
 per time step.
 
 Input: <case>/<time>/fractures/<name>.dat as frictionSolver writes it (README.md,
-"frictionSolver": a "# s x y slip ..." header line, a "# status ..." line, then rows) and
-<case>/postProcessing/convergence.dat (columns time iteration J relResidual stepNorm after a
-"#" header). Time folders are the numeric folder names other than 0.
+"frictionSolver": a "# s x y slip ..." header line, a "# status ..." line, then rows; "nan"
+in a tip's traction columns) and <case>/postProcessing/convergence.dat (columns time
+iteration J relResidual stepNorm after a "#" header). Time folders are the numeric folder
+names other than 0.
 
 Usage:
   plotFracture.py -case DIR [-fracture NAME] [-times t1,t2,...] [-o out.png]
-                  [-convergence out.png] [-noConvergence]
+                  [-convergence out.png] [-noConvergence] [-help]
   -fracture   one fracture (default: every fracture found in the time folders)
   -times      times to plot, as numbers (default: every time folder)
   -o          output of the fracture figure (needs -fracture when there are several)
 Sample run:
   /usr/bin/python3 utilities/plotFracture/plotFracture.py -case cases/paperBenchmark
-Errors (missing case, no time folders, unknown fracture or time) go to stderr, exit 1.
+Prints one line per figure written, saying what its top panel shows. Errors (missing case,
+no time folders, unknown fracture or time) go to stderr, exit 1.
 Run it with Debian's /usr/bin/python3, which sees python3-matplotlib.
 """
 import argparse
@@ -93,8 +101,9 @@ def stripComments(text):
     return re.sub(r"//[^\n]*", " ", text)
 
 
-def frictionCoefficient(case, fracture):
-    """mu_f of the fracture's sub-dictionary of constant/fractureProperties, or None."""
+def fractureEntry(case, fracture, key):
+    """The value of 'key' in the fracture's sub-dictionary of constant/fractureProperties,
+    as a string, or None."""
     path = os.path.join(case, "constant", "fractureProperties")
     try:
         with open(path) as f:
@@ -104,11 +113,20 @@ def frictionCoefficient(case, fracture):
     block = re.search(r"(?:^|[\s;}])" + re.escape(fracture) + r"\s*\{([^{}]*)\}", text)
     if not block:
         return None
-    m = re.search(r"(?:^|[\s;])frictionCoefficient\s+([^;\s]+)\s*;", block.group(1))
+    m = re.search(r"(?:^|[\s;])" + key + r"\s+([^;\s]+)\s*;", block.group(1))
+    return m.group(1) if m else None
+
+
+def frictionCoefficient(case, fracture):
+    """mu_f of the fracture's sub-dictionary of constant/fractureProperties, or None."""
+    value = fractureEntry(case, fracture, "frictionCoefficient")
     try:
-        return float(m.group(1)) if m else None
+        return float(value) if value is not None else None
     except ValueError:
         return None
+
+
+COULOMB_LAWS = ("coulomb", "coulombCohesion")
 
 
 def statusWord(status):
@@ -118,21 +136,43 @@ def statusWord(status):
 
 
 def plotFracture(case, name, times, out):
+    """Draw figure 1; returns what the top panel shows ("slip tendency" or "tractions")."""
+    law = fractureEntry(case, name, "law")
     mu = frictionCoefficient(case, name)
-    fig, (axST, axSlip) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True)
-    colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(times) - 1) for i in range(len(times))])
-    for t, color in zip(times, colors):
+    tables = []
+    for t in times:
         cols, status = readTable(os.path.join(case, t, "fractures", name + ".dat"))
-        word = statusWord(status)
+        tables.append((t, cols, statusWord(status)))
+    # ST = |tau| / -sigma_n and the line ST = mu_f mean something only for a Coulomb law at
+    # compressed nodes; a tip (no traction) counts for nothing.
+    compressed = any(state in ("stick", "slip") and sigmaN < 0
+                     for _, cols, _ in tables
+                     for state, sigmaN in zip(cols["state"], cols.get("sigmaN", [])))
+    showST = law in COULOMB_LAWS and compressed and (mu is None or mu > 0)
+    fig, (axTop, axSlip) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True)
+    colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(times) - 1) for i in range(len(times))])
+    for (t, cols, word), color in zip(tables, colors):
         label = f"t = {t}" + (f" ({word})" if word and word != "converged" else "")
-        axST.plot(cols["s"], cols["ST"], ".-", color=color, ms=3, lw=1, label=label)
+        keep = [i for i, state in enumerate(cols["state"]) if state != "tip"]
+        s = [cols["s"][i] for i in keep]
+        if showST:
+            axTop.plot(s, [cols["ST"][i] for i in keep], ".-", color=color, ms=3, lw=1, label=label)
+        else:
+            for key, symbol, style in (("sigmaN", r"$\sigma_n$", ".-"), ("tau", r"$\tau$", "x--")):
+                if key in cols:
+                    axTop.plot(s, [cols[key][i] for i in keep], style, color=color, ms=3, lw=1,
+                               label=f"{symbol}, {label}")
         axSlip.plot(cols["s"], cols["slip"], ".-", color=color, ms=3, lw=1, label=label)
-    if mu is not None:
-        axST.axhline(mu, color="firebrick", ls="--", lw=1.2, label=f"$\\mu_f$ = {mu:g}")
-    axST.set_ylabel(r"slip tendency ST = $|\tau| / (-\sigma_n)$")
-    axST.set_title(f"{os.path.basename(os.path.abspath(case))}: fracture '{name}'")
-    axST.grid(True, alpha=0.3)
-    axST.legend(fontsize=8)
+    if showST:
+        if mu is not None:
+            axTop.axhline(mu, color="firebrick", ls="--", lw=1.2, label=f"$\\mu_f$ = {mu:g}")
+        axTop.set_ylabel(r"slip tendency ST = $|\tau| / (-\sigma_n)$")
+    else:
+        axTop.set_ylabel(r"traction $\sigma_n$, $\tau$ [Pa]")
+    axTop.set_title(f"{os.path.basename(os.path.abspath(case))}: fracture '{name}'"
+                    + (f" (law {law})" if law else ""))
+    axTop.grid(True, alpha=0.3)
+    axTop.legend(fontsize=8)
     axSlip.set_xlabel("arclength s [m]")
     axSlip.set_ylabel("slip [m]")
     axSlip.grid(True, alpha=0.3)
@@ -140,6 +180,7 @@ def plotFracture(case, name, times, out):
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     plt.close(fig)
+    return "slip tendency" if showST else "tractions"
 
 
 def readConvergence(path):
@@ -197,7 +238,10 @@ def plotConvergence(case, path, times, out):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(prog="plotFracture.py", description=__doc__.split("\n")[0])
+    # OpenFOAM-style single-dash options: -help as well as -h.
+    ap = argparse.ArgumentParser(prog="plotFracture", description=__doc__.split("\n")[0],
+                                 add_help=False)
+    ap.add_argument("-h", "-help", "--help", action="help", help="print this help and exit")
     ap.add_argument("-case", required=True, help="case folder")
     ap.add_argument("-fracture", help="fracture name (default: every fracture)")
     ap.add_argument("-times", help="comma-separated times (default: every time folder)")
@@ -257,8 +301,8 @@ def main(argv):
     for name in names:
         out = a.out or os.path.join(post, f"fracture_{name}.png")
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
-        plotFracture(case, name, times, out)
-        written.append(out)
+        shows = plotFracture(case, name, times, out)
+        written.append(f"{out} ({shows} and slip)")
     history = os.path.join(post, "convergence.dat")
     if not a.noConvergence:
         if os.path.isfile(history):

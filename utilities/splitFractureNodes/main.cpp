@@ -8,7 +8,7 @@
 // writes cases/paperBenchmark/constant/splitMesh and prints a checkMesh-style summary.
 //
 // Exit codes: 0 done; 1 bad input (the message names file:line and what was expected);
-// 2 bad command line.
+// 2 bad command line; 6 an internal or system error (out of memory, …).
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <iomanip>
@@ -157,5 +157,10 @@ int main(int argc, char** argv) {
   } catch (const fs::filesystem_error& e) {
     std::cerr << "\nsplitFractureNodes: error: " << e.what() << "\n";
     return 1;
+  } catch (const std::exception& e) {
+    // Last resort (out of memory, an internal error): a message and a documented code, no abort.
+    std::cout.flush();
+    std::cerr << "\nsplitFractureNodes: internal error: " << e.what() << "\n";
+    return 6;
   }
 }

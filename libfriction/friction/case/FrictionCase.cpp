@@ -1,10 +1,13 @@
 // The case run by frictionSolver: see FrictionCase.hpp.
 #include "friction/case/FrictionCase.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -170,6 +173,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
 FactorStatus FrictionCase::setup(std::ostream& log) {
   system_ = std::make_unique<FractureSystem>(split_, order_, *material_);
   bcs_->fix(system_->dirichlet());
+  findFloatingParts();
   const FactorStatus status = system_->factor(linearSolver_);
   const auto& nodes = system_->controlNodes();
   const Eigen::Index n = static_cast<Eigen::Index>(nodes.size());
@@ -188,7 +192,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     }
   }
   // γ has units of stress/length; its scale-free default is E over the mean fracture edge
-  // length h (METHOD.md §3): then γβ and τ are of the same size for slips of order h·τ/E.
+  // length h (docs/method.md §3): then γβ and τ are of the same size for slips of order h·τ/E.
   if (!gammaAbsolute_)
     gamma_ = hCount > 0 ? gammaRelative_ * material_->youngModulus() / (hSum / hCount) : 1.0;
   // Gradient steps scale like (w/E)², w the smallest lumped weight of Γ (the M of the
@@ -208,9 +212,17 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   // P1 triangles lock for nearly incompressible material (the discrete divergence-free
   // space is too small): the displacement comes out too small. P2 copes far better.
   if (order_ == 1 && !material_->planeStress() && material_->poissonRatio() > 0.45)
-    log << "Warning: nu = " << material_->poissonRatio()
+    log << "Warning: nu = " << std::setprecision(12) << material_->poissonRatio()
         << " with P1 elements: P1 locks for nearly incompressible material (displacements and "
            "slip come out too small); use elementOrder 2\n";
+  // A part that only fractures hold factors fine (the unsplit body is whole), but where its
+  // fractures cannot carry its load it slides without bound: say so before the run.
+  for (const FloatingPart& p : floating_)
+    if (p.heldThroughFracture)
+      log << "Note: the part of the mesh " << p.describe()
+          << " touches no Dirichlet patch: only fracture(s) " << joinWords(p.fractures)
+          << " hold it; where they cannot carry its load (frictionless, tension) it slides "
+             "without bound\n";
   if (int held = system_->numHeldOnDirichlet())
     log << "Note: " << held << " fracture node(s) lie on a Dirichlet patch: their jump is held at zero\n";
   log << "Assemblies: " << system_->numAssemblies() << " stiffness matri"
@@ -221,6 +233,163 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   printSettings(log);
   log << "\n";
   return status;
+}
+
+std::string FloatingPart::describe() const {
+  std::ostringstream s;
+  s << "around (" << std::setprecision(4) << point.x() << ", " << point.y() << "), " << triangles
+    << " triangle" << (triangles == 1 ? "" : "s");
+  return s.str();
+}
+
+namespace {
+
+/// Union-find over node numbers: the connected parts of a triangle mesh.
+struct Parts {
+  std::vector<Index> up;
+  explicit Parts(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0); }
+  Index root(Index i) {
+    while (up[i] != i) i = up[i] = up[up[i]];
+    return i;
+  }
+  void join(Index a, Index b) { up[root(a)] = root(b); }
+};
+
+}  // namespace
+
+void FrictionCase::findFloatingParts() {
+  // Parts of the split mesh (a fracture separates its two sides; a tip joins them) and of
+  // the unsplit mesh (through origin); a part is held when a node of it lies on a Dirichlet
+  // patch.
+  const Mesh& m = split_.mesh;
+  const std::size_t np = m.points.size();
+  Parts split(np), whole(np);
+  for (const auto& tri : m.triangles)
+    for (int a = 1; a < 3; ++a) {
+      split.join(tri[0], tri[a]);
+      whole.join(split_.origin.empty() ? tri[0] : split_.origin[tri[0]],
+                 split_.origin.empty() ? tri[a] : split_.origin[tri[a]]);
+    }
+  std::vector<char> fixedLabel;
+  for (const auto& p : bcs_->patches())
+    if (p.type == BoundaryConditions::Type::fixedDisplacement) {
+      if (p.label >= static_cast<int>(fixedLabel.size())) fixedLabel.resize(p.label + 1, 0);
+      fixedLabel[p.label] = 1;
+    }
+  std::vector<char> held(np, 0), wholeHeld(np, 0);
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    const int l = m.edgeLabel[e];
+    if (l < 0 || l >= static_cast<int>(fixedLabel.size()) || !fixedLabel[l]) continue;
+    for (Index v : m.edges[e]) {
+      held[split.root(v)] = 1;
+      wholeHeld[whole.root(split_.origin.empty() ? v : split_.origin[v])] = 1;
+    }
+  }
+  struct Sum {
+    int triangles = 0;
+    Vector2 centre = Vector2::Zero();
+    double area = 0;
+  };
+  std::map<Index, Sum> sums;
+  Vector2 lo = Vector2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& x : m.points) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  diameter_ = m.points.empty() ? 0.0 : (hi - lo).norm();
+  for (Index t = 0; t < m.numTriangles(); ++t) {
+    const auto& tri = m.triangles[t];
+    const Index r = split.root(tri[0]);
+    if (held[r]) continue;
+    Sum& s = sums[r];
+    const double a = std::abs(m.signedArea(t));
+    ++s.triangles;
+    s.centre += a * (m.points[tri[0]] + m.points[tri[1]] + m.points[tri[2]]) / 3;
+    s.area += a;
+  }
+  floating_.clear();
+  std::map<Index, std::size_t> index;
+  for (auto& [r, s] : sums) {
+    FloatingPart p;
+    p.triangles = s.triangles;
+    const Vector2 centre = s.area > 0 ? Vector2(s.centre / s.area) : Vector2::Zero();
+    double best = std::numeric_limits<double>::infinity();
+    for (Index t = 0; t < m.numTriangles(); ++t) {
+      const auto& tri = m.triangles[t];
+      if (split.root(tri[0]) != r) continue;
+      const Vector2 c = (m.points[tri[0]] + m.points[tri[1]] + m.points[tri[2]]) / 3;
+      if ((c - centre).norm() < best) best = (c - centre).norm(), p.point = c;
+    }
+    p.heldThroughFracture = wholeHeld[whole.root(split_.origin.empty() ? r : split_.origin[r])];
+    index[r] = floating_.size();
+    floating_.push_back(p);
+  }
+  for (const auto& g : split_.fractures)
+    for (const auto* side : {&g.plus, &g.minus})
+      for (Index v : *side) {
+        const auto it = index.find(split.root(v));
+        if (it == index.end()) continue;
+        auto& names = floating_[it->second].fractures;
+        if (std::find(names.begin(), names.end(), "'" + g.name + "'") == names.end())
+          names.push_back("'" + g.name + "'");
+      }
+}
+
+std::string FrictionCase::factorFailureDiagnosis() const {
+  const SparseFactor& f = system_->factorization();
+  std::ostringstream s;
+  s << std::setprecision(4) << "the stiffness matrix could not be factored (" << toString(f.status())
+    << "): ";
+  // 1. Scaling: entries beyond double precision (the case's units).
+  if (!std::isfinite(f.maxAbsEntry()) || f.maxAbsEntry() > 1e250) {
+    s << "its entries overflow double precision (largest |K_ij| " << f.maxAbsEntry()
+      << ", Young's modulus E = " << material_->youngModulus()
+      << " Pa); express the case in units that keep E and the stresses well below 1e300 "
+         "(e.g. MPa or GPa for rock)";
+    return s.str();
+  }
+  // 2. Parts that nothing holds: rigid-body motion.
+  std::vector<const FloatingPart*> loose;
+  for (const FloatingPart& p : floating_)
+    if (!p.heldThroughFracture) loose.push_back(&p);
+  if (!loose.empty()) {
+    s << loose.size() << " part" << (loose.size() == 1 ? "" : "s")
+      << " of the mesh touch no Dirichlet patch and can move as a rigid body:";
+    for (const FloatingPart* p : loose) s << " the part " << p->describe() << ";";
+    s << " fix a patch of each (0/D, type fixedDisplacement)";
+    return s.str();
+  }
+  // 3. Held, but by rollers in one direction only.
+  bool fixesX = false, fixesY = false;
+  for (const auto& p : bcs_->patches())
+    if (p.type == BoundaryConditions::Type::fixedDisplacement) {
+      fixesX |= p.components != FixedComponents::y;
+      fixesY |= p.components != FixedComponents::x;
+    }
+  if (!fixesX || !fixesY) {
+    s << "every part touches a Dirichlet patch, but they fix only the " << (fixesX ? "x" : "y")
+      << " component: the body can slide along " << (fixesX ? "y" : "x")
+      << "; fix that component somewhere (0/D, components)";
+    return s.str();
+  }
+  // 4. Conditioning: the worst-shaped triangle, nearly incompressible material.
+  const Mesh& m = split_.mesh;
+  double worst = 0;
+  Vector2 where = Vector2::Zero();
+  for (Index t = 0; t < m.numTriangles(); ++t) {
+    const auto& tri = m.triangles[t];
+    double longest = 0;
+    for (int a = 0; a < 3; ++a)
+      longest = std::max(longest, (m.points[tri[a]] - m.points[tri[(a + 1) % 3]]).squaredNorm());
+    const double area = std::abs(m.signedArea(t));
+    const double aspect = area > 0 ? longest / (2 * area) : std::numeric_limits<double>::infinity();
+    if (aspect > worst) worst = aspect, where = (m.points[tri[0]] + m.points[tri[1]] + m.points[tri[2]]) / 3;
+  }
+  s << "every part is held, so the matrix is singular to working precision through its "
+       "conditioning (smallest pivot ratio "
+    << f.minPivotRatio() << ", tolerance " << f.pivotTolerance() << "): the worst triangle, at ("
+    << where.x() << ", " << where.y() << "), has aspect ratio (longest edge / height) " << worst
+    << ", nu = " << std::setprecision(12) << material_->poissonRatio()
+    << "; remesh without slivers (aspect ratio below ~1e6)"
+    << (material_->poissonRatio() > 0.49 ? " and keep nu below 0.5 by a margin" : "");
+  return s.str();
 }
 
 Eigen::VectorXd FrictionCase::loadVector(double t) const {
@@ -287,6 +456,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   history.precision(8);
   const std::string controlDict = (fs::path(caseDir_) / "system" / "controlDict").string();
   auto controlStamp = fs::last_write_time(controlDict);
+  bool controlDictGone = false;
   const auto start = std::chrono::steady_clock::now();
   installStopHandlers();
 
@@ -307,7 +477,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       r.report.status = OptimizerStatus::converged;
       r.relResidual = results.back().relResidual;
       last_.beta.setZero();
-    } else {
+    } else try {
       sys.setStep(load, slip_);
       if (n > 0) {
         Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(n);
@@ -323,9 +493,18 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       else
         r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
       // The accepted β once more, so that displacement and tractions on disk belong to it (a
-      // line search may have evaluated a rejected trial last).
+      // line search may have evaluated a rejected trial last). judgeStep() below judges this
+      // state, not the optimizer's last evaluation.
       last_ = problem.evaluate(beta);
       r.relResidual = problem.relativeResidual(last_);
+    } catch (const StopNow& s) {
+      // A second signal: the step is abandoned; nothing of it is written.
+      stoppedEarly_ = std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM") + ", then " +
+                      s.what() + ": the step to time " + time_->timeName(r.time) +
+                      " was abandoned and not written";
+      log << "\nStopped during the step to time " << time_->timeName(r.time) << " ("
+          << stoppedEarly_ << ")\n";
+      break;
     }
     lastLoad = load;
     lastDirichlet = sys.dirichlet().values();
@@ -342,6 +521,16 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         r.maxExcessST = std::max(r.maxExcessST, (std::abs(last_.tau[i]) - std::max(last_.rho[i], 0.0)) /
                                                     -effective);
     }
+    if (!r.reused) judgeStep(r);
+    if (r.nonFinite) {
+      // Nothing non-finite reaches the disk, and later steps would start from it: stop here.
+      log << "Time = " << time_->timeName(r.time) << "  iterations " << r.report.iterations
+          << "  " << toString(r.report.status) << "  [" << r.report.note << "]  (not written)\n"
+          << "\nStopped at time " << time_->timeName(r.time)
+          << ": its results are not finite, later steps would start from them\n";
+      results.push_back(std::move(r));
+      break;
+    }
     slip_ += last_.beta;
     lastBeta = last_.beta;
     for (const auto& h : r.report.history)
@@ -350,8 +539,16 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     history.flush();
 
     // Stop requests: the user edited stopAt in controlDict, or sent SIGINT/SIGTERM.
-    if (fs::last_write_time(controlDict) != controlStamp) {
-      controlStamp = fs::last_write_time(controlDict);
+    std::error_code stampError;
+    const auto stamp = fs::last_write_time(controlDict, stampError);
+    if (stampError) {
+      // Removed or unreadable while running: the run keeps the settings it read at start.
+      if (!controlDictGone) log << "Warning: " << controlDict << " cannot be read any more (" << stampError.message()
+                                << "): the run goes on with the settings read at start\n";
+      controlDictGone = true;
+    } else if (stamp != controlStamp) {
+      controlDictGone = false;
+      controlStamp = stamp;
       try {
         if (time_->rereadStopAt(controlDict)) log << "controlDict changed: stopAt re-read\n";
       } catch (const InputError& e) {
@@ -365,7 +562,12 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
                          (stopAt == TimeControl::StopAt::nextWrite && time_->writes(k));
     const bool write = time_->writes(k) || signalled || stopAt == TimeControl::StopAt::writeNow;
     if (write && stopAt != TimeControl::StopAt::noWriteNow) {
-      writeTimeFolder(r, last_.beta, k);
+      try {
+        writeTimeFolder(r, last_.beta, k);
+      } catch (const InputError& e) {
+        // The case was read fine: a write that fails is the disk's or the system's doing.
+        throw OutputError(e.what());
+      }
       r.written = true;
     }
     log << "Time = " << time_->timeName(r.time) << (r.reused ? "  loads unchanged: previous solution reused" : "")
@@ -396,6 +598,67 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   return results;
 }
 
+void FrictionCase::judgeStep(StepResult& r) const {
+  const FractureSystem& sys = *system_;
+  const auto addNote = [&r](const std::string& note) {
+    r.report.note += (r.report.note.empty() ? "" : "; ") + note;
+  };
+  // 1. Non-finite results (finite input that overflows, e.g. E = 1e300 Pa): diverged.
+  std::vector<std::string> bad;
+  if (!sys.lastSplitDisplacement().allFinite()) bad.push_back("displacement");
+  if (!last_.tau.allFinite() || !last_.sigmaN.allFinite()) bad.push_back("tractions");
+  if (!last_.beta.allFinite() || !(slip_ + last_.beta).allFinite()) bad.push_back("slip");
+  if (!last_.D.allFinite() || !std::isfinite(r.J) || !std::isfinite(r.relResidual) ||
+      !std::isfinite(r.maxExcessST))
+    bad.push_back("residual or J");
+  if (!bad.empty()) {
+    r.nonFinite = true;
+    r.report.status = OptimizerStatus::diverged;
+    std::ostringstream s;
+    s << "non-finite " << joinWords(bad) << ": the numbers overflow double precision (E = "
+      << material_->youngModulus() << " Pa; J = ½‖D‖² squares the stresses); express the case "
+      << "in units that keep E and the stresses well below 1e150 (e.g. MPa or GPa)";
+    addNote(s.str());
+    return;
+  }
+  // 2. The status written is the status of this state: the optimizer judged its own last
+  // evaluation, which for Newton's condensed variant is the dense model, not this solve.
+  const StopRule& rule = optimizer_->stopRule();
+  if (r.report.status == OptimizerStatus::converged && rule.on == StopRule::On::residual &&
+      r.relResidual > rule.tolerance) {
+    r.report.status = OptimizerStatus::inaccurate;
+    std::ostringstream s;
+    s << std::setprecision(3) << "the iteration reached |D|/|Sigma| "
+      << (r.report.history.empty() ? 0.0 : r.report.history.back().relResidual)
+      << " but the state written has " << r.relResidual << " > tolerance " << rule.tolerance
+      << ": round-off of an ill-conditioned system (nu = " << std::setprecision(12)
+      << material_->poissonRatio() << std::setprecision(3) << ", smallest pivot ratio "
+      << sys.factorization().minPivotRatio()
+      << "); loosen the tolerance, use elementOrder 2, or remesh without slivers";
+    addNote(s.str());
+  }
+  // 3. A slip larger than the body: nothing holds part of it.
+  double maxSlip = 0;
+  for (Eigen::Index i = 0; i < sys.size(); ++i)
+    if (sys.freeMask()[i] > 0) maxSlip = std::max(maxSlip, std::abs(slip_[i] + last_.beta[i]));
+  if (diameter_ > 0 && maxSlip > diameter_) {
+    std::ostringstream s;
+    s << std::setprecision(3) << "slip up to " << maxSlip << " m, larger than the body ("
+      << diameter_ << " m): ";
+    std::vector<std::string> parts;
+    for (const FloatingPart& p : floating_)
+      if (p.heldThroughFracture)
+        parts.push_back("the part " + p.describe() + " touches no Dirichlet patch and only " +
+                        joinWords(p.fractures) + " hold" + (p.fractures.size() == 1 ? "s" : "") + " it");
+    if (parts.empty())
+      s << "the fractures cannot carry the load (check the loads and the friction law)";
+    else
+      for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : "") << parts[i];
+    if (!parts.empty()) s << ": fix a patch of it (0/D) or give its fracture friction";
+    addNote(s.str());
+  }
+}
+
 void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, int step) {
   const int precision = time_->writePrecision();
   TimeFolder folder(caseDir_, time_->timeName(r.time));
@@ -419,21 +682,29 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
       if (nodes[k].fracture != static_cast<int>(f)) continue;
       const double sn = last_.sigmaN[k], tau = last_.tau[k];
       const bool held = sys.freeMask()[k] == 0;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
       FractureRow row;
       row.s = nodes[k].arclength;
       row.x = nodes[k].x.x();
       row.y = nodes[k].x.y();
       row.slip = slip_[k];
       row.slipIncrement = beta[k];
-      // At a tip (single node) the two sides are not told apart: no traction is recovered.
-      row.sigmaN = nodes[k].tip ? 0 : sn;
-      row.tau = nodes[k].tip ? 0 : tau;
+      // At a tip (single node) the two sides are not told apart: no traction is recovered,
+      // and the table says so (nan, state tip) rather than show a zero that plots would draw.
+      row.sigmaN = nodes[k].tip ? nan : sn;
+      row.tau = nodes[k].tip ? nan : tau;
       // Slip tendency on the effective normal stress σ_n + p (p = 0 without fracturePressure).
       const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
-      row.ST = (!nodes[k].tip && effective < 0) ? std::abs(tau) / -effective : 0.0;
-      row.D = last_.D[k];
-      // Tips and nodes on Dirichlet patches have their jump held at zero: they stick.
-      row.state = (nodes[k].tip || held) ? "stick" : toString(last_.node[k].state);
+      row.ST = nodes[k].tip ? nan : effective < 0 ? std::abs(tau) / -effective : 0.0;
+      row.residual = nodes[k].tip ? nan : last_.D[k];
+      // Nodes on Dirichlet patches have their jump held at zero: they stick. The law's bound
+      // ρ ≤ 0 frees a node; it is open only where σ'_n ≥ 0 — compressed (frictionless, μ_f = 0)
+      // it slides freely.
+      const SlipState law = last_.node[k].state;
+      row.state = nodes[k].tip ? "tip"
+                  : held       ? "stick"
+                  : law == SlipState::open ? (effective >= 0 ? "open" : "slip")
+                                           : toString(law);
       rows.push_back(row);
     }
     writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), rows,

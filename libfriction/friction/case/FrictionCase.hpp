@@ -16,6 +16,7 @@
 
 #include <iosfwd>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,24 @@
 
 namespace friction {
 
+/// An output or system failure (cannot write, disk full, a file vanished): not the user's
+/// input. frictionSolver exits with status 6 on it.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A connected part of the split mesh (triangles joined through shared split-mesh nodes, so
+/// the two sides of a fracture are different parts) that touches no Dirichlet patch.
+struct FloatingPart {
+  int triangles = 0;
+  Vector2 point = Vector2::Zero();  ///< centroid of the part's triangle nearest its centre
+  bool heldThroughFracture = false;  ///< joined to a held part in the unsplit mesh
+  std::vector<std::string> fractures;  ///< fractures on its boundary
+  /// "around (x, y), N triangles"
+  std::string describe() const;
+};
+
 /// Outcome of one time step.
 struct StepResult {
   double time = 0;
@@ -43,6 +62,7 @@ struct StepResult {
   double equilibrium = 0;  ///< ‖K x − b‖/‖b‖ of the step's final primal solve
   bool written = false;
   bool reused = false;  ///< loads unchanged since the previous step: its solution reused
+  bool nonFinite = false;  ///< the results overflowed: the step is diverged and not written
 };
 
 class FrictionCase {
@@ -58,6 +78,13 @@ class FrictionCase {
   std::vector<StepResult> run(std::ostream& log);
   /// Why run() stopped before endTime ("" if it reached it): stopAt or a signal.
   const std::string& stoppedEarly() const { return stoppedEarly_; }
+
+  /// Why the factorisation failed, in the user's terms: overflow of the matrix entries (the
+  /// case's units), parts of the mesh that nothing holds, or conditioning (the worst
+  /// triangle). Call after setup() returned a status other than ok.
+  std::string factorFailureDiagnosis() const;
+  /// Parts of the split mesh that touch no Dirichlet patch (set by setup()).
+  const std::vector<FloatingPart>& floatingParts() const { return floating_; }
 
   /// Print the active models and settings (the log's first lines).
   void printSettings(std::ostream& log) const;
@@ -76,6 +103,11 @@ class FrictionCase {
   };
 
   void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, int step);
+  /// Judge the state to be written (last_, the primal solve just done): non-finite values
+  /// make the step diverged; a residual above the tolerance makes a 'converged' step
+  /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.
+  void judgeStep(StepResult& r) const;
+  void findFloatingParts();
   Eigen::VectorXd loadVector(double t) const;
   /// Effective fluid pressure per control node at t [Pa] (zero without fracturePressure).
   Eigen::VectorXd fracturePressure(double t) const;
@@ -101,6 +133,8 @@ class FrictionCase {
   Eigen::VectorXd pressure_;  ///< p of the last step, per control node
   Eigen::VectorXd lastBeta_;  ///< increment of the last step (warm start, restart)
   std::string stoppedEarly_;
+  std::vector<FloatingPart> floating_;
+  double diameter_ = 0;  ///< diagonal of the mesh's bounding box [m]
   std::unique_ptr<VtkSeries> vtk_;  ///< ParaView files, when controlDict's writeVTK is on
   /// Restart: the step to continue after, and the state read from its time folder.
   int restartStep(std::ostream& log);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "friction/core/Assert.hpp"
+#include "friction/core/StopRequest.hpp"
 
 namespace friction {
 
@@ -40,6 +41,7 @@ double ControlProblem::dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) c
 }
 
 ControlState ControlProblem::evaluate(const Eigen::VectorXd& beta) {
+  throwIfStopNow();  // a second SIGINT/SIGTERM abandons the step between two solves
   const Eigen::VectorXd b = beta.cwiseProduct(response_.freeMask());
   Eigen::VectorXd tau, sigmaN;
   response_.primal(b, tau, sigmaN);
@@ -70,6 +72,7 @@ ControlState ControlProblem::stateFrom(const Eigen::VectorXd& beta, Eigen::Vecto
 }
 
 Eigen::VectorXd ControlProblem::gradient(const ControlState& s) {
+  throwIfStopNow();
   const Eigen::Index n = size();
   Eigen::VectorXd qt(n), qn(n), local(n);
   for (Eigen::Index i = 0; i < n; ++i) {

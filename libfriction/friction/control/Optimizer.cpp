@@ -7,6 +7,7 @@
 
 #include <Eigen/LU>
 
+#include "friction/core/StopRequest.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 
@@ -18,6 +19,7 @@ const char* toString(OptimizerStatus s) {
     case OptimizerStatus::maxIterations: return "maxIterations";
     case OptimizerStatus::diverged: return "diverged";
     case OptimizerStatus::stalled: return "stalled";
+    case OptimizerStatus::inaccurate: return "inaccurate";
   }
   return "?";
 }
@@ -403,6 +405,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
     Eigen::VectorXd e = Eigen::VectorXd::Zero(n), zero = Eigen::VectorXd::Zero(n), t, sn;
     for (Eigen::Index k = 0; k < n; ++k) {
       if (mask[k] == 0) continue;
+      throwIfStopNow();  // n solves: long on big fractures
       e[k] = 1;
       resp.dual(e, zero, t, &sn);
       e[k] = 0;
@@ -494,6 +497,7 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
     }
     // G v on the free nodes: one dual solve gives S_tt v and S_nt v.
     auto applyG = [&](const Eigen::VectorXd& v) {
+      throwIfStopNow();
       Eigen::VectorXd t, sn;
       resp.dual(v, zero, t, &sn);
       Eigen::VectorXd out(n);

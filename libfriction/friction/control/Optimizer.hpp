@@ -1,6 +1,5 @@
-// Optimizer: minimises J(β) of one time step (METHOD.md §5). Run-time selectable by name
-// from one table in Optimizer.cpp (STYLE.md "Run-time selection"); a later issue adds
-// barzilaiBorwein, lbfgs and semismoothNewton to the same table.
+// Optimizer: minimises J(β) of one time step (docs/method.md §5). Run-time selectable by name
+// from one table in Optimizer.cpp (STYLE.md "Run-time selection").
 #pragma once
 
 #include <functional>
@@ -19,7 +18,12 @@ enum class OptimizerStatus {
   converged,      ///< the stop rule holds
   maxIterations,  ///< the iteration limit came first
   diverged,       ///< J grew without bound (fixed step too large)
-  stalled         ///< the line search found no decrease (J at a kink or at round-off)
+  stalled,        ///< the line search found no decrease (J at a kink or at round-off)
+  /// The iteration met the stop rule on its own evaluations, but the state re-evaluated for
+  /// output (one more primal solve) misses the tolerance: round-off of an ill-conditioned
+  /// system (ν close to 0.5, slivers) is larger than the tolerance asks. Set by the caller
+  /// that judges the written state (FrictionCase), never by an optimizer.
+  inaccurate
 };
 const char* toString(OptimizerStatus s);
 
@@ -128,7 +132,7 @@ class Lbfgs : public Optimizer {
   int maxBacktracks_;
 };
 
-/// [beyond] Semismooth Newton on D(β) = 0 (METHOD.md §5), condensed variant: the interface
+/// [beyond] Semismooth Newton on D(β) = 0 (docs/method.md §5), condensed variant: the interface
 /// operators S_tt and S_nt are assembled densely once per run (one dual solve per fracture
 /// node, reused by every step, since they depend only on the mesh and the Dirichlet
 /// patches); then every iteration is dense work on Γ alone. The generalised Jacobian has,

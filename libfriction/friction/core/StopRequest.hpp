@@ -1,12 +1,31 @@
 // StopRequest: SIGINT/SIGTERM ask a run to stop cleanly — the time loop finishes the current
-// step, writes it (atomically) and exits with a message, instead of dying mid-write.
+// step, writes it (atomically) and exits with a message, instead of dying mid-write. A second
+// signal asks to stop at once: the solve of the current step is abandoned at its next
+// back-substitution (throwIfStopNow) and that step is not written.
 #pragma once
+
+#include <stdexcept>
 
 namespace friction {
 
-/// Install handlers for SIGINT and SIGTERM that only set a flag.
+/// Install handlers for SIGINT and SIGTERM that only set a flag (and say so on stderr).
 void installStopHandlers();
-/// The signal that asked to stop, or 0.
+/// The first signal that asked to stop, or 0.
 int stopRequested();
+/// The signal that asked to stop at once (the second one), or 0.
+int stopNowRequested();
+
+/// Thrown by throwIfStopNow(): the current step is abandoned, nothing of it is written.
+class StopNow : public std::runtime_error {
+ public:
+  explicit StopNow(int signal);
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
+/// Throws StopNow once a second SIGINT/SIGTERM arrived. Cheap: call it per solve.
+void throwIfStopNow();
 
 }  // namespace friction

@@ -25,7 +25,8 @@ Material Material::fromLame(double lambda, double mu, bool planeStress) {
 }
 
 double Material::youngModulus() const {
-  return mu_ * (3.0 * lambda_ + 2.0 * mu_) / (lambda_ + mu_);
+  // The quotient first: μ(3λ + 2μ) alone overflows for E beyond ~1e154 Pa.
+  return mu_ * ((3.0 * lambda_ + 2.0 * mu_) / (lambda_ + mu_));
 }
 
 double Material::poissonRatio() const { return lambda_ / (2.0 * (lambda_ + mu_)); }

@@ -1,5 +1,5 @@
 // SparseFactor: one factorisation of the reduced stiffness matrix, many back-substitutions
-// (METHOD.md §2). Backends behind a small interface; the table below lists every backend.
+// (docs/method.md §2). Backends behind a small interface; the table below lists every backend.
 #include "friction/linalg/SparseFactor.hpp"
 
 #include <Eigen/CholmodSupport>
@@ -139,6 +139,8 @@ const char* toString(FactorStatus status) {
       return "notPositiveDefinite";
     case FactorStatus::failed:
       return "failed";
+    case FactorStatus::nonFinite:
+      return "nonFinite";
   }
   return "unknown";
 }
@@ -168,6 +170,20 @@ FactorStatus SparseFactor::factor(const SparseMatrix& A) {
   const auto start = std::chrono::steady_clock::now();
   ++numFactorizations_;
   rows_ = A.rows();
+  maxAbsEntry_ = 0.0;
+  for (Eigen::Index k = 0; k < A.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+      maxAbsEntry_ = std::isfinite(it.value())
+                         ? std::max(maxAbsEntry_, std::abs(it.value()))
+                         : std::numeric_limits<double>::infinity();
+  // A non-finite entry makes every pivot meaningless: no backend is asked.
+  if (!std::isfinite(maxAbsEntry_)) {
+    status_ = FactorStatus::nonFinite;
+    factored_ = false;
+    minPivotRatio_ = std::numeric_limits<double>::quiet_NaN();
+    factorSeconds_ += secondsSince(start);
+    return status_;
+  }
   status_ = impl_->factor(A);
   factored_ = true;
   minPivotRatio_ = std::numeric_limits<double>::quiet_NaN();

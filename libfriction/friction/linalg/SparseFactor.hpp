@@ -1,5 +1,5 @@
 // SparseFactor: "factor once, solve many" for the symmetric positive definite reduced
-// stiffness matrix (METHOD.md §2: every primal and dual solve of a run reuses one factor).
+// stiffness matrix (docs/method.md §2: every primal and dual solve of a run reuses one factor).
 //
 // Backends, chosen by name:
 //   cholmod         CHOLMOD supernodal LLᵀ (SuiteSparse) through Eigen's CholmodSupernodalLLT;
@@ -27,10 +27,11 @@ enum class FactorStatus {
   ok,                   ///< factor is usable
   notPositiveDefinite,  ///< a pivot was ≤ 0 or negligible: the matrix is singular (e.g. a
                         ///< rigid-body mode left unfixed) or indefinite
-  failed                ///< the backend failed otherwise (out of memory, bad input)
+  failed,               ///< the backend failed otherwise (out of memory, bad input)
+  nonFinite             ///< an entry of the matrix is inf or NaN (overflow: see maxAbsEntry)
 };
 
-/// "ok", "notPositiveDefinite", "failed".
+/// "ok", "notPositiveDefinite", "failed", "nonFinite".
 const char* toString(FactorStatus status);
 
 class SparseFactor {
@@ -68,6 +69,9 @@ class SparseFactor {
   /// Smallest d_k / A_kk of the last factorisation (diagnostics: a tiny value warns of a
   /// nearly singular problem even when the status is ok). NaN before the first factor().
   double minPivotRatio() const { return minPivotRatio_; }
+  /// Largest |A_ij| of the last factorisation's matrix (inf when an entry overflowed or is
+  /// NaN): tells overflow and bad scaling (E in Pa near 1e300) apart from singularity.
+  double maxAbsEntry() const { return maxAbsEntry_; }
 
   /// x = A⁻¹ b (one back-substitution). Requires ok() (debug assert). An Eigen expression
   /// must be evaluated first (VectorXd(expr)): both overloads would accept it.
@@ -96,6 +100,7 @@ class SparseFactor {
   Eigen::Index rows_ = 0;
   double pivotTolerance_ = 1e-10;
   double minPivotRatio_ = std::numeric_limits<double>::quiet_NaN();
+  double maxAbsEntry_ = 0.0;
   long numFactorizations_ = 0;
   long numSolves_ = 0;
   double factorSeconds_ = 0.0;

@@ -1,6 +1,7 @@
 // Field and table files of a time folder: see FieldWriter.hpp.
 #include "friction/output/FieldWriter.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -29,10 +30,18 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
                         const std::string& statusLine, int precision) {
   std::ostringstream out;
   out.precision(precision);
-  out << "# s x y slip slipIncrement sigmaN tau ST D state\n# " << statusLine << "\n";
-  for (const FractureRow& r : rows)
-    out << r.s << " " << r.x << " " << r.y << " " << r.slip << " " << r.slipIncrement << " "
-        << r.sigmaN << " " << r.tau << " " << r.ST << " " << r.D << " " << r.state << "\n";
+  out << "# s x y slip slipIncrement sigmaN tau ST residual state\n# " << statusLine << "\n";
+  // One spelling of NaN ("nan", never "-nan"), which numpy, pandas and VTK read.
+  const auto value = [&out](double v) -> std::ostream& {
+    return std::isnan(v) ? out << "nan" : out << v;
+  };
+  for (const FractureRow& r : rows) {
+    out << r.s << " " << r.x << " " << r.y << " " << r.slip << " " << r.slipIncrement << " ";
+    value(r.sigmaN) << " ";
+    value(r.tau) << " ";
+    value(r.ST) << " ";
+    value(r.residual) << " " << r.state << "\n";
+  }
   writeTextAtomic(path, out.str());
 }
 

@@ -3,8 +3,10 @@
 //    the points of the split mesh, so the jump across a fracture is visible; foamDictionary
 //    reads it.
 //  * writeFractureTable: <time>/fractures/<name>.dat, whitespace-separated, first line
-//    "# s x y slip slipIncrement sigmaN tau ST D state", one row per control node in
-//    arclength order; a second comment line gives the step's solver status.
+//    "# s x y slip slipIncrement sigmaN tau ST residual state", one row per control node in
+//    arclength order; a second comment line gives the step's solver status. state is stick,
+//    slip, open or tip; a tip has no traction: sigmaN, tau, ST and residual are "nan" there
+//    (numpy.loadtxt, pandas and VTK read it as NaN), every other value is finite.
 #pragma once
 
 #include <string>
@@ -21,7 +23,8 @@ void writeDisplacementField(const std::string& path, const std::vector<Vector2>&
                             int precision);
 
 struct FractureRow {
-  double s, x, y, slip, slipIncrement, sigmaN, tau, ST, D;
+  /// residual: the friction law's residual D of the complementarity function [Pa].
+  double s, x, y, slip, slipIncrement, sigmaN, tau, ST, residual;
   std::string state;
 };
 

@@ -74,8 +74,9 @@ int vtkStateCode(const std::string& state) {
   if (state == "stick") return 0;
   if (state == "slip") return 1;
   if (state == "open") return 2;
+  if (state == "tip") return 3;
   throw std::invalid_argument("vtkStateCode: unknown fracture-node state '" + state +
-                              "' (expected stick, slip or open)");
+                              "' (expected stick, slip, open or tip)");
 }
 
 void writeVtu(const std::string& path, const LagrangeSpace& space,
@@ -180,7 +181,7 @@ void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& r
   std::ostringstream s;
   s.precision(precision);
   s << kHeader
-    << "<!-- fracture table as a polyline; point array state: 0 stick, 1 slip, 2 open -->\n"
+    << "<!-- fracture table as a polyline; point array state: 0 stick, 1 slip, 2 open, 3 tip (no traction: nan) -->\n"
     << "<VTKFile type=\"PolyData\"" << kFileAttributes << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\""
@@ -188,7 +189,14 @@ void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& r
     << "      <PointData Scalars=\"ST\">\n";
   const auto array = [&](const char* name, double FractureRow::*field) {
     openArray(s, "Float64", name, 1);
-    for (const FractureRow& r : rows) s << "          " << finite(r.*field) << "\n";
+    // A tip has no traction: NaN, which VTK's ASCII reader (9.1) and ParaView read as NaN.
+    for (const FractureRow& r : rows) {
+      const double v = r.*field;
+      if (std::isnan(v))
+        s << "          nan\n";
+      else
+        s << "          " << finite(v) << "\n";
+    }
     closeArray(s);
   };
   array("s", &FractureRow::s);
@@ -197,7 +205,7 @@ void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& r
   array("sigmaN", &FractureRow::sigmaN);
   array("tau", &FractureRow::tau);
   array("ST", &FractureRow::ST);
-  array("D", &FractureRow::D);
+  array("residual", &FractureRow::residual);
   openArray(s, "Int32", "state", 1);
   for (const FractureRow& r : rows) s << "          " << vtkStateCode(r.state) << "\n";
   closeArray(s);

@@ -40,7 +40,7 @@ constexpr int kVtkTriangle = 5;
 constexpr int kVtkQuadraticTriangle = 22;
 
 /// Integer code of a fracture-node state in the .vtp "state" array: 0 stick, 1 slip,
-/// 2 open. Throws std::invalid_argument for any other string (the solver writes only these).
+/// 2 open, 3 tip. Throws std::invalid_argument for any other string (the solver writes only these).
 int vtkStateCode(const std::string& state);
 
 /// Write the displacement and stress of `u` on the mesh of `space` as a VTK XML unstructured
@@ -63,8 +63,9 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 
 /// Write one fracture's rows as VTK XML poly data (ASCII) at `path`: the points (x, y, 0) [m]
 /// in row order (arclength order) joined by one VTK_POLY_LINE, and point data
-///  s [m], slip [m], slipIncrement [m], sigmaN [Pa], tau [Pa], ST [-], D [Pa] (Float64) and
-///  state (Int32: 0 stick, 1 slip, 2 open; see vtkStateCode).
+///  s [m], slip [m], slipIncrement [m], sigmaN [Pa], tau [Pa], ST [-], residual [Pa] (Float64;
+///  NaN written as "nan" at tips, which have no traction) and state (Int32: 0 stick, 1 slip,
+///  2 open, 3 tip; see vtkStateCode).
 /// The file also says the state coding in an XML comment. No rows: an empty data set (no
 /// points, no line). The folder must exist.
 void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows,

@@ -52,7 +52,7 @@ std::vector<FractureRow> fractureRows(double t) {
     r.sigmaN = t * -1e6 * (1 + s);
     r.tau = t * 1e5 * s;
     r.ST = std::abs(r.tau) / -r.sigmaN;
-    r.D = t * 1e-9 * i;
+    r.residual = t * 1e-9 * i;
     r.state = states[i % 3];
     rows.push_back(r);
   }

@@ -64,7 +64,7 @@ def fractureRows(m):
         sigmaN = -1e6 * (1 + s)
         tau = 1e5 * s
         rows.append(dict(s=s, x=s, y=None, slip=1e-3 * s, slipIncrement=2e-4 * s,
-                         sigmaN=sigmaN, tau=tau, ST=abs(tau) / -sigmaN, D=1e-9 * i,
+                         sigmaN=sigmaN, tau=tau, ST=abs(tau) / -sigmaN, residual=1e-9 * i,
                          state=i % 3))
     return rows
 
@@ -180,7 +180,7 @@ def checkVtp(path, t, a):
     check(all(close(pts[i][0], rows[i]["x"], 1e-12) and close(pts[i][1], a.fractureY, 1e-12)
               and pts[i][2] == 0 for i in range(m)), f"{name}: points (s, yF, 0)")
     pd = p.GetPointData()
-    for key in ("s", "slip", "slipIncrement", "sigmaN", "tau", "ST", "D"):
+    for key in ("s", "slip", "slipIncrement", "sigmaN", "tau", "ST", "residual"):
         arr = pd.GetArray(key)
         if not check(arr is not None and arr.GetNumberOfTuples() == m, f"{name}: array {key}"):
             continue
