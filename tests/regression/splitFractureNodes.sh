@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Regression scenarios for splitFractureNodes on copies of the real cases.
 # Usage: splitFractureNodes.sh BINARY SOURCE_DIR WORK_DIR SCENARIO
+# (frictionSolver is taken from the folder of BINARY, for the scenarios that solve.)
 set -uo pipefail
 bin=$1 src=$2 work=$3 scenario=$4
+solver=$(dirname "$bin")/frictionSolver
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL [$scenario]: $*"; exit 1; }
 expect() { grep -qF -- "$2" <<<"$1" || fail "output lacks '$2'"; }
@@ -16,6 +18,25 @@ run() {  # run the utility; sets out (stdout+stderr) and rc
   out=$("$bin" "$@" 2>&1); rc=$?
   printf '%s\n' "$out"
 }
+
+solve() {  # run frictionSolver; sets out and rc
+  out=$("$solver" "$@" 2>&1); rc=$?
+  printf '%s\n' "$out" | tail -n 5
+}
+
+# gmshCase NAME: a copy of inclinedCrack whose .geo the caller edits with mesh (below); a
+# coarse crack size keeps the solves to a fraction of a second.
+gmshCase() {
+  copyCase inclinedCrack
+  mv "$work/inclinedCrack" "$work/$1"
+  c=$work/$1 geo=$work/$1/constant/mesh/inclinedCrack.geo
+}
+mesh() {  # mesh the case's .geo with gmsh (h = a/4)
+  (cd "$c/constant/mesh" &&
+    gmsh -2 -format msh41 -setnumber h 0.0125 inclinedCrack.geo -o inclinedCrack.msh >gmsh.log 2>&1) ||
+    fail "gmsh failed: $(tail -3 "$c/constant/mesh/gmsh.log")"
+}
+timeFolders() { (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -vx 0); }
 
 case $scenario in
 paperBenchmark)
@@ -115,6 +136,136 @@ foamDictionaryReads)
   for k in points origin triangles regions patches fractures; do expect "$keys" "$k"; done
   label=$(foamDictionary "$c/constant/splitMesh" -entry fractures/fracture/label -value 2>&1)
   [[ $label == 5 ]] || fail "fractures/fracture/label read back as '$label'"
+  ;;
+physicalPoint)
+  # gmsh writes a node for a Physical Point that no surface embeds: a vertex no triangle
+  # uses. It once passed the split and crashed the solver (double free, exit 134).
+  gmshCase physicalPoint
+  printf '%s\n' 'Point(20) = {0.2, 0.8, 0};' 'Physical Point("probe", 7) = {20};' >>"$geo"
+  mesh
+  grep -q '"probe"' "$c/constant/mesh/inclinedCrack.msh" || fail "gmsh wrote no probe point"
+  run -case "$c"
+  ((rc == 0)) || fail "split: exit code $rc"
+  expect "$out" "unused vertices:           1 dropped from $c/constant/mesh/inclinedCrack.msh"
+  expect "$out" "at (0.2 0.8)"
+  solve -case "$c"
+  ((rc == 0)) || fail "solve: exit code $rc (134 = the old crash)"
+  expect "$out" "End"
+  ;;
+hiddenCut)
+  # The square meshed as two surfaces whose common side x = 0.2 is drawn twice (own points,
+  # own lines, never merged): a cut the file does not show. Both lips are also unlabelled.
+  gmshCase hiddenCut
+  cat >"$geo" <<'GEO'
+Mesh.MeshSizeMin = 0.05; Mesh.MeshSizeMax = 0.05;
+Point(1) = {0, 0, 0}; Point(2) = {0.2, 0, 0}; Point(3) = {0.2, 1, 0}; Point(4) = {0, 1, 0};
+Point(5) = {0.2, 0, 0}; Point(6) = {1, 0, 0}; Point(7) = {1, 1, 0}; Point(8) = {0.2, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};
+Point(9) = {0.475, 0.456699, 0}; Point(10) = {0.525, 0.543301, 0};
+Line(9) = {9, 10}; Curve{9} In Surface{2};
+Physical Curve("bottom", 1) = {1, 5};
+Physical Curve("right", 2) = {6};
+Physical Curve("top", 3) = {3, 7};
+Physical Curve("left", 4) = {4};
+Physical Curve("crack", 5) = {9};
+Physical Surface("body", 1) = {1, 2};
+GEO
+  mesh
+  run -case "$c"
+  ((rc == 1)) || fail "hidden cut: exit code $rc, expected 1"
+  expect "$out" "$c/constant/mesh/inclinedCrack.msh: "
+  expect "$out" "pairs of vertices lie at the same place"
+  expect "$out" "(0.2 "
+  expect "$out" "allowCoincidentNodes yes;"
+  [[ ! -e $c/constant/splitMesh ]] || fail "output written despite the error"
+  echo 'allowCoincidentNodes yes;' >>"$c/system/meshDict"
+  run -case "$c"
+  ((rc == 1)) || fail "unlabelled lips: exit code $rc, expected 1"
+  expect "$out" "boundary edges (total length 2) have no label"
+  expect "$out" "defaultPatch <name>;"
+  [[ ! -e $c/constant/splitMesh ]] || fail "output written despite the error"
+  echo 'defaultPatch cut;' >>"$c/system/meshDict"
+  run -case "$c"
+  ((rc == 0)) || fail "accepted cut: exit code $rc"
+  expect "$out" "coincident nodes:          21 pairs, allowed by allowCoincidentNodes"
+  expect "$out" "unlabelled boundary edges: 40, in patch cut (defaultPatch)"
+  expect "$out" "cut             6       40      2             boundary"
+  # 0/D must name the new patch like any other.
+  solve -case "$c"
+  ((rc == 1)) || fail "solve without a condition for 'cut': exit code $rc, expected 1"
+  expect "$out" "cut"
+  # (With 'cut' free the part right of the cut would float in x: that is what the hidden cut
+  # did unasked. Holding the lips in x keeps both parts in place.)
+  sed -i 's/^    right   { type free; }/    right   { type free; }\n    cut     { type fixedDisplacement; components (x); value (0 0); }/' "$c/0/D"
+  solve -case "$c"
+  ((rc == 0)) || fail "solve: exit code $rc"
+  ;;
+unlabelledEdge)
+  # The right side without its Physical Curve: refused; 'defaultPatch right' (free in 0/D)
+  # then gives exactly the result of the labelled mesh.
+  gmshCase labelled
+  mesh
+  run -case "$c"; ((rc == 0)) || fail "labelled split: exit code $rc"
+  solve -case "$c"; ((rc == 0)) || fail "labelled solve: exit code $rc"
+  labelled=$c
+  gmshCase unlabelledEdge
+  sed -i '/^Physical Curve("right", 2)/d' "$geo"
+  mesh
+  run -case "$c"
+  ((rc == 1)) || fail "exit code $rc, expected 1"
+  expect "$out" "$c/constant/mesh/inclinedCrack.msh: "
+  expect "$out" "boundary edges (total length 1) have no label: (1 "
+  expect "$out" "in $c/system/meshDict"
+  [[ ! -e $c/constant/splitMesh ]] || fail "output written despite the error"
+  echo 'defaultPatch right;' >>"$c/system/meshDict"
+  run -case "$c"
+  ((rc == 0)) || fail "defaultPatch: exit code $rc"
+  expect "$out" "in patch right (defaultPatch)"
+  solve -case "$c"; ((rc == 0)) || fail "solve: exit code $rc"
+  # Same mesh, same conditions: the same numbers (the new patch only changes a label).
+  cmp "$labelled/1/fractures/crack.dat" "$c/1/fractures/crack.dat" ||
+    fail "defaultPatch right gives another result than the labelled right side"
+  ;;
+staleSplitMesh)
+  # frictionSolver once ran an old split mesh after ./Allmesh: it must refuse it.
+  gmshCase staleSplitMesh
+  mesh
+  run -case "$c"; ((rc == 0)) || fail "split: exit code $rc"
+  expect "$(cat "$c/constant/splitMesh")" 'meshHash    "fnv1a64:'
+  staleRefused() {  # staleRefused WHAT: the solver refuses, names the fix, writes nothing
+    solve -case "$c"
+    ((rc == 1)) || fail "$1: exit code $rc, expected 1"
+    expect "$out" "$c/constant/splitMesh: "
+    expect "$out" "$2"
+    expect "$out" "splitFractureNodes -case $c -overwrite"
+    [[ -z $(timeFolders "$c") ]] || fail "$1: time folders written: $(timeFolders "$c")"
+    [[ ! -e $c/postProcessing ]] || fail "$1: postProcessing written"
+  }
+  # A new mesh (as ./Allmesh -h makes).
+  (cd "$c/constant/mesh" && gmsh -2 -format msh41 -setnumber h 0.025 inclinedCrack.geo \
+    -o inclinedCrack.msh >gmsh.log 2>&1) || fail "gmsh failed"
+  staleRefused "new mesh" "the mesh file $c/constant/mesh/inclinedCrack.msh changed"
+  run -case "$c" -overwrite; ((rc == 0)) || fail "split again: exit code $rc"
+  # An edited meshDict (here only a comment: the record is of the bytes).
+  echo '// edited' >>"$c/system/meshDict"
+  staleRefused "edited meshDict" "$c/system/meshDict changed"
+  run -case "$c" -overwrite; ((rc == 0)) || fail "split again: exit code $rc"
+  # A split mesh from before the record existed.
+  /usr/bin/python3 - "$c/constant/splitMesh" <<'PY' || fail "cannot remove madeFrom"
+import re, sys
+p = sys.argv[1]
+t = open(p).read()
+t2 = re.sub(r"madeFrom\s*\{[^}]*\}\s*", "", t)
+assert t2 != t
+open(p, "w").write(t2)
+PY
+  staleRefused "no record" "does not record which mesh"
+  run -case "$c" -overwrite; ((rc == 0)) || fail "split again: exit code $rc"
+  solve -case "$c"
+  ((rc == 0)) || fail "current split mesh: exit code $rc"
   ;;
 *) fail "unknown scenario" ;;
 esac

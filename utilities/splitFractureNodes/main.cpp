@@ -45,6 +45,38 @@ std::string patchesAt(const Mesh& mesh, Index v, const std::set<int>& fractureLa
   return s.empty() ? "no patch" : "patch " + s;
 }
 
+// Up to `max` items as "a, b, c, ..." (the summary names a few, the counts say how many).
+template <typename T, typename F>
+std::string few(const std::vector<T>& items, F text, std::size_t max = 3) {
+  std::string s;
+  for (std::size_t i = 0; i < items.size() && i < max; ++i) s += (i ? ", " : "") + text(items[i]);
+  return items.size() > max ? s + ", ..." : s;
+}
+
+void printChecks(const Mesh& mesh, const MeshSettings& settings,
+                 const MeshSettings::MeshFindings& found) {
+  std::cout << "Checks\n    unused vertices:           " << mesh.droppedPoints.size();
+  if (!mesh.droppedPoints.empty())
+    std::cout << " dropped from " << mesh.source << " (used by no triangle, e.g. a gmsh "
+              << "Physical Point): "
+              << few(mesh.droppedPoints, [](const Mesh::DroppedPoint& p) {
+                   return "vertex " + std::to_string(p.number) + " at " + point(p.x);
+                 });
+  std::cout << "\n    coincident nodes:          " << found.coincident.size();
+  if (!found.coincident.empty())
+    std::cout << " pairs, allowed by allowCoincidentNodes (a traction-free cut): "
+              << few(found.coincident, [&](const std::pair<Index, Index>& p) {
+                   return point(mesh.points[p.first]);
+                 });
+  std::cout << "\n    unlabelled boundary edges: " << found.unlabelled.size();
+  if (!found.unlabelled.empty())
+    std::cout << ", in patch " << settings.defaultPatch << " (defaultPatch): "
+              << few(found.unlabelled, [&](const std::array<Index, 2>& e) {
+                   return point(mesh.points[e[0]]) + "-" + point(mesh.points[e[1]]);
+                 });
+  std::cout << "\n\n";
+}
+
 void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {
   std::cout << std::setprecision(6);
   std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ")\n"
@@ -130,16 +162,25 @@ int main(int argc, char** argv) {
                        "system/meshDict once. Run with -overwrite to split it again (from '" +
                            settings.meshFile + "'), or ./Allclean the case");
 
-    // 4. Read the mesh and name its patches.
+    // 4. Read the mesh and name its patches; record what the split is made from (hashed
+    //    before reading, so that a mesh changed meanwhile makes the record stale, not wrong).
+    SplitMeshRecord madeFrom{settings.meshEntry, fileHash(settings.meshFile),
+                             fileHash(settings.dictPath)};
     Mesh mesh = readMesh(settings.meshFile);
     settings.nameLabels(mesh);
     const std::vector<FractureSpec> specs = settings.fractureSpecs(mesh);
 
-    // 5. Split, summarise, write (atomically: a failed run leaves no output).
-    const SplitMesh split = splitFractures(mesh, specs);
+    // 5. What the file does not say but the result depends on: hidden cuts and unlabelled
+    //    boundary edges (refused unless meshDict accepts them).
+    const MeshSettings::MeshFindings findings = settings.checkMesh(mesh);
+
+    // 6. Split, summarise, write (atomically: a failed run leaves no output).
+    SplitMesh split = splitFractures(mesh, specs);
+    split.madeFrom = std::move(madeFrom);
     std::set<int> fractureLabels;
     for (const auto& s : specs) fractureLabels.insert(s.label);
     printSummary(mesh, split, fractureLabels);
+    printChecks(mesh, settings, findings);
 
     std::error_code ec;
     fs::create_directories(output.parent_path(), ec);

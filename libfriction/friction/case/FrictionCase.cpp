@@ -56,6 +56,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   if (!fs::is_regular_file(splitPath))
     throw InputError(splitPath, "cannot open: run splitFractureNodes on the case first");
   split_ = readSplitMesh(splitPath);
+  checkSplitMeshCurrent(caseDir, split_);
 
   const Dictionary mech = readCaseFile(caseDir, "constant/mechanicalProperties");
   const bool planeStress = mech.getBoolOr("planeStress", false);

@@ -6,9 +6,11 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
+#include "friction/mesh/MeshCheck.hpp"
 
 namespace friction {
 
@@ -30,6 +32,7 @@ MeshSettings MeshSettings::read(const std::string& caseDir) {
 
   const std::string mesh = dict.getFileName("mesh");
   s.meshWhere = dict.location("mesh");
+  s.meshEntry = mesh;
   s.meshFile = (fs::path(caseDir) / mesh).lexically_normal().string();
   if (!fs::is_regular_file(s.meshFile))
     dict.fail("mesh", "key 'mesh': the mesh file '" + s.meshFile +
@@ -55,6 +58,16 @@ MeshSettings MeshSettings::read(const std::string& caseDir) {
       dict.fail("fractures", "key 'fractures': '" + f + "' is listed twice");
     s.fractures.push_back({f, dict.location("fractures")});
   }
+
+  if (dict.found("defaultPatch")) {
+    s.defaultPatch = dict.getWord("defaultPatch");
+    s.defaultPatchWhere = dict.location("defaultPatch");
+    if (seen.count(s.defaultPatch))
+      dict.fail("defaultPatch", "key 'defaultPatch': '" + s.defaultPatch +
+                                    "' is a fracture; the unlabelled boundary edges need a "
+                                    "boundary patch (a new name, or a boundary patch's name)");
+  }
+  s.allowCoincidentNodes = dict.getBoolOr("allowCoincidentNodes", false);
 
   dict.checkAllRead();
   return s;
@@ -116,6 +129,82 @@ std::vector<FractureSpec> MeshSettings::fractureSpecs(const Mesh& mesh) const {
     specs.push_back({f.name, label, f.where});
   }
   return specs;
+}
+
+namespace {
+
+std::string pointText(const Vector2& p) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(" << p.x() << " " << p.y() << ")";
+  return s.str();
+}
+
+}  // namespace
+
+MeshSettings::MeshFindings MeshSettings::checkMesh(Mesh& mesh) const {
+  MeshFindings found;
+  found.coincident = coincidentPoints(mesh);
+  if (!found.coincident.empty() && !allowCoincidentNodes) {
+    std::string where;
+    const std::size_t shown = std::min<std::size_t>(found.coincident.size(), 5);
+    for (std::size_t i = 0; i < shown; ++i)
+      where += (i ? ", " : "") + pointText(mesh.points[found.coincident[i].first]);
+    if (shown < found.coincident.size()) where += ", ...";
+    throw InputError(
+        mesh.source,
+        std::to_string(found.coincident.size()) +
+            " pairs of vertices lie at the same place without sharing a triangle side, at " +
+            where +
+            ": a cut hidden in the mesh (e.g. two gmsh curves or points at one place that "
+            "were not merged), which the solver would treat as a traction-free crack. Merge "
+            "them (gmsh: Coherence, or embed the curve with Curve{c} In Surface{s}; for a "
+            "fracture list its patch in 'fractures' of the unsplit mesh), or set "
+            "'allowCoincidentNodes yes;' in " +
+            dictPath + " if the cut is meant");
+  }
+
+  found.unlabelled = unlabelledBoundaryEdges(mesh);
+  if (found.unlabelled.empty()) return found;
+  if (defaultPatch.empty()) {
+    double length = 0;
+    for (const auto& e : found.unlabelled) length += (mesh.points[e[1]] - mesh.points[e[0]]).norm();
+    std::string where;
+    const std::size_t shown = std::min<std::size_t>(found.unlabelled.size(), 3);
+    for (std::size_t i = 0; i < shown; ++i)
+      where += std::string(i ? ", " : "") + pointText(mesh.points[found.unlabelled[i][0]]) + "-" +
+               pointText(mesh.points[found.unlabelled[i][1]]);
+    if (shown < found.unlabelled.size()) where += ", ...";
+    std::ostringstream len;
+    len.precision(6);
+    len << length;
+    throw InputError(
+        mesh.source,
+        std::to_string(found.unlabelled.size()) + " boundary edges (total length " + len.str() +
+            ") have no label: " + where +
+            ". Without one the solver would leave them traction-free unasked. Label them in "
+            "the mesh (a gmsh Physical Curve, a FreeFEM border label), or set "
+            "'defaultPatch <name>;' in " +
+            dictPath + " and give that patch a condition in 0/D (type free for traction-free)");
+  }
+
+  // The patch that takes them: an existing boundary patch of that name, else a new label.
+  int label = -1;
+  int maxLabel = 0;
+  for (const auto& [l, name] : mesh.labelNames) {
+    maxLabel = std::max(maxLabel, l);
+    if (name == defaultPatch) label = l;
+  }
+  if (label < 0) {
+    label = maxLabel + 1;
+    mesh.labelNames[label] = defaultPatch;
+  }
+  for (const auto& e : found.unlabelled) {
+    mesh.edges.push_back(e);
+    mesh.edgeLabel.push_back(label);
+  }
+  found.defaultPatchLabel = label;
+  return found;
 }
 
 }  // namespace friction

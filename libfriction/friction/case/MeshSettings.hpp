@@ -3,6 +3,7 @@
 // errors) before any work is done.
 #pragma once
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,7 +18,16 @@ struct MeshSettings {
   std::string caseDir;
   std::string dictPath;  ///< caseDir/system/meshDict, as used in messages
   std::string meshFile;  ///< path of the mesh file (caseDir joined with the 'mesh' entry)
+  std::string meshEntry;  ///< the 'mesh' entry as written (relative to the case folder)
   SourceLocation meshWhere;
+
+  /// 'defaultPatch': the patch that collects the boundary edges no label covers; empty
+  /// (the default) refuses such edges.
+  std::string defaultPatch;
+  SourceLocation defaultPatchWhere;
+  /// 'allowCoincidentNodes': accept vertices at one place that share no edge (a cut the
+  /// mesh hides); default no.
+  bool allowCoincidentNodes = false;
 
   struct PatchName {
     std::string name;
@@ -46,6 +56,20 @@ struct MeshSettings {
   /// The fractures as labels of the (named) mesh. Error if a name is not a patch of the mesh
   /// (the message lists the patches and suggests the nearest).
   std::vector<FractureSpec> fractureSpecs(const Mesh& mesh) const;
+
+  /// What checkMesh found, for the split summary.
+  struct MeshFindings {
+    std::vector<std::pair<Index, Index>> coincident;  ///< see coincidentPoints
+    std::vector<std::array<Index, 2>> unlabelled;     ///< see unlabelledBoundaryEdges
+    int defaultPatchLabel = -1;  ///< label that took the unlabelled edges, -1 if none
+  };
+
+  /// After nameLabels: find coincident vertices and unlabelled boundary edges (MeshCheck.hpp)
+  /// and refuse them (InputError naming the mesh file, counts and a few coordinates, and the
+  /// meshDict key that accepts them) unless allowCoincidentNodes / defaultPatch accept them.
+  /// The unlabelled edges join the patch 'defaultPatch': a new label, or the label of the
+  /// boundary patch of that name if the mesh has one (never a fracture).
+  MeshFindings checkMesh(Mesh& mesh) const;
 };
 
 }  // namespace friction

@@ -47,6 +47,17 @@ struct FractureGeometry {
   Index numDuplicated() const;
 };
 
+/// What a split mesh was made from, so that the solver can refuse one made from another mesh
+/// or meshDict than the case has now (constant/splitMesh, key 'madeFrom'). Hashes are
+/// FNV-1a 64-bit of the files' bytes (SplitMeshIO.hpp, fileHash); empty in a split mesh
+/// written before the record existed.
+struct SplitMeshRecord {
+  std::string mesh;          ///< the mesh file, relative to the case folder (meshDict's 'mesh')
+  std::string meshHash;      ///< hash of the mesh file
+  std::string meshDictHash;  ///< hash of system/meshDict
+  bool empty() const { return meshHash.empty() && meshDictHash.empty(); }
+};
+
 /// A mesh whose fracture nodes are split. mesh.points holds the unsplit points first (the Ω⁺
 /// copy keeps the original number) and the Ω⁻ copies after them; mesh.edges holds the
 /// boundary patches only (fracture edges live in `fractures`), renumbered to the copies their
@@ -55,6 +66,7 @@ struct SplitMesh {
   Mesh mesh;
   std::vector<Index> origin;  ///< per split-mesh node, its node number in the unsplit mesh
   std::vector<FractureGeometry> fractures;
+  SplitMeshRecord madeFrom;  ///< set by splitFractureNodes, not by splitFractures
 
   /// Number of nodes of the unsplit mesh.
   Index numOriginalPoints() const;

@@ -2,7 +2,13 @@
 #include "friction/fracture/SplitMeshIO.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <map>
+#include <memory>
+#include <unordered_map>
 
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
@@ -11,10 +17,24 @@ namespace friction {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 template <typename T>
 std::vector<int> toInts(const std::vector<T>& v) {
   return std::vector<int>(v.begin(), v.end());
 }
+
+std::uint64_t sideKey(Index a, Index b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+         static_cast<std::uint32_t>(b);
+}
+
+// Appended to every consistency error: the file is the utility's output, so the repair is
+// to make it again.
+const char* const resplit =
+    " (constant/splitMesh is written by splitFractureNodes: split again with "
+    "splitFractureNodes -case <case> -overwrite)";
 
 }  // namespace
 
@@ -63,6 +83,14 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
     w.endDict();
   }
   w.endDict();
+
+  if (!split.madeFrom.empty()) {
+    w.beginDict("madeFrom");
+    w.entryString("mesh", split.madeFrom.mesh);
+    w.entryString("meshHash", split.madeFrom.meshHash);
+    w.entryString("meshDictHash", split.madeFrom.meshDictHash);
+    w.endDict();
+  }
   w.writeAtomic(path);
 }
 
@@ -87,13 +115,56 @@ SplitMesh readSplitMesh(const std::string& path) {
     dict.fail("origin", "key 'origin': " + std::to_string(s.origin.size()) +
                             " entries, expected one per point (" + std::to_string(nPoints) + ")");
 
+  // The unsplit points come first (origin[i] == i), their copies after them.
+  Index numOriginal = 0;
+  while (numOriginal < nPoints && s.origin[numOriginal] == numOriginal) ++numOriginal;
+  for (Index i = numOriginal; i < nPoints; ++i)
+    if (s.origin[i] >= numOriginal)
+      dict.fail("origin", "key 'origin': point " + std::to_string(i) + " is a copy of point " +
+                              std::to_string(s.origin[i]) +
+                              ", expected a copy of one of the unsplit points 0 to " +
+                              std::to_string(numOriginal - 1) +
+                              " (the unsplit points come first, each its own origin)" + resplit);
+
   for (const auto& t : dict.getIntTupleList<3>("triangles")) {
     m.triangles.push_back({checkIndex(dict, "triangles", t[0]), checkIndex(dict, "triangles", t[1]),
                            checkIndex(dict, "triangles", t[2])});
-    if (m.signedArea(m.numTriangles() - 1) <= 0)
+    if (!(m.signedArea(m.numTriangles() - 1) > 0))
       dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numTriangles() - 1) +
                                  " is clockwise or degenerate (expected counter-clockwise)");
   }
+  if (m.triangles.empty()) dict.fail("triangles", "key 'triangles': expected at least one triangle");
+  {
+    std::vector<std::pair<std::array<Index, 3>, Index>> sorted;
+    for (Index t = 0; t < m.numTriangles(); ++t) {
+      std::array<Index, 3> k = m.triangles[t];
+      std::sort(k.begin(), k.end());
+      sorted.emplace_back(k, t);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 1; i < sorted.size(); ++i)
+      if (sorted[i].first == sorted[i - 1].first)
+        dict.fail("triangles", "key 'triangles': triangles " +
+                                   std::to_string(sorted[i - 1].second) + " and " +
+                                   std::to_string(sorted[i].second) +
+                                   " have the same vertices (expected each triangle once)" +
+                                   resplit);
+  }
+  // A point no triangle uses would be a node without stiffness (and no row in the
+  // split-to-unsplit map the solver builds cell by cell).
+  std::vector<char> used(nPoints, 0);
+  std::unordered_map<std::uint64_t, int> sides;
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      used[t[k]] = 1;
+      ++sides[sideKey(t[k], t[(k + 1) % 3])];
+    }
+  for (Index i = 0; i < nPoints; ++i)
+    if (!used[i])
+      dict.fail("points", "key 'points': point " + std::to_string(i) +
+                              " is used by no triangle (expected every point to be a vertex of "
+                              "a triangle)" + resplit);
+  const auto isSide = [&](Index a, Index b) { return sides.count(sideKey(a, b)) > 0; };
   for (long r : dict.getIntList("regions")) m.triangleRegion.push_back(static_cast<int>(r));
   if (m.triangleRegion.size() != m.triangles.size())
     dict.fail("regions", "key 'regions': " + std::to_string(m.triangleRegion.size()) +
@@ -108,6 +179,11 @@ SplitMesh readSplitMesh(const std::string& path) {
     for (const auto& e : p.getIntTupleList<2>("edges")) {
       m.edges.push_back({checkIndex(p, "edges", e[0]), checkIndex(p, "edges", e[1])});
       m.edgeLabel.push_back(label);
+      if (!isSide(m.edges.back()[0], m.edges.back()[1]))
+        p.fail("edges", "key 'edges': the edge (" + std::to_string(e[0]) + " " +
+                            std::to_string(e[1]) +
+                            ") is not a side of any triangle (expected the patch's edges to be "
+                            "triangle sides)" + resplit);
     }
   }
 
@@ -148,11 +224,66 @@ SplitMesh readSplitMesh(const std::string& path) {
       if ((g.plus[i] == g.minus[i]) != (g.kind[i] == FractureNodeKind::tip))
         f.fail("kind", "fracture node " + std::to_string(i) +
                            ": exactly the tips have plus == minus");
+      if (i > 0 && (!isSide(g.plus[i - 1], g.plus[i]) || !isSide(g.minus[i - 1], g.minus[i])))
+        f.fail("plus", "fracture nodes " + std::to_string(i - 1) + " and " + std::to_string(i) +
+                           ": their 'plus' and 'minus' copies must be joined by triangle sides "
+                           "(consecutive nodes along the fracture)" + std::string(resplit));
     }
+    if (n < 2) f.fail("node", "key 'node': expected at least two fracture nodes (one edge)");
     s.fractures.push_back(std::move(g));
+  }
+  if (const Dictionary* made = dict.findDict("madeFrom")) {
+    s.madeFrom.mesh = made->getWord("mesh");
+    s.madeFrom.meshHash = made->getWord("meshHash");
+    s.madeFrom.meshDictHash = made->getWord("meshDictHash");
+    made->checkAllRead();
   }
   dict.checkAllRead();
   return s;
+}
+
+std::string fileHash(const std::string& path) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64-bit offset basis
+  unsigned char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0)
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= buffer[i];
+      h *= 1099511628211ull;  // FNV prime
+    }
+  if (std::ferror(f.get())) throw InputError(path, std::string("cannot read: ") + std::strerror(errno));
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return std::string("fnv1a64:") + hex;
+}
+
+void checkSplitMeshCurrent(const std::string& caseDir, const SplitMesh& split) {
+  const std::string splitPath = (fs::path(caseDir) / "constant" / "splitMesh").string();
+  const std::string redo = ". Split the mesh again: splitFractureNodes -case " + caseDir +
+                           " -overwrite (then run frictionSolver again)";
+  const SplitMeshRecord& made = split.madeFrom;
+  if (made.empty())
+    throw InputError(splitPath, "does not record which mesh and system/meshDict it was made "
+                                "from (written by an older splitFractureNodes), so it may be "
+                                "stale" + redo);
+  const std::string dictPath = (fs::path(caseDir) / "system" / "meshDict").string();
+  if (!fs::is_regular_file(dictPath))
+    throw InputError(splitPath, "was made from " + dictPath + ", which no longer exists" + redo);
+  if (fileHash(dictPath) != made.meshDictHash)
+    throw InputError(splitPath, "is stale: " + dictPath +
+                                    " changed after the mesh was split (its hash is not the "
+                                    "recorded " + made.meshDictHash + ")" + redo);
+  const std::string meshPath = (fs::path(caseDir) / made.mesh).lexically_normal().string();
+  if (!fs::is_regular_file(meshPath))
+    throw InputError(splitPath, "was made from the mesh file " + meshPath +
+                                    ", which no longer exists" + redo);
+  if (fileHash(meshPath) != made.meshHash)
+    throw InputError(splitPath, "is stale: the mesh file " + meshPath +
+                                    " changed after it was split (e.g. ./Allmesh ran after "
+                                    "splitFractureNodes; its hash is not the recorded " +
+                                    made.meshHash + ")" + redo);
 }
 
 }  // namespace friction

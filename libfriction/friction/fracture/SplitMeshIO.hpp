@@ -8,6 +8,8 @@
 //   patches    { <name> { label L; edges N((a b) ...); } ... }
 //   fractures  { <name> { label L; node N(...); plus N(...); minus N(...); kind N(words);
 //                         arclength N(...); normal N((nx ny) ...); tangent N(...); } ... }
+//   madeFrom   { mesh "constant/mesh/square.msh"; meshHash "fnv1a64:…";
+//                meshDictHash "fnv1a64:…"; }    // what it was split from (SplitMeshRecord)
 #pragma once
 
 #include <string>
@@ -19,8 +21,21 @@ namespace friction {
 /// Write atomically (temporary file + rename). precision: significant digits of coordinates.
 void writeSplitMesh(const SplitMesh& split, const std::string& path, int precision = 17);
 
-/// Read and validate (counts, index ranges, counter-clockwise triangles, plus/minus copies
-/// that are copies of the same node). Errors name file:line and the key.
+/// Read and validate what the solver relies on: counts, index ranges, counter-clockwise
+/// triangles each listed once, every point used by a triangle, the unsplit points first with
+/// their copies after them at the same place, patch edges that are boundary sides of the
+/// triangulation, consecutive fracture nodes joined by triangle sides on both copies, plus and
+/// minus copies of the same node. Errors name file:line and the key. A missing 'madeFrom'
+/// (older files) is read as an empty record: checkSplitMeshCurrent refuses it.
 SplitMesh readSplitMesh(const std::string& path);
+
+/// "fnv1a64:" and the FNV-1a 64-bit hash of the file's bytes as 16 hex digits. InputError if
+/// the file cannot be read.
+std::string fileHash(const std::string& path);
+
+/// Refuse (InputError naming caseDir/constant/splitMesh, what changed, and the command that
+/// splits again) a split mesh that was not made from the case's present system/meshDict and
+/// mesh file, or that does not record what it was made from.
+void checkSplitMeshCurrent(const std::string& caseDir, const SplitMesh& split);
 
 }  // namespace friction

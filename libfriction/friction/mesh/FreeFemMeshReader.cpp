@@ -124,6 +124,7 @@ class FreeFemParser {
         failTriangle(s_, defect, mesh_.points, t, "triangle", i + 1, v, fix);
       mesh_.triangles.push_back(t);
       mesh_.triangleRegion.push_back(static_cast<int>(region));
+      numbering_.triangleLine.push_back(s_.lineNumber());
     }
   }
 
@@ -142,11 +143,13 @@ class FreeFemParser {
       checkEdge(s_, e, "edge", i + 1, v);
       mesh_.edges.push_back(e);
       mesh_.edgeLabel.push_back(static_cast<int>(label));
+      numbering_.edgeLine.push_back(s_.lineNumber());
     }
   }
 
   TextScanner& s_;
   Mesh mesh_;
+  FileNumbering numbering_;
   long long nv_ = 0, nt_ = 0, nbe_ = 0;
   int headerLine_ = 0;
 };

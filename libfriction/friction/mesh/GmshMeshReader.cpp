@@ -1,7 +1,8 @@
 // Reader for gmsh ASCII .msh, versions 2.2 and 4.1: $MeshFormat, $PhysicalNames, $Entities
 // (4.1), $Nodes, $Elements; other sections are skipped. Line elements (type 1) become edges
 // labelled by their physical curve, triangles (type 2) take their physical surface as region,
-// points (type 15) are ignored; anything else is an error. Node tags may be arbitrary
+// points (type 15) are ignored (their nodes, used by no triangle, are dropped with every other
+// unused node: see finishMesh); anything else is an error. Node tags may be arbitrary
 // (non-contiguous, in any order); nodes are numbered 0, 1, ... in file order.
 #include <algorithm>
 #include <cmath>
@@ -171,6 +172,8 @@ class GmshParser {
       s_.failAt(elementsLine_,
                 "$Elements holds no 3-node triangles (type 2): expected a 2D mesh (gmsh -2) "
                 "whose surfaces are in physical groups (or Mesh.SaveAll = 1)");
+    numbering_.point = nodeTags_;
+    finishMesh(s_, mesh_, numbering_);
     return std::move(mesh_);
   }
 
@@ -501,6 +504,7 @@ class GmshParser {
     checkEdge(s_, e, "element", element, v);
     mesh_.edges.push_back(e);
     mesh_.edgeLabel.push_back(label);
+    numbering_.edgeLine.push_back(s_.lineNumber());
   }
 
   void addTriangle(const std::array<long long, 3>& v, long long element, int region,
@@ -511,6 +515,7 @@ class GmshParser {
       failTriangle(s_, defect, mesh_.points, t, "element", element, v, clockwiseFix(surface));
     mesh_.triangles.push_back(t);
     mesh_.triangleRegion.push_back(region);
+    numbering_.triangleLine.push_back(s_.lineNumber());
   }
 
   [[noreturn]] void twoRegions(long long surface, long long a, long long b,
@@ -651,6 +656,7 @@ class GmshParser {
 
   TextScanner& s_;
   Mesh mesh_;
+  FileNumbering numbering_;
   int version_ = 0;  // 22 or 41
   int physicalNamesLine_ = 0, entitiesLine_ = 0, nodesLine_ = 0, elementsLine_ = 0;
   std::unordered_map<long long, std::vector<int>> curvePhysical_, surfacePhysical_;

@@ -34,6 +34,15 @@ struct Mesh {
   /// Names of regions where the file gives them (gmsh $PhysicalNames of dimension 2).
   std::map<int, std::string> regionNames;
 
+  /// A vertex of the file that no triangle uses: the readers drop it (and renumber), since
+  /// it would be a node without stiffness. gmsh writes one per `Physical Point` that is not
+  /// embedded in a surface. Kept for the split summary.
+  struct DroppedPoint {
+    long long number;  ///< as the file numbers it (FreeFEM: 1-based position; gmsh: node tag)
+    Vector2 x;
+  };
+  std::vector<DroppedPoint> droppedPoints;
+
   Index numPoints() const { return static_cast<Index>(points.size()); }
   Index numTriangles() const { return static_cast<Index>(triangles.size()); }
 

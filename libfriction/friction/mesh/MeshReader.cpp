@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <memory>
 #include <sstream>
+#include <unordered_map>
 
 #include "friction/mesh/MeshReaderDetail.hpp"
 
@@ -122,6 +123,129 @@ void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, con
                std::to_string(fileVertices[0]) + " to itself (" + std::to_string(fileVertices[0]) +
                " " + std::to_string(fileVertices[1]) +
                "): expected an edge between two different vertices");
+}
+
+namespace {
+
+std::string pointText(const Vector2& p) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
+}
+
+std::uint64_t sideKey(Index a, Index b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+         static_cast<std::uint32_t>(b);
+}
+
+}  // namespace
+
+void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& numbering) {
+  const auto vertexText = [&](Index v) {
+    return std::to_string(numbering.point[v]) + " " + pointText(mesh.points[v]);
+  };
+
+  // A triangle listed twice doubles its stiffness and hides as a valid mesh (each of its
+  // sides then has two triangles, as inside the body).
+  std::vector<std::pair<std::array<Index, 3>, Index>> sorted;
+  sorted.reserve(mesh.triangles.size());
+  for (Index t = 0; t < mesh.numTriangles(); ++t) {
+    std::array<Index, 3> key = mesh.triangles[t];
+    std::sort(key.begin(), key.end());
+    sorted.emplace_back(key, t);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i].first == sorted[i - 1].first) {
+      const int first = numbering.triangleLine[sorted[i - 1].second];
+      const int second = numbering.triangleLine[sorted[i].second];
+      const auto& k = sorted[i].first;
+      scanner.failAt(std::max(first, second),
+                     "the triangle with vertices " + std::to_string(numbering.point[k[0]]) + " " +
+                         std::to_string(numbering.point[k[1]]) + " " +
+                         std::to_string(numbering.point[k[2]]) + " is listed twice (lines " +
+                         std::to_string(std::min(first, second)) + " and " +
+                         std::to_string(std::max(first, second)) +
+                         "): expected each triangle once");
+    }
+
+  // Triangle sides -> how many triangles, and the first two.
+  struct Side {
+    Index tri[2] = {-1, -1};
+    int count = 0;
+  };
+  std::unordered_map<std::uint64_t, Side> sides;
+  sides.reserve(mesh.triangles.size() * 2);
+  for (Index t = 0; t < mesh.numTriangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Index a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      Side& side = sides[sideKey(a, b)];
+      if (side.count == 2)
+        scanner.failAt(numbering.triangleLine[t],
+                       "the side from vertex " + vertexText(a) + " to vertex " + vertexText(b) +
+                           " is a side of a third triangle here (the others are at lines " +
+                           std::to_string(numbering.triangleLine[side.tri[0]]) + " and " +
+                           std::to_string(numbering.triangleLine[side.tri[1]]) +
+                           "): expected a 2D triangulation, where a side bounds at most two "
+                           "triangles (overlapping or folded triangles?)");
+      side.tri[side.count++] = t;
+    }
+
+  // Labelled edges: sides of the triangulation, each label once per side.
+  std::vector<std::pair<std::pair<std::uint64_t, int>, std::size_t>> edgeKeys;
+  edgeKeys.reserve(mesh.edges.size());
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    const auto [a, b] = mesh.edges[e];
+    if (!sides.count(sideKey(a, b)))
+      scanner.failAt(numbering.edgeLine[e],
+                     "the edge from vertex " + vertexText(a) + " to vertex " + vertexText(b) +
+                         " (label " + std::to_string(mesh.edgeLabel[e]) +
+                         ") is not a side of any triangle: expected labelled edges on the "
+                         "triangulation (the boundary, or a curve embedded in the surface, e.g. "
+                         "gmsh's Curve{c} In Surface{s})");
+    edgeKeys.push_back({{sideKey(a, b), mesh.edgeLabel[e]}, e});
+  }
+  // An edge listed twice with one label would carry its boundary load twice.
+  std::sort(edgeKeys.begin(), edgeKeys.end());
+  for (std::size_t i = 1; i < edgeKeys.size(); ++i)
+    if (edgeKeys[i].first == edgeKeys[i - 1].first) {
+      const std::size_t e = edgeKeys[i].second;
+      const int first = numbering.edgeLine[edgeKeys[i - 1].second];
+      const int second = numbering.edgeLine[e];
+      scanner.failAt(std::max(first, second),
+                     "the edge from vertex " + vertexText(mesh.edges[e][0]) + " to vertex " +
+                         vertexText(mesh.edges[e][1]) + " is listed twice with label " +
+                         std::to_string(mesh.edgeLabel[e]) + " (lines " +
+                         std::to_string(std::min(first, second)) + " and " +
+                         std::to_string(std::max(first, second)) +
+                         "): expected each edge once per label");
+    }
+
+  // Vertices no triangle uses carry no stiffness: the solver's matrices would have empty
+  // rows for them. Drop them and renumber.
+  std::vector<Index> newNumber(mesh.points.size(), -1);
+  for (const auto& t : mesh.triangles)
+    for (Index v : t) newNumber[v] = 0;
+  Index next = 0;
+  std::vector<Vector2> kept;
+  kept.reserve(mesh.points.size());
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    if (newNumber[v] < 0) {
+      mesh.droppedPoints.push_back({numbering.point[v], mesh.points[v]});
+      continue;
+    }
+    newNumber[v] = next++;
+    kept.push_back(mesh.points[v]);
+  }
+  if (mesh.droppedPoints.empty()) return;
+  mesh.points = std::move(kept);
+  for (auto& t : mesh.triangles)
+    for (Index& v : t) v = newNumber[v];
+  // Every edge is a triangle side (checked above), so its vertices are kept.
+  for (auto& e : mesh.edges)
+    for (Index& v : e) v = newNumber[v];
 }
 
 void checkFinite(const TextScanner& scanner, double x, double y, const char* kind,

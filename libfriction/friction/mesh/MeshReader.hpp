@@ -3,7 +3,10 @@
 //
 // Every error is an InputError naming file:line and what was expected: truncated files,
 // counts that disagree, indices out of range, NaN/Inf coordinates, zero-area or clockwise
-// triangles, unsupported element types, non-planar (z != 0) gmsh nodes, binary gmsh files.
+// triangles, triangles listed twice, sides of more than two triangles, labelled edges that
+// are no side of a triangle or are listed twice with one label, unsupported element types,
+// non-planar (z != 0) gmsh nodes, binary gmsh files. Vertices that no triangle uses are
+// dropped (the rest renumbered) and listed in Mesh::droppedPoints.
 #pragma once
 
 #include <string>

@@ -51,6 +51,20 @@ TriangleDefect triangleDefect(const std::vector<Vector2>& points,
 void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, const char* kind,
                long long number, const std::array<long long, 2>& fileVertices);
 
+/// Where each item of a parsed mesh came from, for the whole-mesh checks of finishMesh.
+struct FileNumbering {
+  std::vector<long long> point;  ///< per vertex, its number in the file (FreeFEM position, gmsh tag)
+  std::vector<int> triangleLine;  ///< per triangle, its line
+  std::vector<int> edgeLine;      ///< per labelled edge, its line
+};
+
+/// The checks that need the whole mesh, each an InputError at the line of the offending
+/// item: a triangle listed twice, a side shared by more than two triangles, a labelled edge
+/// that is no side of any triangle, an edge listed twice with the same label. Then drops the
+/// vertices no triangle uses (renumbering triangles and edges) and lists them in
+/// mesh.droppedPoints.
+void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& numbering);
+
 /// Reject a NaN or Inf coordinate at the scanner's current line.
 void checkFinite(const TextScanner& scanner, double x, double y, const char* kind,
                  long long number);
