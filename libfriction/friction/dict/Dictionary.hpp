@@ -134,8 +134,20 @@ class Dictionary {
   /// x strictly increasing.
   Table getTable(const std::string& key) const;
 
+  /// Which of several groups of alternative keys the dictionary uses, e.g. {{"E", "nu"},
+  /// {"lambda", "mu"}}: the index of the group with a key present (the group's keys are then
+  /// read by the caller), def when no key of any group is present. InputError when keys of two
+  /// groups are present ("keys 'E' (line 9) and 'lambda' in <scope> are alternatives: give E
+  /// and nu, or lambda and mu, not both"), or when none is and there is no def. Every key is
+  /// registered as valid.
+  std::size_t alternative(const std::vector<std::vector<std::string>>& groups,
+                          std::optional<std::size_t> def = std::nullopt) const;
+
   /// Throws InputError for the first entry (depth first, file order) that no accessor read:
-  /// "file:line: unknown key 'Youngs' in <scope>; did you mean 'E'? (valid keys: E, nu)".
+  /// "file:line: unknown key 'nus' in <scope>; did you mean 'nu'? (valid keys: E, nu)". The
+  /// suggestion is made only when a valid key is within typing distance (Suggest.hpp). A key
+  /// that another dictionary of the file (below this one, not a sibling) asked for is said to
+  /// belong there: "unknown key 'tolerance' in <file>/control; it belongs in control/optimizer".
   /// Sub-dictionaries that were read are checked recursively.
   void checkAllRead() const;
   /// Mark everything in this dictionary (recursively) as read, e.g. for a block that
