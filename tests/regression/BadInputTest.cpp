@@ -390,7 +390,8 @@ TEST_CASE("bad constant/effects entries name file, line, key and the valid choic
   SECTION("fracturePressure values file with three columns") {
     write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
     writeText(c.dir() / "constant/pressure.dat", "0 1\n0.5 2 7\n1 3\n");
-    solverFails(c, {"constant/pressure.dat:2:", "expected two numbers 's p'", "got '0.5 2 7' (3 items)"});
+    solverFails(c, {"constant/pressure.dat:2:", "expected two numbers 's p'",
+                    "got '0.5 2 7' (3 items)"});
   }
   SECTION("fracturePressure values file with nan") {
     write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
@@ -499,7 +500,8 @@ TEST_CASE("what the reader accepts beyond OpenFOAM's rules reads as the plain fo
   Case plain("paperBenchmark", "lenient-plain");
   REQUIRE(plain.solve() == 0);
   Case c("paperBenchmark", "lenient-edited");
-  writeText(c.dir() / "system/controlDict", "\xEF\xBB\xBF" + readText(c.dir() / "system/controlDict"));
+  const fs::path controlDict = c.dir() / "system/controlDict";
+  writeText(controlDict, "\xEF\xBB\xBF" + readText(controlDict));
   c.edit("constant/mechanicalProperties", "FoamFile\\s*\\{[^}]*\\}", "");
   c.edit("0/D", "value +\\(0 0\\);", "value uniform (0 0);");
   const int rc = c.solve();

@@ -214,8 +214,7 @@ const DictEntry& requireValue(const Dictionary::Impl& d, const std::string& key,
     // A near miss among the keys present is most likely a misspelling of this one.
     std::vector<std::string> present;
     for (const DictEntry& p : d.entries)
-      if (!p.read && editDistance(key, p.key) <= typoDistance(key.size()))
-        present.push_back(p.key);
+      if (!p.read && editDistance(key, p.key) <= typoDistance(key.size())) present.push_back(p.key);
     if (!present.empty()) {
       const DictEntry& p = *d.find(nearest(key, present));  // present: all within reach
       msg += "; is '" + p.key + "' at " + p.where.str() + " a misspelling of it?";
@@ -715,7 +714,8 @@ void askedElsewhere(const Dictionary::Impl& root, const Dictionary::Impl& d,
   const bool sibling = parent == parentOfD;
   if (&here != &d && !sibling && here.asked.count(key)) {
     const bool top = here.scope.size() <= root.scope.size();
-    out.push_back(top ? "the top level of " + root.scope : here.scope.substr(root.scope.size() + 1));
+    out.push_back(top ? "the top level of " + root.scope
+                      : here.scope.substr(root.scope.size() + 1));
   }
   for (const DictEntry& e : here.entries)
     if (e.dict && e.read)
@@ -1048,7 +1048,8 @@ std::size_t Dictionary::alternative(const std::vector<std::vector<std::string>>&
   std::vector<const DictEntry*> first(groups.size(), nullptr);
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (const std::string& k : groups[g])
-      if (const DictEntry* e = impl_->ask(k); e && (!first[g] || e->where.line < first[g]->where.line))
+      if (const DictEntry* e = impl_->ask(k);
+          e && (!first[g] || e->where.line < first[g]->where.line))
         first[g] = e;
   std::optional<std::size_t> chosen;
   for (std::size_t g = 0; g < groups.size(); ++g) {

@@ -19,7 +19,10 @@
 // $name;' with a dictionary copies it and '$name;' merges its entries. An entry used by '$'
 // counts as read. A later entry with the same key replaces an earlier one in its place, and a
 // repeated dictionary is merged into the earlier one, as in OpenFOAM (checked with
-// foamDictionary v1912).
+// foamDictionary v1912). A number is a whole finite decimal token (Number.hpp): "0,9" is a word,
+// refused with the reason wherever a number is expected, and "1e400" is an error when read.
+// Beyond OpenFOAM's rules, on purpose: the FoamFile header is optional (its 'format' must be
+// ascii when given), and a UTF-8 byte-order mark at the start of a file is skipped.
 //
 // Every entry keeps its file:line. Accessors mark an entry as read; checkAllRead() then
 // reports the first entry the program never read, naming its file:line and the nearest
@@ -105,7 +108,8 @@ class Dictionary {
   const std::vector<Value>& values(const std::string& key) const;
 
   // Typed access. Each marks the entry as read and throws InputError with file:line, the
-  // key and what was expected. Vector/list accessors accept a leading "uniform" word.
+  // key and what was expected. A single number or vector may follow "uniform" (a constant
+  // field); a list may follow "uniform", "nonuniform" or "List<type>".
   double getScalar(const std::string& key, Bounds bounds = {}) const;
   double getScalarOr(const std::string& key, double def, Bounds bounds = {}) const;
   long getInt(const std::string& key, Bounds bounds = {}) const;

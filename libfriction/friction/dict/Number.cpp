@@ -20,7 +20,8 @@ std::string_view unsigned_(std::string_view text) {
 /// True if text starts the way a decimal number does after its sign: a digit, or a point and
 /// a digit. from_chars would also take "inf" and "nan", which are not finite numbers.
 bool startsNumeric(std::string_view body) {
-  return !body.empty() && (isDigit(body[0]) || (body.size() > 1 && body[0] == '.' && isDigit(body[1])));
+  return !body.empty() &&
+         (isDigit(body[0]) || (body.size() > 1 && body[0] == '.' && isDigit(body[1])));
 }
 
 std::string lower(std::string_view s) {
@@ -66,8 +67,8 @@ std::string whyNotANumber(std::string_view text) {
   }
   const std::string_view prefix(text.data(), static_cast<std::size_t>(r.ptr - text.data()));
   const std::string_view rest(r.ptr, static_cast<std::size_t>(last - r.ptr));
-  std::string why = "is the number '" + std::string(prefix) + "' followed by '" +
-                    std::string(rest) + "'";
+  std::string why =
+      "is the number '" + std::string(prefix) + "' followed by '" + std::string(rest) + "'";
   if (!rest.empty() && (rest[0] == 'e' || rest[0] == 'E'))
     why += " (an exponent needs digits, e.g. 1e-3)";
   else if (!rest.empty() && !isDigit(rest[0]) && rest[0] != '.' && rest[0] != ',')

@@ -100,7 +100,9 @@ class FracturePressure : public Effect {
     if (d.alternative({{"pressure"}, {"values"}}) == 1) {
       file_ = (std::filesystem::path(caseDir) / d.getFileName("values")).lexically_normal().string();
       std::ifstream in(file_, std::ios::binary);
-      if (!in) d.fail("values", "key 'values': cannot open '" + file_ + "' (relative to the case folder)");
+      if (!in)
+        d.fail("values",
+               "key 'values': cannot open '" + file_ + "' (relative to the case folder)");
       readValues(std::string(std::istreambuf_iterator<char>(in), {}));
     } else {
       pressure_ = TimeFunction::read(d, "pressure", 1);
@@ -119,7 +121,6 @@ class FracturePressure : public Effect {
       p[k] += file_.empty() ? uniform : interpolate(nodes[k].arclength);
     }
   }
-
 
  private:
   /// The values file: per line "s p", s the arclength [m] (increasing), p [Pa]; blank lines
@@ -144,7 +145,8 @@ class FracturePressure : public Effect {
       }
       if (items.empty() || items[0][0] == '#') continue;
       const SourceLocation where{file_, lineNo};
-      const std::string got = ", got '" + std::string(line.substr(0, line.find_last_not_of(" \t\r") + 1)) + "'";
+      const std::string got =
+          ", got '" + std::string(line.substr(0, line.find_last_not_of(" \t\r") + 1)) + "'";
       if (items.size() != 2)
         throw InputError(where, expected + got + " (" + std::to_string(items.size()) +
                                     (items.size() == 1 ? " item)" : " items)"));
@@ -159,8 +161,8 @@ class FracturePressure : public Effect {
         v[k] = *x;
       }
       if (!s_.empty() && !(v[0] > s_.back()))
-        throw InputError(where, expected + " with s increasing" + got + " after s = " +
-                                    formatNumber(s_.back()));
+        throw InputError(
+            where, expected + " with s increasing" + got + " after s = " + formatNumber(s_.back()));
       s_.push_back(v[0]);
       p_.push_back(v[1]);
     }

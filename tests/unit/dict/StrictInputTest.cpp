@@ -25,7 +25,8 @@ namespace {
 const char* const kBom = "\xEF\xBB\xBF";
 
 /// The pressure a fracturePressure effect puts at arclengths s on fracture "crack".
-std::vector<double> pressureAt(const std::unique_ptr<Effect>& effect, const std::vector<double>& s) {
+std::vector<double> pressureAt(const std::unique_ptr<Effect>& effect,
+                               const std::vector<double>& s) {
   std::vector<ControlNode> nodes(s.size());
   for (std::size_t k = 0; k < s.size(); ++k) nodes[k].arclength = s[k];
   Eigen::VectorXd p = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(s.size()));
@@ -40,16 +41,25 @@ std::vector<double> pressureAt(const std::unique_ptr<Effect>& effect, const std:
 // ---------------------------------------------------------------------------------------
 
 TEST_CASE("a number is the whole token and finite", "[dict][numbers]") {
-  for (const auto& [text, value] : std::vector<std::pair<const char*, double>>{
-           {"0", 0}, {"-2", -2}, {"+2", 2}, {"0.9", 0.9}, {".5", 0.5}, {"-.5", -0.5}, {"5.", 5},
-           {"1e-3", 1e-3}, {"1E+3", 1e3}, {"1e-310", 1e-310}, {"1.7e308", 1.7e308}}) {
+  for (const auto& [text, value] :
+       std::vector<std::pair<const char*, double>>{{"0", 0},
+                                                   {"-2", -2},
+                                                   {"+2", 2},
+                                                   {"0.9", 0.9},
+                                                   {".5", 0.5},
+                                                   {"-.5", -0.5},
+                                                   {"5.", 5},
+                                                   {"1e-3", 1e-3},
+                                                   {"1E+3", 1e3},
+                                                   {"1e-310", 1e-310},
+                                                   {"1.7e308", 1.7e308}}) {
     INFO(text);
     REQUIRE(parseNumber(text).has_value());
     CHECK(*parseNumber(text) == value);
   }
-  for (const char* text : {"", "0,9", "1.5.3", "1e", "1e+", "nan", "-nan", "inf", "-inf",
-                           "infinity", "0x10", "2m", "1 ", " 1", "+-1", "--1", "1e400", "-1e400",
-                           "1e-400", ".", "-", "e5"}) {
+  for (const char* text : {"",      "0,9",      "1.5.3",  "1e", "1e+", "nan", "-nan", "inf",
+                           "-inf",  "infinity", "0x10",   "2m", "1 ",  " 1",  "+-1",  "--1",
+                           "1e400", "-1e400",   "1e-400", ".",  "-",   "e5"}) {
     INFO("'" << text << "'");
     CHECK_FALSE(parseNumber(text).has_value());
   }
@@ -61,21 +71,22 @@ TEST_CASE("a mistyped number in a dictionary is refused with the key, line and w
     const char* value;
     const char* why;
   };
-  for (const Bad& b : {Bad{"0,9", "'0,9' has a decimal comma: write 0.9"},
-                       Bad{"1.5.3", "'1.5.3' is the number '1.5' followed by '.3'"},
-                       Bad{"1e", "an exponent needs digits"},
-                       Bad{"nan", "'nan' is not a finite number"},
-                       Bad{"-inf", "'-inf' is not a finite number"},
-                       Bad{"0x10", "'0x10' is hexadecimal"},
-                       Bad{"2m", "without a unit"}}) {
+  for (const Bad& b :
+       {Bad{"0,9", "'0,9' has a decimal comma: write 0.9"},
+        Bad{"1.5.3", "'1.5.3' is the number '1.5' followed by '.3'"},
+        Bad{"1e", "an exponent needs digits"}, Bad{"nan", "'nan' is not a finite number"},
+        Bad{"-inf", "'-inf' is not a finite number"}, Bad{"0x10", "'0x10' is hexadecimal"},
+        Bad{"2m", "without a unit"}}) {
     INFO(b.value);
     const Dictionary d = Dictionary::parse(std::string("x 1;\nE ") + b.value + ";\n", "m");
     const std::string m = inputErrorOf([&] { d.getScalar("E"); });
-    CHECK_THAT(m, StartsWith("m:2: key 'E': expected a number, got '" + std::string(b.value) + "'"));
+    CHECK_THAT(m,
+               StartsWith("m:2: key 'E': expected a number, got '" + std::string(b.value) + "'"));
     CHECK_THAT(m, Contains(b.why));
     // The same inside a vector, a list and a table row: located at the item's line.
     const Dictionary v = Dictionary::parse(std::string("g\n(0\n ") + b.value + ");\n", "m");
-    CHECK_THAT(inputErrorOf([&] { v.getVector("g"); }), StartsWith("m:1: key 'g'") && Contains(b.why));
+    CHECK_THAT(inputErrorOf([&] { v.getVector("g"); }),
+               StartsWith("m:1: key 'g'") && Contains(b.why));
     CHECK_THAT(inputErrorOf([&] { v.getScalarList("g"); }),
                StartsWith("m:3: key 'g': item 1: expected a number") && Contains(b.why));
     const Dictionary t =
@@ -178,9 +189,12 @@ TEST_CASE("edit distance counts a swap of neighbours as one slip and ignores cas
 
 TEST_CASE("a choice far from every valid one gets no 'did you mean'", "[dict][suggest]") {
   const Dictionary d = Dictionary::parse("gradient adjoint;\nlaw coulmb;\n", "s");
-  CHECK(inputErrorOf([&] { d.getChoice("gradient", {"exact", "frozenRho"}); }) ==
-        "s:1: key 'gradient': unknown value 'adjoint' (valid values are: exact, frozenRho)");
-  CHECK(inputErrorOf([&] { d.getChoice("law", {"tresca", "coulomb"}); }) ==
+  CHECK(inputErrorOf([&] {
+          d.getChoice("gradient", {"exact", "frozenRho"});
+        }) == "s:1: key 'gradient': unknown value 'adjoint' (valid values are: exact, frozenRho)");
+  CHECK(inputErrorOf([&] {
+          d.getChoice("law", {"tresca", "coulomb"});
+        }) ==
         "s:2: key 'law': unknown value 'coulmb'; did you mean 'coulomb'? (valid values are: "
         "tresca, coulomb)");
   CHECK(inputErrorOf([&] { Dictionary::parse("alpha 1;\nb $tolerance;\n", "s"); }) ==
@@ -277,7 +291,9 @@ TEST_CASE("keys of two alternatives are named as alternatives", "[dict][alternat
   }
   SECTION("the generic form with a default, as for gamma and gammaRelative") {
     const Dictionary d = Dictionary::parse("gammaRelative 2;\ngamma 1;\n", "c");
-    CHECK(inputErrorOf([&] { d.alternative({{"gamma"}, {"gammaRelative"}}, 1); }) ==
+    CHECK(inputErrorOf([&] {
+            d.alternative({{"gamma"}, {"gammaRelative"}}, 1);
+          }) ==
           "c:2: keys 'gammaRelative' (line 1) and 'gamma' in c are alternatives: give gamma, or "
           "gammaRelative, not both");
     CHECK(Dictionary::parse("zeta 0;\n", "c").alternative({{"gamma"}, {"gammaRelative"}}, 1) == 1);
@@ -312,16 +328,19 @@ TEST_CASE("a fracturePressure values file is read strictly, line by line", "[dic
        {Bad{"0 1\n0.5 0,9\n", 2, "'0.5 0,9': '0,9' has a decimal comma: write 0.9"},
         Bad{"0 0,9\n", 1, "'0 0,9': '0,9' has a decimal comma: write 0.9"},
         Bad{"0 1\n1.5.3 2\n", 2, "'1.5.3 2': '1.5.3' is the number '1.5' followed by '.3'"},
-        Bad{"0 1e\n", 1, "'0 1e': '1e' is the number '1' followed by 'e' (an exponent needs digits, e.g. 1e-3)"},
+        Bad{"0 1e\n", 1,
+            "'0 1e': '1e' is the number '1' followed by 'e' (an exponent needs digits, e.g. 1e-3)"},
         Bad{"0 nan\n", 1, "'0 nan': 'nan' is not a finite number (nan and inf are not accepted)"},
         Bad{"0 inf\n", 1, "'0 inf': 'inf' is not a finite number (nan and inf are not accepted)"},
         Bad{"0 0x10\n", 1, "'0 0x10': '0x10' is hexadecimal: write the number in decimal"},
-        Bad{"0 1e400\n", 1, "'0 1e400': '1e400' is out of the range of a double (nonzero magnitudes from 4.9e-324 to 1.8e308)"},
-        Bad{"0 1MPa\n", 1, "'0 1MPa': '1MPa' is the number '1' followed by 'MPa' (numbers are written without a unit: values are in SI units)"},
-        Bad{"0 one\n", 1, "'0 one': 'one' is not a number"},
-        Bad{"0 1 2\n", 1, "'0 1 2' (3 items)"},
-        Bad{"# s p\n\n0\n", 3, "'0' (1 item)"},
-        Bad{"0 1 # note\n", 1, "'0 1 # note' (4 items)"},
+        Bad{"0 1e400\n", 1,
+            "'0 1e400': '1e400' is out of the range of a double (nonzero magnitudes from 4.9e-324 "
+            "to 1.8e308)"},
+        Bad{"0 1MPa\n", 1,
+            "'0 1MPa': '1MPa' is the number '1' followed by 'MPa' (numbers are written without a "
+            "unit: values are in SI units)"},
+        Bad{"0 one\n", 1, "'0 one': 'one' is not a number"}, Bad{"0 1 2\n", 1, "'0 1 2' (3 items)"},
+        Bad{"# s p\n\n0\n", 3, "'0' (1 item)"}, Bad{"0 1 # note\n", 1, "'0 1 # note' (4 items)"},
         Bad{"0 1\n0 2\n", 2, "'0 2' after s = 0"}}) {
     DYNAMIC_SECTION(b.text) {
       dir.write("constant/p.dat", b.text);
