@@ -1058,9 +1058,11 @@ std::size_t Dictionary::alternative(const std::vector<std::vector<std::string>>&
       const DictEntry* a = first[*chosen];
       const DictEntry* b = first[g];
       if (b->where.line < a->where.line) std::swap(a, b);
+      const bool single = groups[*chosen].size() == 1 && groups[g].size() == 1;
       throw InputError(b->where, "keys '" + a->key + "' (line " + std::to_string(a->where.line) +
                                      ") and '" + b->key + "' in " + impl_->scope +
-                                     " are alternatives: give " + options + ", not both");
+                                     (single ? " are alternatives" : " belong to alternatives") +
+                                     ": give " + options + ", not both");
     }
     chosen = g;
   }

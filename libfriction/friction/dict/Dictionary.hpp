@@ -141,7 +141,7 @@ class Dictionary {
   /// Which of several groups of alternative keys the dictionary uses, e.g. {{"E", "nu"},
   /// {"lambda", "mu"}}: the index of the group with a key present (the group's keys are then
   /// read by the caller), def when no key of any group is present. InputError when keys of two
-  /// groups are present ("keys 'E' (line 9) and 'lambda' in <scope> are alternatives: give E
+  /// groups are present ("keys 'E' (line 9) and 'lambda' in <scope> belong to alternatives: give E
   /// and nu, or lambda and mu, not both"), or when none is and there is no def. Every key is
   /// registered as valid.
   std::size_t alternative(const std::vector<std::vector<std::string>>& groups,

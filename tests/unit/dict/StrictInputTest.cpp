@@ -264,14 +264,16 @@ maxIterations 10;
 TEST_CASE("keys of two alternatives are named as alternatives", "[dict][alternatives]") {
   SECTION("E with lambda") {
     const Dictionary d = Dictionary::parse("E 1e9;\nnu 0.3;\nlambda 1;\n", "mech");
-    CHECK(inputErrorOf([&] { Material::read(d); }) ==
-          "mech:3: keys 'E' (line 1) and 'lambda' in mech are alternatives: give E and nu, or "
-          "lambda and mu, not both");
+    CHECK(
+        inputErrorOf([&] { Material::read(d); }) ==
+        "mech:3: keys 'E' (line 1) and 'lambda' in mech belong to alternatives: give E and nu, or "
+        "lambda and mu, not both");
   }
   SECTION("a mix: lambda with nu") {
     const Dictionary d = Dictionary::parse("nu 0.3;\nlambda 1;\nmu 1;\n", "mech");
-    CHECK_THAT(inputErrorOf([&] { Material::read(d); }),
-               StartsWith("mech:2: keys 'nu' (line 1) and 'lambda' in mech are alternatives"));
+    CHECK_THAT(
+        inputErrorOf([&] { Material::read(d); }),
+        StartsWith("mech:2: keys 'nu' (line 1) and 'lambda' in mech belong to alternatives"));
   }
   SECTION("neither") {
     const Dictionary d = Dictionary::parse("planeStress no;\n", "mech");
