@@ -415,6 +415,10 @@ TEST_CASE("bad constant/effects entries name file, line, key and the valid choic
     write("pore { type fracturePressure; fracture fracture; values \"constant/nothing.dat\"; }\n");
     solverFails(c, {at("constant/effects", 1), "values", "nothing.dat", "cannot open"});
   }
+  SECTION("fracturePressure values naming a folder") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant\"; }\n");
+    solverFails(c, {at("constant/effects", 1), "values", "cannot open", "a file"});
+  }
   SECTION("fracturePressure values file without values") {
     write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
     writeText(c.dir() / "constant/pressure.dat", "# nothing yet\n");

@@ -100,9 +100,9 @@ class FracturePressure : public Effect {
     if (d.alternative({{"pressure"}, {"values"}}) == 1) {
       file_ = (std::filesystem::path(caseDir) / d.getFileName("values")).lexically_normal().string();
       std::ifstream in(file_, std::ios::binary);
-      if (!in)
-        d.fail("values",
-               "key 'values': cannot open '" + file_ + "' (relative to the case folder)");
+      if (!in || std::filesystem::is_directory(file_))
+        d.fail("values", "key 'values': cannot open '" + file_ +
+                             "' (a file, relative to the case folder)");
       readValues(std::string(std::istreambuf_iterator<char>(in), {}));
     } else {
       pressure_ = TimeFunction::read(d, "pressure", 1);
