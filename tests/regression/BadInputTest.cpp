@@ -259,6 +259,23 @@ TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties ent
        "", {"missing key 'threshold'", "> 0"}},
       {"unknownFractureEntry", "constant/fractureProperties", "\\nfracture\\n", "\nfractur\n",
        "fractur", {"fractur", "did you mean 'fracture'"}},
+      {"toleranceInControl", "system/frictionSolution", "gamma +2;", "gamma 2; tolerance 1e-8;",
+       "tolerance 1e-8;",
+       {"unknown key 'tolerance' in", "control; it belongs in control/optimizer"}},
+      {"gammaAndGammaRelative", "system/frictionSolution", "gamma +2;",
+       "gamma 2;\n    gammaRelative 1;", "gammaRelative 1;",
+       {"keys 'gamma'", "and 'gammaRelative'",
+        "are alternatives: give gamma, or gammaRelative, not both"}},
+      {"EWithLambda", "constant/mechanicalProperties", "lambda +1;", "E 1e9;\nlambda 1;",
+       "lambda 1;",
+       {"keys 'E'", "and 'lambda'",
+        "belong to alternatives: give E and nu, or lambda and mu, not both"}},
+      {"decimalComma", "constant/mechanicalProperties", "mu +1;", "mu 0,9;", "mu 0,9;",
+       {"key 'mu'", "expected a number > 0, got '0,9'", "has a decimal comma: write 0.9"}},
+      {"numberOverflow", "constant/mechanicalProperties", "mu +1;", "mu 1e400;", "mu 1e400;",
+       {"number 1e400 is out of the range of a double"}},
+      {"numberWithUnit", "system/controlDict", "deltaT +1;", "deltaT 1s;", "deltaT 1s;",
+       {"key 'deltaT'", "'1s' is the number '1' followed by 's'"}},
   };
   for (const Bad& b : cases) {
     DYNAMIC_SECTION(b.label) {
@@ -277,6 +294,17 @@ TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties ent
         expected.push_back(at(b.file, lineOf(c.dir() / b.file, b.lineText)));
       solverFails(c, expected);
     }
+  }
+  SECTION("a choice far from every valid one gets no 'did you mean'") {
+    Case c("paperBenchmark", "bad-settings-farChoice");
+    split(c);
+    c.edit("system/frictionSolution", "gradient +exact;", "gradient adjoint;");
+    const std::string out =
+        expectFailure(c, "frictionSolver", "-case " + quoted(c.dir()), 1,
+                      {at("system/frictionSolution",
+                          lineOf(c.dir() / "system/frictionSolution", "gradient adjoint;")),
+                       "unknown value 'adjoint' (valid values are: exact, frozenRho)"});
+    CHECK_THAT(out, !Catch::Contains("did you mean"));
   }
   SECTION("no entry for a fracture of the mesh") {
     Case c("paperBenchmark", "bad-settings-noFractureEntry");
@@ -355,6 +383,29 @@ TEST_CASE("bad constant/effects entries name file, line, key and the valid choic
     writeText(c.dir() / "constant/pressure.dat", "# s p\n0 1\n0.5 one\n1 3\n");
     solverFails(c, {"constant/pressure.dat:3:", "0.5 one", "s p"});
   }
+  SECTION("fracturePressure values file with a decimal comma") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
+    writeText(c.dir() / "constant/pressure.dat", "# s p\n0 1\n0.5 0,9\n1 3\n");
+    solverFails(c, {"constant/pressure.dat:3:", "got '0.5 0,9'", "'0,9' has a decimal comma"});
+  }
+  SECTION("fracturePressure values file with three columns") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
+    writeText(c.dir() / "constant/pressure.dat", "0 1\n0.5 2 7\n1 3\n");
+    solverFails(c, {"constant/pressure.dat:2:", "expected two numbers 's p'",
+                    "got '0.5 2 7' (3 items)"});
+  }
+  SECTION("fracturePressure values file with nan") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
+    writeText(c.dir() / "constant/pressure.dat", "0 1\n1 nan\n");
+    solverFails(c, {"constant/pressure.dat:2:", "'nan' is not a finite number"});
+  }
+  SECTION("fracturePressure with both pressure and values") {
+    write("pore { type fracturePressure; fracture fracture;\n"
+          "       pressure 1; values \"constant/pressure.dat\"; }\n");
+    writeText(c.dir() / "constant/pressure.dat", "0 1\n1 2\n");
+    solverFails(c, {at("constant/effects", 2), "keys 'pressure' (line 2) and 'values'",
+                    "are alternatives: give pressure, or values, not both"});
+  }
   SECTION("fracturePressure values file with decreasing arclength") {
     write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
     writeText(c.dir() / "constant/pressure.dat", "0 1\n0.5 2\n0.25 3\n");
@@ -363,6 +414,10 @@ TEST_CASE("bad constant/effects entries name file, line, key and the valid choic
   SECTION("fracturePressure values file that does not exist") {
     write("pore { type fracturePressure; fracture fracture; values \"constant/nothing.dat\"; }\n");
     solverFails(c, {at("constant/effects", 1), "values", "nothing.dat", "cannot open"});
+  }
+  SECTION("fracturePressure values naming a folder") {
+    write("pore { type fracturePressure; fracture fracture; values \"constant\"; }\n");
+    solverFails(c, {at("constant/effects", 1), "values", "cannot open", "a file"});
   }
   SECTION("fracturePressure values file without values") {
     write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
@@ -441,4 +496,28 @@ TEST_CASE("a bad table in 0/D names the patch and the key it is the value of",
   split(c);
   c.edit("0/D", "table \\(\\(0 \\(0 0\\)\\) \\(1 ", "table ((1 (0 0)) (0 ");
   solverFails(c, {"key 'value'", "top"});
+}
+
+TEST_CASE("what the reader accepts beyond OpenFOAM's rules reads as the plain form",
+          "[regression][errors]") {
+  // README "Dictionaries": a byte-order mark is skipped, the FoamFile header is optional and
+  // 'uniform' may precede a constant value. The run must give the same table as the plain case.
+  Case plain("paperBenchmark", "lenient-plain");
+  REQUIRE(plain.solve() == 0);
+  Case c("paperBenchmark", "lenient-edited");
+  const fs::path controlDict = c.dir() / "system/controlDict";
+  writeText(controlDict, "\xEF\xBB\xBF" + readText(controlDict));
+  c.edit("constant/mechanicalProperties", "FoamFile\\s*\\{[^}]*\\}", "");
+  c.edit("0/D", "value +\\(0 0\\);", "value uniform (0 0);");
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  const std::vector<Row> a = plain.table("1", "fracture"), b = c.table("1", "fracture");
+  REQUIRE(!a.empty());
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    // The same input read the same way: the same arithmetic, so the same digits.
+    CHECK(a[i].slip == b[i].slip);
+    CHECK(a[i].sigmaN == b[i].sigmaN);
+  }
 }

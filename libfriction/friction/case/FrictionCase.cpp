@@ -59,19 +59,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   checkSplitMeshCurrent(caseDir, split_);
 
   const Dictionary mech = readCaseFile(caseDir, "constant/mechanicalProperties");
-  const bool planeStress = mech.getBoolOr("planeStress", false);
-  if (mech.found("E") || !mech.found("lambda")) {
-    const double E = mech.getScalar("E", Bounds::positive());
-    const double nu = mech.getScalar("nu", {-1.0, 0.5, true, true});
-    material_ = std::make_unique<Material>(Material::fromYoungPoisson(E, nu, planeStress));
-  } else {
-    const double mu = mech.getScalar("mu", Bounds::positive());
-    const double lambda = mech.getScalar("lambda");
-    if (lambda + 2 * mu / 3 <= 0)
-      mech.fail("lambda", "key 'lambda': expected λ + 2μ/3 > 0 (a positive bulk modulus), got λ = " +
-                              formatNumber(lambda));
-    material_ = std::make_unique<Material>(Material::fromLame(lambda, mu, planeStress));
-  }
+  material_ = std::make_unique<Material>(Material::read(mech));
   mech.checkAllRead();
 
   std::vector<int> fractureLabels;
@@ -121,7 +109,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   order_ = static_cast<int>(sol.getIntOr("elementOrder", 1, {1, 2}));
   linearSolver_ = sol.getChoiceOr("linearSolver", SparseFactor::backendNames(), "cholmod");
   const Dictionary& control = sol.subDict("control");
-  if (control.found("gamma")) {
+  if (control.alternative({{"gamma"}, {"gammaRelative"}}, 1) == 0) {
     gammaAbsolute_ = true;
     gamma_ = control.getScalar("gamma", Bounds::positive());
   } else {

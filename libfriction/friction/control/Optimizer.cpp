@@ -74,7 +74,7 @@ std::unique_ptr<Optimizer> Optimizer::New(const Dictionary& dict) {
   for (const auto& e : optimizerTable)
     if (type == e.name) opt = e.make(dict);
   if (type != "semismoothNewton") {
-    if (dict.found("alpha"))
+    if (dict.alternative({{"alpha"}, {"alphaRelative"}}, 1) == 0)
       opt->setStep(dict.getScalar("alpha", Bounds::positive()), false);
     else
       opt->setStep(dict.getScalarOr("alphaRelative", type == "armijo" ? 10.0 : type == "steepestDescent" ? 1.0 : 2.0,

@@ -1,36 +1,49 @@
+// "Did you mean" helpers and number formatting for messages: see Suggest.hpp.
 #include "friction/core/Suggest.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 namespace friction {
 
 std::size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  const auto lower = [](char c) {
+    return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+  };
+  // Three rows of the dynamic programme: a swap looks two rows back.
+  std::vector<std::size_t> prev2(b.size() + 1), prev(b.size() + 1), row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
     row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
+      const char ai = lower(a[i - 1]), bj = lower(b[j - 1]);
+      row[j] = std::min({prev[j] + 1, row[j - 1] + 1, prev[j - 1] + (ai == bj ? 0 : 1)});
+      if (i > 1 && j > 1 && ai == lower(b[j - 2]) && lower(a[i - 2]) == bj)
+        row[j] = std::min(row[j], prev2[j - 2] + 1);
     }
+    std::swap(prev2, prev);
+    std::swap(prev, row);
   }
-  return row[b.size()];
+  return prev[b.size()];
 }
 
-std::string suggestionText(const std::string& word, const std::vector<std::string>& candidates) {
+std::size_t typoDistance(std::size_t n) { return std::max<std::size_t>(1, n / 3); }
+
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
   const std::string* best = nullptr;
   std::size_t bestD = 0;
   for (const std::string& c : candidates) {
     const std::size_t d = editDistance(word, c);
     if (!best || d < bestD) best = &c, bestD = d;
   }
-  // A suggestion further than about half the word away is noise, not help.
-  if (!best || bestD > std::max<std::size_t>(2, word.size() / 2)) return "";
-  return "; did you mean '" + *best + "'?";
+  return best && bestD <= typoDistance(word.size()) ? *best : "";
+}
+
+std::string suggestionText(const std::string& word, const std::vector<std::string>& candidates) {
+  const std::string best = closestMatch(word, candidates);
+  return best.empty() ? "" : "; did you mean '" + best + "'?";
 }
 
 std::string formatNumber(double x) {

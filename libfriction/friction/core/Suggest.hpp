@@ -1,4 +1,5 @@
-// "Did you mean ...?" helpers for error messages: nearest word by edit distance.
+// "Did you mean ...?" helpers for error messages: the nearest word, offered only when it is
+// near enough to be a typo of the word written.
 #pragma once
 
 #include <string>
@@ -6,10 +7,22 @@
 
 namespace friction {
 
-/// Levenshtein distance between a and b.
+/// Typing distance between a and b: insertions, deletions, substitutions and swaps of two
+/// adjacent letters cost 1 each (the optimal-string-alignment distance); letter case is
+/// ignored. "tolerence"/"tolerance" and "fractrues"/"fractures" are 1 apart.
 std::size_t editDistance(const std::string& a, const std::string& b);
 
-/// "; did you mean 'x'?" for the nearest candidate within a reasonable distance, else "".
+/// The largest distance at which a candidate still counts as a typo of a word of n letters:
+/// max(1, n/3). Up to one slip per three letters leaves two thirds of the word in place; at
+/// larger distances unrelated names of the same length match ("tolerance"/"zeta" are 7 apart,
+/// "adjoint"/"exact" 6), and a suggestion that has nothing to do with the word misleads.
+std::size_t typoDistance(std::size_t n);
+
+/// The candidate nearest to word (the first on ties) if it is within typoDistance of word,
+/// else "".
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
+
+/// "; did you mean 'x'?" for closestMatch(word, candidates), or "" when no candidate is near.
 std::string suggestionText(const std::string& word, const std::vector<std::string>& candidates);
 
 /// A number as a message shows it: the shortest round-trip text ("1e-07", "0.25").

@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "friction/dict/Number.hpp"
 #include "friction/dict/Tokenizer.hpp"
 
 namespace friction {
@@ -117,16 +118,10 @@ using Kind = Value::Kind;
 // Messages
 // ---------------------------------------------------------------------------------------
 
-/// The candidate nearest to word in edit distance (first one on ties), or "" if none.
+/// The candidate near enough to word to be a typo of it (closestMatch), or "".
 template <typename Range>
 std::string nearest(const std::string& word, const Range& candidates) {
-  std::string best;
-  std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
-  for (const std::string& c : candidates) {
-    const std::size_t d = editDistance(word, c);
-    if (d < bestDistance) best = c, bestDistance = d;
-  }
-  return best;
+  return closestMatch(word, std::vector<std::string>(std::begin(candidates), std::end(candidates)));
 }
 
 template <typename Range>
@@ -165,6 +160,29 @@ std::string shown(const std::vector<Value>& items) {
   return s;
 }
 
+/// Why the first item that looks like a mistyped number is not one (" ('0,9' has a decimal
+/// comma: write 0.9)"), or "": appended to "got ..." where numbers are expected.
+std::string numberHint(const Value& v) {
+  if (v.isWord()) {
+    const std::string why = whyNotANumber(v.text);
+    return why.empty() ? "" : " ('" + v.text + "' " + why + ")";
+  }
+  for (const Value& i : v.items)
+    if (std::string h = numberHint(i); !h.empty()) return h;
+  return "";
+}
+std::string numberHint(const std::vector<Value>& items) {
+  for (const Value& v : items)
+    if (std::string h = numberHint(v); !h.empty()) return h;
+  return "";
+}
+
+/// "got ..." where numbers are expected: the items and, if one is a mistyped number, why.
+std::string shownNumbers(const std::vector<Value>& items) {
+  return shown(items) + numberHint(items);
+}
+std::string shownNumbers(const Value& v) { return shown(v) + numberHint(v); }
+
 std::string withBounds(const std::string& what, const Bounds& b) {
   const std::string range = b.str();
   return range.empty() ? what : what + " " + range;
@@ -180,7 +198,7 @@ std::string withBounds(const std::string& what, const Bounds& b) {
                            const std::string& expected) {
   throw InputError(SourceLocation{e.where.file, item.line > 0 ? item.line : e.where.line},
                    "key '" + e.key + "': item " + std::to_string(i) + ": expected " + expected +
-                       ", got " + shown(item));
+                       ", got " + shownNumbers(item));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -196,10 +214,9 @@ const DictEntry& requireValue(const Dictionary::Impl& d, const std::string& key,
     // A near miss among the keys present is most likely a misspelling of this one.
     std::vector<std::string> present;
     for (const DictEntry& p : d.entries)
-      if (!p.read && editDistance(key, p.key) <= std::max<std::size_t>(1, key.size() / 3))
-        present.push_back(p.key);
+      if (!p.read && editDistance(key, p.key) <= typoDistance(key.size())) present.push_back(p.key);
     if (!present.empty()) {
-      const DictEntry& p = *d.find(nearest(key, present));
+      const DictEntry& p = *d.find(nearest(key, present));  // present: all within reach
       msg += "; is '" + p.key + "' at " + p.where.str() + " a misspelling of it?";
     }
     throw InputError(d.where, msg);
@@ -209,11 +226,16 @@ const DictEntry& requireValue(const Dictionary::Impl& d, const std::string& key,
   return *e;
 }
 
-/// Items without a leading "uniform", "nonuniform" or "List<type>" word, which OpenFOAM
-/// writes before fields and sized lists.
-std::pair<const Value*, const Value*> stripped(const std::vector<Value>& items) {
+/// Items without the words OpenFOAM writes before a value: "uniform" before one number or
+/// vector (a constant field); for a list (isList) also "nonuniform" and "List<type>", which
+/// OpenFOAM writes before per-item lists. "nonuniform 3" is no constant: not stripped.
+std::pair<const Value*, const Value*> stripped(const std::vector<Value>& items, bool isList) {
   const Value* b = items.data();
   const Value* e = b + items.size();
+  if (!isList) {
+    if (e - b == 2 && b->isWord() && b->text == "uniform") ++b;
+    return {b, e};
+  }
   while (e - b > 1 && b->isWord() &&
          (b->text == "uniform" || b->text == "nonuniform" || b->text.rfind("List<", 0) == 0))
     ++b;
@@ -222,8 +244,8 @@ std::pair<const Value*, const Value*> stripped(const std::vector<Value>& items) 
 
 /// The one list an entry holds (after a "uniform"/"List<...>" prefix).
 const Value& singleList(const DictEntry& e, const std::string& expected) {
-  const auto [b, end] = stripped(e.items);
-  if (end - b != 1 || !b->isList()) failEntry(e, expected, shown(e.items));
+  const auto [b, end] = stripped(e.items, true);
+  if (end - b != 1 || !b->isList()) failEntry(e, expected, shownNumbers(e.items));
   return *b;
 }
 
@@ -244,8 +266,8 @@ bool toLong(const Value& v, long& out) {
 
 double scalarOf(const DictEntry& e, const Bounds& bounds) {
   const std::string expected = withBounds("a number", bounds);
-  const auto [b, end] = stripped(e.items);
-  if (end - b != 1 || !b->isNumber()) failEntry(e, expected, shown(e.items));
+  const auto [b, end] = stripped(e.items, false);
+  if (end - b != 1 || !b->isNumber()) failEntry(e, expected, shownNumbers(e.items));
   if (!bounds.contains(b->number)) failEntry(e, expected, b->str());
   return b->number;
 }
@@ -253,7 +275,7 @@ double scalarOf(const DictEntry& e, const Bounds& bounds) {
 long intOf(const DictEntry& e, const Bounds& bounds) {
   const std::string expected = withBounds("an integer", bounds);
   long x = 0;
-  if (e.items.size() != 1 || !toLong(e.items[0], x)) failEntry(e, expected, shown(e.items));
+  if (e.items.size() != 1 || !toLong(e.items[0], x)) failEntry(e, expected, shownNumbers(e.items));
   if (!bounds.contains(static_cast<double>(x))) failEntry(e, expected, e.items[0].str());
   return x;
 }
@@ -280,8 +302,8 @@ std::string choiceOf(const DictEntry& e, const std::vector<std::string>& choices
   const std::string noun = e.key == "type" ? "type" : "value";
   const std::string w = wordOf(e, "one of: " + joined(choices));
   if (std::find(choices.begin(), choices.end(), w) != choices.end()) return w;
-  throw InputError(e.where, "key '" + e.key + "': unknown " + noun + " '" + w +
-                                "'; did you mean '" + nearest(w, choices) + "'? (valid " + noun +
+  throw InputError(e.where, "key '" + e.key + "': unknown " + noun + " '" + w + "'" +
+                                suggestionText(w, choices) + " (valid " + noun +
                                 "s are: " + joined(choices) + ")");
 }
 
@@ -483,7 +505,10 @@ class Parser {
       case Token::Type::Number: {
         if (t.plainInteger && src.tz.sizedListFollows()) {
           long n = 0;
-          std::from_chars(t.text.data(), t.text.data() + t.text.size(), n);
+          const auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), n);
+          if (r.ec != std::errc())
+            src.tz.fail(t.line, "key '" + key + "': list size " + std::string(t.text) +
+                                    " is too large (expected the number of items before '(')");
           const Token open = src.tz.next();  // the '('
           Value& v = out.emplace_back();
           list(src, v, open.line, n, t.line, key, depth + 1);
@@ -623,7 +648,8 @@ class Parser {
       for (const DictEntry& e : s->entries) known.push_back(e.key);
     std::string msg = where + "undefined variable '$" + name + "': no entry '" + name +
                       "' before it in this or an enclosing dictionary";
-    if (!known.empty()) msg += "; did you mean '$" + nearest(name, known) + "'?";
+    if (const std::string guess = nearest(name, known); !guess.empty())
+      msg += "; did you mean '$" + guess + "'?";
     src.tz.fail(t.line, msg);
   }
 
@@ -663,13 +689,41 @@ class Parser {
 
 void finishTopLevel(Dictionary::Impl& d) {
   // The header is for OpenFOAM's tools; it counts as read so that checkAllRead passes it.
+  // Its 'format' is the one entry that changes how a file reads: binary lists are not text.
   if (const DictEntry* header = d.find("FoamFile")) {
     header->read = true;
-    if (header->dict) Dictionary::Impl::of(*header->dict).setRead(true);
+    if (header->dict) {
+      const Dictionary::Impl& h = Dictionary::Impl::of(*header->dict);
+      h.setRead(true);
+      const DictEntry* format = h.find("format");
+      if (format && !(format->items.size() == 1 && format->items[0].text == "ascii"))
+        throw InputError(format->where, "FoamFile: format " + shown(format->items) +
+                                            " is not read (expected 'ascii')");
+    }
   }
 }
 
-void checkRead(const Dictionary::Impl& d) {
+/// The dictionaries under d (d included) that asked for key, except d and its siblings, as
+/// paths relative to root ("control/optimizer", or "the top level").
+void askedElsewhere(const Dictionary::Impl& root, const Dictionary::Impl& d,
+                    const Dictionary::Impl* parentOfD, const Dictionary::Impl& here,
+                    const Dictionary::Impl* parent, const std::string& key,
+                    std::vector<std::string>& out) {
+  // A sibling asks for other keys because it is another instance of the same family (a
+  // patch, an effect) with another type: "belongs in boundaryField/top" would mislead there.
+  const bool sibling = parent == parentOfD;
+  if (&here != &d && !sibling && here.asked.count(key)) {
+    const bool top = here.scope.size() <= root.scope.size();
+    out.push_back(top ? "the top level of " + root.scope
+                      : here.scope.substr(root.scope.size() + 1));
+  }
+  for (const DictEntry& e : here.entries)
+    if (e.dict && e.read)
+      askedElsewhere(root, d, parentOfD, Dictionary::Impl::of(*e.dict), &here, key, out);
+}
+
+void checkRead(const Dictionary::Impl& root, const Dictionary::Impl& d,
+               const Dictionary::Impl* parent) {
   for (const DictEntry& e : d.entries) {
     if (!e.read) {
       if (d.asked.count(e.key))
@@ -677,20 +731,27 @@ void checkRead(const Dictionary::Impl& d) {
                                       " is never used (the program checks that it is there "
                                       "but does not read it)");
       std::string msg = "unknown key '" + e.key + "' in " + d.scope;
-      if (d.asked.empty()) {
+      std::vector<std::string> places;
+      askedElsewhere(root, d, parent, root, nullptr, e.key, places);
+      if (!places.empty()) {
+        // A key of another dictionary of the file: the fix is to move it, not to rename it.
+        msg += "; it belongs in " + joinWords(places, " or ");
+        if (!d.asked.empty()) msg += " (valid keys here: " + joined(d.asked) + ")";
+      } else if (d.asked.empty()) {
         msg += " (no keys are read from " + d.scope + ")";
       } else {
         // Prefer the keys the program asked for and did not find: the likely intended ones.
         std::vector<std::string> missing;
         for (const std::string& k : d.asked)
           if (!d.find(k)) missing.push_back(k);
-        const std::string guess =
-            missing.empty() ? nearest(e.key, d.asked) : nearest(e.key, missing);
-        msg += "; did you mean '" + guess + "'? (valid keys: " + joined(d.asked) + ")";
+        std::string guess = nearest(e.key, missing);
+        if (guess.empty()) guess = nearest(e.key, d.asked);
+        if (!guess.empty()) msg += "; did you mean '" + guess + "'?";
+        msg += " (valid keys: " + joined(d.asked) + ")";
       }
       throw InputError(e.where, msg);
     }
-    if (e.dict) checkRead(Dictionary::Impl::of(*e.dict));
+    if (e.dict) checkRead(root, Dictionary::Impl::of(*e.dict), &d);
   }
 }
 
@@ -854,10 +915,10 @@ std::string Dictionary::getFileName(const std::string& key) const {
 Vector2 Dictionary::getVector(const std::string& key) const {
   const std::string expected = "a vector (x y)";
   return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
-    const auto [b, end] = stripped(e.items);
+    const auto [b, end] = stripped(e.items, false);
     std::optional<Vector2> v;
     if (end - b == 1) v = toVector(*b);
-    if (!v) failEntry(e, expected, shown(e.items));
+    if (!v) failEntry(e, expected, shownNumbers(e.items));
     return *v;
   });
 }
@@ -974,7 +1035,41 @@ Table Dictionary::getTable(const std::string& key) const {
   });
 }
 
-void Dictionary::checkAllRead() const { checkRead(*impl_); }
+void Dictionary::checkAllRead() const { checkRead(*impl_, *impl_, nullptr); }
+
+std::size_t Dictionary::alternative(const std::vector<std::vector<std::string>>& groups,
+                                    std::optional<std::size_t> def) const {
+  std::string options;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    options += g == 0 ? "" : g + 1 == groups.size() ? ", or " : ", ";
+    options += joinWords(groups[g], " and ");
+  }
+  // The first entry in file order of each group that has one.
+  std::vector<const DictEntry*> first(groups.size(), nullptr);
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (const std::string& k : groups[g])
+      if (const DictEntry* e = impl_->ask(k);
+          e && (!first[g] || e->where.line < first[g]->where.line))
+        first[g] = e;
+  std::optional<std::size_t> chosen;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (!first[g]) continue;
+    if (chosen) {
+      const DictEntry* a = first[*chosen];
+      const DictEntry* b = first[g];
+      if (b->where.line < a->where.line) std::swap(a, b);
+      const bool single = groups[*chosen].size() == 1 && groups[g].size() == 1;
+      throw InputError(b->where, "keys '" + a->key + "' (line " + std::to_string(a->where.line) +
+                                     ") and '" + b->key + "' in " + impl_->scope +
+                                     (single ? " are alternatives" : " belong to alternatives") +
+                                     ": give " + options + ", not both");
+    }
+    chosen = g;
+  }
+  if (chosen) return *chosen;
+  if (!def) throw InputError(impl_->where, "missing keys in " + impl_->scope + ": give " + options);
+  return *def;
+}
 
 void Dictionary::markAllRead() const { impl_->setRead(true); }
 

@@ -19,7 +19,10 @@
 // $name;' with a dictionary copies it and '$name;' merges its entries. An entry used by '$'
 // counts as read. A later entry with the same key replaces an earlier one in its place, and a
 // repeated dictionary is merged into the earlier one, as in OpenFOAM (checked with
-// foamDictionary v1912).
+// foamDictionary v1912). A number is a whole finite decimal token (Number.hpp): "0,9" is a word,
+// refused with the reason wherever a number is expected, and "1e400" is an error when read.
+// Beyond OpenFOAM's rules, on purpose: the FoamFile header is optional (its 'format' must be
+// ascii when given), and a UTF-8 byte-order mark at the start of a file is skipped.
 //
 // Every entry keeps its file:line. Accessors mark an entry as read; checkAllRead() then
 // reports the first entry the program never read, naming its file:line and the nearest
@@ -105,7 +108,8 @@ class Dictionary {
   const std::vector<Value>& values(const std::string& key) const;
 
   // Typed access. Each marks the entry as read and throws InputError with file:line, the
-  // key and what was expected. Vector/list accessors accept a leading "uniform" word.
+  // key and what was expected. A single number or vector may follow "uniform" (a constant
+  // field); a list may follow "uniform", "nonuniform" or "List<type>".
   double getScalar(const std::string& key, Bounds bounds = {}) const;
   double getScalarOr(const std::string& key, double def, Bounds bounds = {}) const;
   long getInt(const std::string& key, Bounds bounds = {}) const;
@@ -134,8 +138,20 @@ class Dictionary {
   /// x strictly increasing.
   Table getTable(const std::string& key) const;
 
+  /// Which of several groups of alternative keys the dictionary uses, e.g. {{"E", "nu"},
+  /// {"lambda", "mu"}}: the index of the group with a key present (the group's keys are then
+  /// read by the caller), def when no key of any group is present. InputError when keys of two
+  /// groups are present ("keys 'E' (line 9) and 'lambda' in <scope> belong to alternatives: give E
+  /// and nu, or lambda and mu, not both"), or when none is and there is no def. Every key is
+  /// registered as valid.
+  std::size_t alternative(const std::vector<std::vector<std::string>>& groups,
+                          std::optional<std::size_t> def = std::nullopt) const;
+
   /// Throws InputError for the first entry (depth first, file order) that no accessor read:
-  /// "file:line: unknown key 'Youngs' in <scope>; did you mean 'E'? (valid keys: E, nu)".
+  /// "file:line: unknown key 'nus' in <scope>; did you mean 'nu'? (valid keys: E, nu)". The
+  /// suggestion is made only when a valid key is within typing distance (Suggest.hpp). A key
+  /// that another dictionary of the file (below this one, not a sibling) asked for is said to
+  /// belong there: "unknown key 'tolerance' in <file>/control; it belongs in control/optimizer".
   /// Sub-dictionaries that were read are checked recursively.
   void checkAllRead() const;
   /// Mark everything in this dictionary (recursively) as read, e.g. for a block that

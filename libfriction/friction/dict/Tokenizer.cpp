@@ -5,6 +5,8 @@
 // std::from_chars straight from the input (no intermediate string).
 #include "friction/dict/Tokenizer.hpp"
 
+#include "friction/dict/Number.hpp"
+
 #include <array>
 #include <charconv>
 #include <stdexcept>
@@ -76,7 +78,11 @@ std::string quoted(std::string_view s) {
 }
 
 Tokenizer::Tokenizer(std::string_view text, const std::string& file)
-    : p_(text.data()), end_(text.data() + text.size()), file_(file) {}
+    : p_(text.data()), end_(text.data() + text.size()), file_(file) {
+  // Editors on Windows may start a UTF-8 file with a byte-order mark; it is no part of the
+  // text (left in, it would become part of the first key).
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") p_ += 3;
+}
 
 void Tokenizer::fail(int line, const std::string& message) const {
   throw InputError(SourceLocation{file_, line}, message);
@@ -204,7 +210,7 @@ Token Tokenizer::next() {
     const auto r = std::from_chars(first, p_, t.number);
     if (r.ptr == p_) {
       if (r.ec == std::errc::result_out_of_range)
-        fail(t.line, "number " + std::string(t.text) + " is out of the range of a double");
+        fail(t.line, "number " + std::string(t.text) + " " + whyNotANumber(t.text));
       if (r.ec == std::errc()) {
         t.type = Token::Type::Number;
         t.plainInteger = true;

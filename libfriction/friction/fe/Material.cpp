@@ -2,8 +2,25 @@
 #include "friction/fe/Material.hpp"
 
 #include "friction/core/Assert.hpp"
+#include "friction/core/Suggest.hpp"
+#include "friction/dict/Dictionary.hpp"
 
 namespace friction {
+
+Material Material::read(const Dictionary& dict) {
+  const bool planeStress = dict.getBoolOr("planeStress", false);
+  if (dict.alternative({{"E", "nu"}, {"lambda", "mu"}}) == 0) {
+    const double E = dict.getScalar("E", Bounds::positive());
+    const double nu = dict.getScalar("nu", {-1.0, 0.5, true, true});
+    return fromYoungPoisson(E, nu, planeStress);
+  }
+  const double mu = dict.getScalar("mu", Bounds::positive());
+  const double lambda = dict.getScalar("lambda");
+  if (lambda + 2 * mu / 3 <= 0)
+    dict.fail("lambda", "key 'lambda': expected λ + 2μ/3 > 0 (a positive bulk modulus), got λ = " +
+                            formatNumber(lambda));
+  return fromLame(lambda, mu, planeStress);
+}
 
 Material::Material(double lambda, double mu, bool planeStress)
     : lambda_(lambda), mu_(mu), planeStress_(planeStress) {

@@ -10,8 +10,14 @@
 
 namespace friction {
 
+class Dictionary;
+
 class Material {
  public:
+  /// From constant/mechanicalProperties: 'E' and 'nu', or 'lambda' and 'mu' (alternatives:
+  /// keys of both pairs are an error that says so), and 'planeStress' (default no). Range
+  /// checks are InputErrors naming file:line and key.
+  static Material read(const Dictionary& dict);
   /// From Young's modulus E [Pa] (> 0) and Poisson's ratio ν (−1 < ν < 1/2). Range checks
   /// with file and line belong to the dictionary layer; here they are debug asserts.
   static Material fromYoungPoisson(double youngModulus, double poissonRatio,
