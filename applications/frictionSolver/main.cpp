@@ -10,11 +10,13 @@
 //
 // Exit codes: 0 every step converged; 1 bad input (file:line and what was expected);
 // 2 bad command line; 3 some step did not converge (see the log); 4 the factorisation failed;
-// 5 stopped by SIGINT/SIGTERM after writing the current step.
+// 5 stopped by SIGINT/SIGTERM after writing the current step; 6 an output could not be
+// written (the message names the file).
 #include <boost/program_options.hpp>
 #include <iostream>
 
 #include "friction/core/CommandLine.hpp"
+#include "friction/core/OutputError.hpp"
 #include "friction/case/FrictionCase.hpp"
 #include "friction/control/Optimizer.hpp"
 #include "friction/effect/Effect.hpp"
@@ -29,13 +31,14 @@ int main(int argc, char** argv) {
   // 1. Command line (OpenFOAM style).
   po::options_description options("Options");
   options.add_options()("case", po::value<std::string>()->default_value("."), "case folder")(
-      "listModels", "list the friction laws, optimizers and linear solvers")("help",
-                                                                            "print this help");
+      "listModels", "list the friction laws, optimizers and linear solvers")(
+      "overwrite", "remove an earlier run's outputs (time folders after startTime, VTK files, "
+                   "postProcessing/convergence.dat) before running")("help", "print this help");
   const auto parsed = parseCommandLine(argc, argv, options, "frictionSolver");
   if (!parsed) return 2;
   const po::variables_map& args = *parsed;
   if (args.count("help")) {
-    std::cout << "Usage: frictionSolver [-case DIR] [-listModels]\n\n"
+    std::cout << "Usage: frictionSolver [-case DIR] [-overwrite] [-listModels]\n\n"
                  "Runs the case in DIR (split by splitFractureNodes) through quasi-static time.\n\n"
               << options;
     return 0;
@@ -55,6 +58,9 @@ int main(int argc, char** argv) {
     // 2. Read and validate the whole case before any work.
     std::cout << "frictionSolver\n";
     FrictionCase c(args["case"].as<std::string>());
+    // An earlier run's time folders are refused, continued (startFrom latestTime) or, with
+    // -overwrite, removed: before any work.
+    c.prepareOutput(args.count("overwrite") > 0, std::cout);
 
     // 3. Assemble and factor once.
     if (c.setup(std::cout) != FactorStatus::ok) {
@@ -82,6 +88,10 @@ int main(int argc, char** argv) {
     }
     std::cout << "\nEnd\n";
     return 0;
+  } catch (const OutputError& e) {
+    std::cout.flush();
+    std::cerr << "\nfrictionSolver: error: " << e.what() << "\n";
+    return 6;
   } catch (const InputError& e) {
     std::cout.flush();
     std::cerr << "\nfrictionSolver: error: " << e.what() << "\n";

@@ -14,6 +14,7 @@
 //   0/D                            boundary conditions (BoundaryConditions.hpp)
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -24,6 +25,7 @@
 #include "friction/case/BoundaryConditions.hpp"
 #include "friction/control/ControlProblem.hpp"
 #include "friction/control/Optimizer.hpp"
+#include "friction/core/AtomicFile.hpp"
 #include "friction/effect/Effect.hpp"
 #include "friction/fe/Material.hpp"
 #include "friction/fracture/FractureSystem.hpp"
@@ -51,10 +53,18 @@ class FrictionCase {
   explicit FrictionCase(const std::string& caseDir);
   ~FrictionCase();
 
+  /// Before any work: time folders after startTime from an earlier run are refused
+  /// (InputError naming them and both ways out) unless startFrom is latestTime, or
+  /// `overwrite` (frictionSolver -overwrite), which removes the earlier run's outputs first:
+  /// time folders after startTime, its VTK files and postProcessing/convergence.dat. run()
+  /// calls it (without overwrite) if the caller did not.
+  void prepareOutput(bool overwrite, std::ostream& log);
   /// Build the spaces, fix the Dirichlet dofs, assemble and factor once. Returns the status.
   FactorStatus setup(std::ostream& log);
   /// The time loop. Returns the step results (also logged). With startFrom latestTime it
-  /// continues from the newest complete time folder (its uniform/frictionState).
+  /// continues from the newest complete time folder (its uniform/frictionState) at its time,
+  /// after dropping what a killed run wrote beyond it, so that the outputs end as an
+  /// uninterrupted run's.
   std::vector<StepResult> run(std::ostream& log);
   /// Why run() stopped before endTime ("" if it reached it): stopAt or a signal.
   const std::string& stoppedEarly() const { return stoppedEarly_; }
@@ -75,7 +85,7 @@ class FrictionCase {
     std::unique_ptr<FrictionLaw> law;
   };
 
-  void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, int step);
+  void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step);
   Eigen::VectorXd loadVector(double t) const;
   /// Effective fluid pressure per control node at t [Pa] (zero without fracturePressure).
   Eigen::VectorXd fracturePressure(double t) const;
@@ -102,8 +112,15 @@ class FrictionCase {
   Eigen::VectorXd lastBeta_;  ///< increment of the last step (warm start, restart)
   std::string stoppedEarly_;
   std::unique_ptr<VtkSeries> vtk_;  ///< ParaView files, when controlDict's writeVTK is on
-  /// Restart: the step to continue after, and the state read from its time folder.
-  int restartStep(std::ostream& log);
+  std::unique_ptr<AppendFile> history_;  ///< postProcessing/convergence.dat
+  bool outputPrepared_ = false;
+  /// Restart: read the state of the newest complete time folder, trim the outputs after it;
+  /// returns the first step to compute.
+  long restart(std::ostream& log);
+  /// Keep of the outputs around the time folders (VTK files and .pvd entries, convergence.dat
+  /// lines) only the times whose name `keep` accepts; remove temporary files and folders of
+  /// killed writes. `fresh`: start convergence.dat anew.
+  void trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh);
 };
 
 }  // namespace friction
