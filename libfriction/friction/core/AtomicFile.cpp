@@ -28,7 +28,7 @@ void writeTextAtomic(const std::string& path, const std::string& text) {
   const int fd = ::mkstemp(temp.data());
   if (fd < 0)
     throw OutputError(path, "cannot write: cannot create a file in the folder '" + folder.string() +
-                               "' (" + std::strerror(errno) + ")");
+                                "' (" + std::strerror(errno) + ")");
   const auto failAndClean = [&](const std::string& what) {
     const int err = errno;
     ::close(fd);

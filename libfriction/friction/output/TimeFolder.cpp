@@ -20,7 +20,7 @@ TimeFolder::TimeFolder(const std::string& caseDir, const std::string& name)
   fs::create_directories(partial_, ec);
   if (ec)
     throw OutputError(partial_, "cannot create the time folder being written (" + ec.message() +
-                                   "); expected a writable case folder");
+                                    "); expected a writable case folder");
 }
 
 TimeFolder::~TimeFolder() {
@@ -35,8 +35,8 @@ std::string TimeFolder::file(const std::string& relative) const {
   std::error_code ec;
   fs::create_directories(p.parent_path(), ec);
   if (ec)
-    throw OutputError(p.parent_path().string(),
-                     "cannot create folder (" + ec.message() + "); expected a writable case folder");
+    throw OutputError(p.parent_path().string(), "cannot create folder (" + ec.message() +
+                                                    "); expected a writable case folder");
   return p.string();
 }
 
@@ -45,11 +45,13 @@ void TimeFolder::commit() {
   // rename() cannot replace a non-empty folder: move the old one aside first, so that at any
   // instant one complete folder of this name exists or is recoverable (.old).
   const fs::path finalPath(final_);
-  const std::string old = (finalPath.parent_path() / ("." + finalPath.filename().string() + ".old")).string();
+  const std::string old =
+      (finalPath.parent_path() / ("." + finalPath.filename().string() + ".old")).string();
   fs::remove_all(old, ec);
   if (fs::exists(final_)) {
     fs::rename(final_, old, ec);
-    if (ec) throw OutputError(final_, "cannot replace the existing time folder (" + ec.message() + ")");
+    if (ec)
+      throw OutputError(final_, "cannot replace the existing time folder (" + ec.message() + ")");
   }
   fs::rename(partial_, final_, ec);
   if (ec) throw OutputError(final_, "cannot create the time folder (" + ec.message() + ")");
@@ -65,7 +67,8 @@ int TimeFolder::removeLeftovers(const std::string& caseDir) {
   std::vector<fs::path> leftovers;
   for (const auto& e : fs::directory_iterator(caseDir, ec)) {
     const std::string name = e.path().filename().string();
-    if (name[0] == '.' && e.is_directory(ec) && (endsWith(name, ".partial") || endsWith(name, ".old")))
+    if (name[0] == '.' && e.is_directory(ec) &&
+        (endsWith(name, ".partial") || endsWith(name, ".old")))
       leftovers.push_back(e.path());
   }
   for (const auto& p : leftovers) fs::remove_all(p, ec);

@@ -12,7 +12,9 @@ namespace friction {
 
 namespace {
 
-std::vector<std::string> stopAtNames() { return {"endTime", "writeNow", "noWriteNow", "nextWrite"}; }
+std::vector<std::string> stopAtNames() {
+  return {"endTime", "writeNow", "noWriteNow", "nextWrite"};
+}
 
 TimeControl::StopAt parseStopAt(const std::string& w) {
   if (w == "writeNow") return TimeControl::StopAt::writeNow;
@@ -30,8 +32,8 @@ TimeControl::TimeControl(double startTime, double endTime, double deltaT)
 
 TimeControl::TimeControl(const Dictionary& d) {
   if (d.found("application")) d.getWord("application");
-  startFromLatest_ = d.getChoiceOr("startFrom", {"startTime", "latestTime"}, "startTime") ==
-                     "latestTime";
+  startFromLatest_ =
+      d.getChoiceOr("startFrom", {"startTime", "latestTime"}, "startTime") == "latestTime";
   startTime_ = d.getScalarOr("startTime", 0.0);
   stopAt_ = parseStopAt(d.getChoiceOr("stopAt", stopAtNames(), "endTime"));
   endTime_ = d.getScalar("endTime");
@@ -43,8 +45,9 @@ TimeControl::TimeControl(const Dictionary& d) {
   writeRunTime_ = d.getChoiceOr("writeControl", {"timeStep", "runTime"}, "timeStep") == "runTime";
   writeInterval_ = d.getScalarOr("writeInterval", 1.0, Bounds::positive());
   if (!writeRunTime_ && writeInterval_ != std::floor(writeInterval_))
-    d.fail("writeInterval", "key 'writeInterval': with writeControl timeStep, expected a whole "
-                            "number of steps");
+    d.fail("writeInterval",
+           "key 'writeInterval': with writeControl timeStep, expected a whole "
+           "number of steps");
   writePrecision_ = static_cast<int>(d.getIntOr("writePrecision", 8, {1, 17}));
   timePrecisionAsked_ = static_cast<int>(d.getIntOr("timePrecision", 6, {1, 17}));
   writeVTK_ = d.getBoolOr("writeVTK", true);
@@ -94,9 +97,10 @@ void TimeControl::plan() {
 std::string TimeControl::precisionNote() const {
   if (timePrecision_ == timePrecisionAsked_) return "";
   return "timePrecision raised to " + std::to_string(timePrecision_) + " (from " +
-         std::to_string(timePrecisionAsked_) + ") so that every time of the run has its own "
-         "folder name (steps of " + formatNumber(deltaT_) + " up to time " +
-         formatNumber(endTime_) + ")";
+         std::to_string(timePrecisionAsked_) +
+         ") so that every time of the run has its own "
+         "folder name (steps of " +
+         formatNumber(deltaT_) + " up to time " + formatNumber(endTime_) + ")";
 }
 
 long TimeControl::continueAfter(double t, long step) {

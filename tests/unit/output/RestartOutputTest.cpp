@@ -28,15 +28,18 @@ std::string readText(const fs::path& p) {
 }
 
 fs::path freshDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid())) / "case";
+  const fs::path dir =
+      fs::temp_directory_path() / (name + "-" + std::to_string(::getpid())) / "case";
   fs::remove_all(dir.parent_path());
   fs::create_directories(dir);
   return dir;
 }
 
 PvdTime pvdTime(double t, const std::string& name) {
-  return {t, {"case_" + name + ".vtu", "fractures/f_" + name + ".vtp", "fractures/g&h_" + name + ".vtp"},
-          {"mesh", "f", "g&h"}};
+  return {
+      t,
+      {"case_" + name + ".vtu", "fractures/f_" + name + ".vtp", "fractures/g&h_" + name + ".vtp"},
+      {"mesh", "f", "g&h"}};
 }
 
 }  // namespace
@@ -63,8 +66,8 @@ TEST_CASE("VtkSeries::resume keeps the .pvd entries and files up to the restart 
 
   VtkSeries series(dir.string());
   REQUIRE(series.caseName() == "case");
-  const int removed = series.resume(
-      [](const std::string& name) { return std::stod(name) <= 0.2; }, {"f", "g&h"}, 8);
+  const int removed = series.resume([](const std::string& name) { return std::stod(name) <= 0.2; },
+                                    {"f", "g&h"}, 8);
   CHECK(removed == 6 + 2);  // 0.3 and 0.4: three files each; two temporary files
   for (const std::string n : {"0.1", "0.2"}) {
     CHECK(fs::exists(vtk / ("case_" + n + ".vtu")));
@@ -77,7 +80,8 @@ TEST_CASE("VtkSeries::resume keeps the .pvd entries and files up to the restart 
   }
   CHECK_FALSE(fs::exists(vtk / ".case_0.4.vtu.tmpAb3xYz"));
   CHECK_FALSE(fs::exists(vtk / "fractures" / ".f_0.4.vtp.tmpQ1w2E3"));
-  for (const char* mine : {"notes.txt", "other_0.4.vtu", "case_final.vtu"}) CHECK(fs::exists(vtk / mine));
+  for (const char* mine : {"notes.txt", "other_0.4.vtu", "case_final.vtu"})
+    CHECK(fs::exists(vtk / mine));
   // The .pvd is the one an uninterrupted run had at 0.2, byte for byte.
   const fs::path expected = dir / "expected.pvd";
   writePvd(expected.string(), {all[0], all[1]}, 12);
@@ -133,9 +137,7 @@ TEST_CASE("AppendFile grows a file by whole records or throws naming it", "[outp
     f.append("0.2 1 2 3 4\n");
   }
   CHECK(readText(path) == "# header\n0.1 1 2 3 4\n0.2 1 2 3 4\n");
-  {
-    AppendFile f(path.string(), true);
-  }
+  { AppendFile f(path.string(), true); }
   CHECK(readText(path).empty());
   // A full device: /dev/full refuses every write with ENOSPC.
   if (fs::exists("/dev/full")) {

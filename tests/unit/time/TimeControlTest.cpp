@@ -48,8 +48,7 @@ void checkTimes(const TimeControl& t, long first, double before) {
 
 }  // namespace
 
-TEST_CASE("a deltaT that makes absurdly many steps is refused, naming deltaT",
-          "[time]") {
+TEST_CASE("a deltaT that makes absurdly many steps is refused, naming deltaT", "[time]") {
   // 1e10 steps overflowed a 32-bit counter into "one step" (exit 0).
   for (const char* dt : {"1e-10", "1e-300", "4.9e-324"}) {
     INFO("deltaT " << dt);
@@ -159,8 +158,7 @@ TEST_CASE("a restart continues from the saved time, with the current deltaT", "[
   }
 }
 
-TEST_CASE("writes: every writeInterval steps, by step or by time, and always the last",
-          "[time]") {
+TEST_CASE("writes: every writeInterval steps, by step or by time, and always the last", "[time]") {
   const TimeControl steps = control("endTime 1; deltaT 0.1; writeInterval 3;");
   std::string written;
   for (long k = 1; k <= steps.numSteps(); ++k)
