@@ -19,6 +19,7 @@
 #include <new>
 
 #include "friction/core/CommandLine.hpp"
+#include "friction/core/OutputError.hpp"
 #include "friction/case/FrictionCase.hpp"
 #include "friction/control/Optimizer.hpp"
 #include "friction/effect/Effect.hpp"
@@ -33,13 +34,14 @@ int main(int argc, char** argv) {
   // 1. Command line (OpenFOAM style).
   po::options_description options("Options");
   options.add_options()("case", po::value<std::string>()->default_value("."), "case folder")(
-      "listModels", "list the friction laws, optimizers and linear solvers")("help",
-                                                                            "print this help");
+      "listModels", "list the friction laws, optimizers and linear solvers")(
+      "overwrite", "remove an earlier run's outputs (time folders after startTime, VTK files, "
+                   "postProcessing/convergence.dat) before running")("help", "print this help");
   const auto parsed = parseCommandLine(argc, argv, options, "frictionSolver");
   if (!parsed) return 2;
   const po::variables_map& args = *parsed;
   if (args.count("help")) {
-    std::cout << "Usage: frictionSolver [-case DIR] [-listModels]\n\n"
+    std::cout << "Usage: frictionSolver [-case DIR] [-overwrite] [-listModels]\n\n"
                  "Runs the case in DIR (split by splitFractureNodes) through quasi-static time.\n\n"
               << options;
     return 0;
@@ -59,6 +61,9 @@ int main(int argc, char** argv) {
     // 2. Read and validate the whole case before any work.
     std::cout << "frictionSolver\n";
     FrictionCase c(args["case"].as<std::string>());
+    // An earlier run's time folders are refused, continued (startFrom latestTime) or, with
+    // -overwrite, removed: before any work.
+    c.prepareOutput(args.count("overwrite") > 0, std::cout);
 
     // 3. Assemble and factor once.
     if (c.setup(std::cout) != FactorStatus::ok) {
@@ -85,16 +90,17 @@ int main(int argc, char** argv) {
     }
     std::cout << "\nEnd\n";
     return 0;
+  } catch (const OutputError& e) {
+    // Not the user's input (OutputError is an InputError, so it comes first): exit 6. Here and
+    // below the stack is unwound on the way, so TimeFolder's destructor has removed the step's
+    // partial folder.
+    std::cout.flush();
+    std::cerr << "\nfrictionSolver: error: " << e.what() << "\n";
+    return 6;
   } catch (const InputError& e) {
     std::cout.flush();
     std::cerr << "\nfrictionSolver: error: " << e.what() << "\n";
     return 1;
-  } catch (const OutputError& e) {
-    // Everything below is not the user's input: exit 6. The stack is unwound on the way
-    // here, so TimeFolder's destructor has removed the step's partial folder.
-    std::cout.flush();
-    std::cerr << "\nfrictionSolver: error: " << e.what() << "\n";
-    return 6;
   } catch (const std::filesystem::filesystem_error& e) {
     std::cout.flush();
     std::cerr << "\nfrictionSolver: error: " << e.path1().string() << ": " << e.code().message()

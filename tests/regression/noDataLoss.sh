@@ -1,99 +1,301 @@
 #!/usr/bin/env bash
-# No data loss (issue: hard cases / kills): a run killed with SIGKILL and restarted with
-# startFrom latestTime ends with the same fields, bit for bit, as an uninterrupted run;
-# SIGTERM finishes the current step, writes it and exits with a message; a full disk gives
-# a clear error and leaves earlier time folders intact.
-# Usage: noDataLoss.sh BIN_DIR SOURCE_DIR WORK_DIR SCENARIO
+# No data loss. A run killed (SIGKILL at chosen instants of writing, or at random) or stopped
+# (SIGTERM, SIGINT) and restarted with startFrom latestTime leaves every output file — time
+# folders, VTK/*.vtu, VTK/fractures/*.vtp, VTK/<case>.pvd, postProcessing/convergence.dat —
+# byte for byte as an uninterrupted run does, and no temporary file or folder. A full disk
+# (time folders, or convergence.dat) stops the run with exit 6 and a message naming the file,
+# and leaves what was written whole. A second run over existing time folders is refused;
+# -overwrite removes the earlier run's outputs and nothing else. A restart with another
+# deltaT or a later endTime continues from the saved time.
+# Usage: noDataLoss.sh BIN_DIR SOURCE_DIR WORK_DIR SCENARIO [KILL_AT_RENAME_LIBRARY]
 set -uo pipefail
-bin=$1 src=$2 work=$3 scenario=$4
+bin=$1 src=$2 work=$3 scenario=$4 killLib=${5:-}
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL [$scenario]: $*"; exit 1; }
 
-# The paper benchmark ramped over many small steps, written every 10 steps.
+# The paper benchmark ramped over STEPS steps, written every 5 steps, in <dir>/case (the
+# folder's name is the VTK files' base name, so every copy must have the same one).
 makeCase() {  # makeCase DIR STEPS
   # Clean a copy outside the target first: what an earlier ./Allrun left in cases/ must not
   # come along (nor fill the small tmpfs of diskFull before it is cleaned).
   local stage="$work/stage.$RANDOM"
   cp -r "$src/cases/paperBenchmark" "$stage"
   "$stage/Allclean" >/dev/null
-  mv "$stage" "$1"
-  sed -i "s/^deltaT .*/deltaT          $(awk -v n="$2" 'BEGIN{printf "%.10g", 1/n}');/; s/^writeInterval .*/writeInterval   10;/" \
-    "$1/system/controlDict"
-  "$bin/splitFractureNodes" -case "$1" >"$1/log.splitFractureNodes" 2>&1 || fail "split failed"
+  mkdir -p "$1"
+  mv "$stage" "$1/case"
+  setKey "$1/case" deltaT "$(awk -v n="$2" 'BEGIN{printf "%.10g", 1/n}')"
+  setKey "$1/case" writeInterval 5
+  # The condensed Newton builds its matrix S in the first step of a run (41 back-
+  # substitutions, counted in that step's status): a restarted run would report them in its
+  # first step. The matrix-free variant does the same work in every run and step.
+  sed -i 's/^\( *\)type \( *\)semismoothNewton;/&\n\1variant         krylov;/' "$1/case/system/frictionSolution"
+  grep -q "variant  *krylov" "$1/case/system/frictionSolution" || fail "cannot set the Newton variant"
+  "$bin/splitFractureNodes" -case "$1/case" >"$1/case/log.splitFractureNodes" 2>&1 || fail "split failed"
+}
+setKey() {  # setKey CASE KEY VALUE: set a controlDict key
+  sed -i "s/^$2 .*/$2 $3;/" "$1/system/controlDict"
+  grep -q "^$2 $3;" "$1/system/controlDict" || fail "cannot set $2 in $1/system/controlDict"
+}
+solve() {  # solve CASE LOG [ARGS...]: the exit code in $rc
+  local c=$1 log=$2
+  shift 2
+  "$bin/frictionSolver" -case "$c" "$@" >"$log" 2>&1
+  rc=$?
 }
 timeFolders() { (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -vx 0 | sort -g); }
+# Everything a run writes: all files but the logs and the inputs.
+outputs() { (cd "$1" && find . -type f ! -name 'log.*' ! -path './system/*' ! -path './constant/*' ! -path './0/*' | sort); }
+
+# sameOutputs REFERENCE CASE [EXTRA_TIME]: every output file of CASE is byte for byte the
+# reference's, none is missing or extra, and no hidden leftover exists. EXTRA_TIME: a time
+# CASE wrote and the reference did not (a stop by signal writes the current step): its
+# folder, VTK files and .pvd entry are allowed on top.
+sameOutputs() {
+  local ref=$1 c=$2 extra=${3:-} f
+  local mine
+  mine=$(outputs "$c")
+  if [[ -n $extra ]]; then
+    mine=$(grep -v -e "^\./$extra/" -e "_$extra\.vt[up]\$" <<<"$mine")
+  fi
+  [[ $(outputs "$ref" | wc -l) -gt 5 ]] || fail "the reference wrote too few files: nothing is compared"
+  diff <(outputs "$ref") <(echo "$mine") >"$work/files.diff" ||
+    fail "files differ from the uninterrupted run (< reference, > restarted): $(head -20 "$work/files.diff")"
+  for f in $(outputs "$ref"); do
+    if [[ -n $extra && $f == *.pvd ]]; then
+      cmp -s "$ref/$f" <(grep -v "_$extra\.vt[up]\"" "$c/$f") || fail "$f differs (besides the entry of $extra)"
+    else
+      cmp -s "$ref/$f" "$c/$f" || fail "$f differs from the uninterrupted run"
+    fi
+  done
+  [[ -z $(cd "$c" && find . -name '.?*') ]] || fail "leftovers: $(cd "$c" && find . -name '.?*')"
+}
+
+# reference STEPS [WRITE_INTERVAL]: an uninterrupted run in $work/reference/case
+reference() {
+  makeCase "$work/reference" "$1"
+  [[ -z ${2:-} ]] || setKey "$work/reference/case" writeInterval "$2"
+  solve "$work/reference/case" "$work/reference/case/log.frictionSolver"
+  ((rc == 0)) || fail "reference run failed: $(tail -3 "$work/reference/case/log.frictionSolver")"
+}
+
+# restartAndCompare CASE [EXTRA_TIME]
+restartAndCompare() {
+  local c=$1
+  setKey "$c" startFrom latestTime
+  solve "$c" "$c/log.2"
+  ((rc == 0)) || fail "restart failed (exit $rc): $(tail -3 "$c/log.2")"
+  sameOutputs "$work/reference/case" "$c" "${2:-}"
+}
 
 case $scenario in
 killRestart)
-  steps=400
-  makeCase "$work/reference" $steps
-  "$bin/frictionSolver" -case "$work/reference" >"$work/reference/log.frictionSolver" 2>&1 ||
-    fail "reference run failed"
-  makeCase "$work/killed" $steps
-  "$bin/frictionSolver" -case "$work/killed" >"$work/killed/log.1" 2>&1 &
+  steps=40
+  reference $steps
+  [[ -f $killLib ]] || fail "no kill library given"
+  # Instants (the N-th rename whose "old -> new" contains the text): inside the time folder
+  # being written, a .vtu and a .vtp written but not renamed (temporary files left), all VTK
+  # files but the .pvd, all but the time folder's own rename (the commit).
+  n=0
+  for point in "frictionState|4" ".vtu|4" ".vtp|4" ".pvd|4" ".partial -> |4"; do
+    label=kill$((++n))  # (a folder name must not contain the text looked for)
+    makeCase "$work/$label" $steps
+    c=$work/$label/case
+    FRICTION_KILL_AT_RENAME=$point LD_PRELOAD=$killLib "$bin/frictionSolver" -case "$c" >"$c/log.1" 2>&1
+    rc=$?
+    ((rc == 137)) || fail "[$point] not killed (exit $rc): nothing was tested"
+    [[ -n $(cd "$c" && find . -name '.?*') ]] || fail "[$point] the kill left nothing half-written: nothing was tested"
+    last=$(timeFolders "$c" | tail -1)
+    echo "[$point] killed after time $last; restarting"
+    restartAndCompare "$c"
+    grep -q "Restarting from time $last " "$c/log.2" || fail "[$point] did not restart from $last"
+  done
+  # And at a random instant, as soon as a few time folders exist.
+  makeCase "$work/random" $steps
+  c=$work/random/case
+  "$bin/frictionSolver" -case "$c" >"$c/log.1" 2>&1 &
   pid=$!
-  # Kill as soon as a few time folders exist (40 are written in all).
-  for _ in $(seq 2000); do (($(timeFolders "$work/killed" | wc -l) >= 3)) && break; sleep 0.005; done
-  kill -0 $pid 2>/dev/null || fail "the run ended before the kill: nothing was tested"
+  for _ in $(seq 2000); do (($(timeFolders "$c" | wc -l) >= 3)) && break; sleep 0.002; done
   kill -KILL $pid
   wait $pid 2>/dev/null
-  folders=$(timeFolders "$work/killed")
-  [[ -n $folders ]] || fail "no time folder written before the kill"
-  last=$(tail -1 <<<"$folders")
-  [[ $last != 1 ]] || fail "the run reached the end before the kill"
-  # Every visible time folder is whole: it has its state file (written last).
-  for t in $folders; do
-    [[ -f $work/killed/$t/uniform/frictionState && -f $work/killed/$t/D ]] || fail "time folder $t is not whole"
+  rc=$?
+  ((rc == 137)) || fail "the run ended before the kill (exit $rc): nothing was tested"
+  for t in $(timeFolders "$c"); do  # every visible time folder is whole
+    [[ -f $c/$t/uniform/frictionState && -f $c/$t/D ]] || fail "time folder $t is not whole"
   done
-  echo "killed after time $last; restarting"
-  sed -i 's/^startFrom .*/startFrom       latestTime;/' "$work/killed/system/controlDict"
-  "$bin/frictionSolver" -case "$work/killed" >"$work/killed/log.2" 2>&1 || fail "restart failed: $(tail "$work/killed/log.2")"
-  grep -q "Restarting from time $last" "$work/killed/log.2" || fail "did not restart from $last"
-  for f in D fractures/fracture.dat uniform/frictionState solverStatus; do
-    cmp -s "$work/reference/1/$f" "$work/killed/1/$f" || fail "1/$f differs from the uninterrupted run"
-  done
+  echo "killed at random after time $(timeFolders "$c" | tail -1); restarting"
+  restartAndCompare "$c"
   ;;
 sigterm | sigint)
   sig=${scenario#sig}; sig=${sig^^}
-  makeCase "$work/case" 400
-  "$bin/frictionSolver" -case "$work/case" >"$work/case/log.frictionSolver" 2>&1 &
+  steps=40
+  reference $steps
+  makeCase "$work/stopped" $steps
+  c=$work/stopped/case
+  "$bin/frictionSolver" -case "$c" >"$c/log.1" 2>&1 &
   pid=$!
-  for _ in $(seq 100); do [[ -n $(timeFolders "$work/case") ]] && break; sleep 0.02; done
+  for _ in $(seq 1000); do [[ -n $(timeFolders "$c") ]] && break; sleep 0.002; done
   kill -"$sig" $pid
   wait $pid
   rc=$?
-  grep -q "Stopped at time" "$work/case/log.frictionSolver" ||
-    { [[ -d $work/case/1 ]] && fail "the run ended before SIG$sig: nothing was tested"; }
+  grep -q "Stopped at time" "$c/log.1" || fail "the run ended before SIG$sig (exit $rc): nothing was tested"
   ((rc == 5)) || fail "exit code $rc after SIG$sig, expected 5"
-  grep -q "SIG$sig" "$work/case/log.frictionSolver" || fail "no SIG$sig message"
-  stopped=$(sed -n 's/.*Stopped at time \([^ ]*\) .*/\1/p' "$work/case/log.frictionSolver")
-  [[ -f $work/case/$stopped/uniform/frictionState ]] || fail "the step at $stopped was not written"
+  grep -q "SIG$sig" "$c/log.1" || fail "no SIG$sig message"
+  stopped=$(sed -n 's/.*Stopped at time \([^ ]*\) .*/\1/p' "$c/log.1")
+  [[ -f $c/$stopped/uniform/frictionState ]] || fail "the step at $stopped was not written"
+  echo "stopped at time $stopped; restarting"
+  # The stop wrote its step; if the schedule does not, that time is the one extra.
+  extra=$stopped
+  [[ -d $work/reference/case/$stopped ]] && extra=
+  restartAndCompare "$c" "$extra"
   ;;
 diskFull)
   [[ $(id -u) -eq 0 ]] || fail "needs root to mount a small tmpfs"
-  makeCase "$work/reference" 40
-  sed -i 's/^writeInterval .*/writeInterval   1;/' "$work/reference/system/controlDict"
-  "$bin/frictionSolver" -case "$work/reference" >"$work/reference/log.frictionSolver" 2>&1 || fail "reference failed"
+  reference 40 1
   mkdir -p "$work/small"
-  mount -t tmpfs -o size=900k tmpfs "$work/small" || fail "cannot mount a tmpfs"
+  # Room for two or three written times (a .vtu is 750 kB) before the disk is full.
+  mount -t tmpfs -o size=3m tmpfs "$work/small" || fail "cannot mount a tmpfs"
   trap 'umount "$work/small" 2>/dev/null' EXIT
-  makeCase "$work/small/case" 40
-  sed -i 's/^writeInterval .*/writeInterval   1;/' "$work/small/case/system/controlDict"
+  # 1. The time folders fill the disk.
+  makeCase "$work/small" 40
+  c=$work/small/case
+  setKey "$c" writeInterval 1
   # The mesh stays: frictionSolver checks that constant/splitMesh was made from it.
-  "$bin/frictionSolver" -case "$work/small/case" >"$work/small.log" 2>&1
-  rc=$?
-  ((rc == 6)) || fail "exit code $rc on a full disk, expected 6 (an output error): $(tail -3 "$work/small.log")"
+  solve "$c" "$work/small.log"
+  ((rc == 6)) || fail "exit code $rc on a full disk, expected 6: $(tail -3 "$work/small.log")"
   grep -q "error" "$work/small.log" || fail "no error message"
-  grep -q "$work/small/case" "$work/small.log" || fail "the message does not name the file"
-  folders=$(timeFolders "$work/small/case")
+  grep -q "$c" "$work/small.log" || fail "the message does not name the file"
+  folders=$(timeFolders "$c")
   [[ -n $folders ]] || fail "no time folder fitted: the test tests nothing"
+  # VTK files and .pvd entries are those of the time folders, whole.
+  vtus=$(cd "$c/VTK" && ls case_*.vtu | sed 's/^case_//; s/\.vtu$//' | sort -g)
+  [[ $vtus == "$folders" ]] || fail "VTK files of times $(echo $vtus), time folders $(echo $folders)"
+  pvd=$(sed -n 's/.*file="case_\(.*\)\.vtu".*/\1/p' "$c/VTK/case.pvd" | sort -g)
+  [[ $pvd == "$folders" ]] || fail "the .pvd lists times $(echo $pvd), time folders $(echo $folders)"
+  for t in $folders; do
+    cmp -s "$work/reference/case/VTK/case_$t.vtu" "$c/VTK/case_$t.vtu" || fail "VTK/case_$t.vtu damaged"
+  done
   for t in $folders; do
     for f in D fractures/fracture.dat uniform/frictionState; do
-      cmp -s "$work/reference/$t/$f" "$work/small/case/$t/$f" || fail "time $t: $f damaged"
+      cmp -s "$work/reference/case/$t/$f" "$c/$t/$f" || fail "time $t: $f damaged"
     done
   done
-  ls -a "$work/small/case" | grep -q '\.partial$' && fail "a partial folder was left behind"
+  [[ -z $(cd "$c" && find . -name '.?*') ]] || fail "leftovers: $(cd "$c" && find . -name '.?*')"
   echo "full disk after times: $(echo $folders)"
+  # 2. convergence.dat fills the disk: many steps, nothing else written until the end.
+  rm -rf "$c"
+  makeCase "$work/small" 2000
+  setKey "$c" writeInterval 100000
+  echo "writeVTK no;" >>"$c/system/controlDict"
+  # The mesh stays: frictionSolver checks that constant/splitMesh was made from it.
+  mkdir -p "$c/postProcessing"
+  free=$(df --output=avail -B1 "$work/small" | tail -1)
+  # Leave a few pages: the history (a few hundred bytes a step) overflows them mid-run.
+  head -c $((free - 4 * 4096)) /dev/zero >"$work/small/filler" 2>/dev/null
+  solve "$c" "$work/small.log"
+  ((rc == 6)) || fail "convergence.dat: exit code $rc on a full disk, expected 6: $(tail -3 "$work/small.log")"
+  grep -q "postProcessing/convergence.dat" "$work/small.log" || fail "the message does not name convergence.dat: $(tail -2 "$work/small.log")"
+  h=$c/postProcessing/convergence.dat
+  [[ $(wc -l <"$h") -gt 10 ]] || fail "convergence.dat got nothing before the disk was full: nothing was tested"
+  [[ $(tail -c 1 "$h" | od -An -c | tr -d ' ') == '\n' ]] || fail "convergence.dat ends mid-line"
+  awk '!/^#/ && NF != 5 { exit 1 }' "$h" || fail "convergence.dat has a cut line"
+  echo "convergence.dat full after $(wc -l <"$h") lines"
+  ;;
+overwrite)
+  reference 20
+  makeCase "$work/again" 20
+  c=$work/again/case
+  solve "$c" "$c/log.1"
+  ((rc == 0)) || fail "first run failed"
+  # What is not the solver's stays: a note in postProcessing, the 0 folder.
+  echo "my notes" >"$c/postProcessing/notes.txt"
+  before=$(cd "$c" && find . -type f ! -name 'log.*' -exec md5sum {} + | sort)
+  solve "$c" "$c/log.2"
+  ((rc == 1)) || fail "a second run over the time folders: exit $rc, expected 1"
+  for e in "$c" "0.25, 0.5, 0.75, 1" "startFrom latestTime" "-overwrite"; do
+    grep -qF -- "$e" "$c/log.2" || fail "the refusal does not say '$e': $(tail -2 "$c/log.2")"
+  done
+  [[ $(cd "$c" && find . -type f ! -name 'log.*' -exec md5sum {} + | sort) == "$before" ]] ||
+    fail "the refused run changed files"
+  # -overwrite: a stale time folder of another deltaT goes too; the result is a clean run's.
+  cp -r "$c/0.5" "$c/0.55"
+  solve "$c" "$c/log.3" -overwrite
+  ((rc == 0)) || fail "-overwrite failed (exit $rc): $(tail -3 "$c/log.3")"
+  grep -q "overwrite: removed" "$c/log.3" || fail "-overwrite does not say what it removed"
+  [[ $(cat "$c/postProcessing/notes.txt") == "my notes" ]] || fail "-overwrite removed a file not the solver's"
+  rm "$c/postProcessing/notes.txt"
+  sameOutputs "$work/reference/case" "$c"
+  ;;
+changedDeltaT)
+  # Continue from the saved time with another deltaT, or to a later endTime: the times go
+  # on from 0.5 and the last step ends at 1. The load is proportional and the slip only
+  # grows, so the end state does not depend on the steps (to the solver tolerance).
+  reference 10 1
+  for dt in 0.05 0.25 0.3 0.1; do
+    makeCase "$work/dt$dt" 10
+    c=$work/dt$dt/case
+    setKey "$c" writeInterval 1
+    setKey "$c" endTime 0.5
+    solve "$c" "$c/log.1"
+    ((rc == 0)) || fail "first half failed"
+    setKey "$c" endTime 1
+    setKey "$c" deltaT "$dt"
+    setKey "$c" startFrom latestTime
+    solve "$c" "$c/log.2"
+    ((rc == 0)) || fail "deltaT $dt: restart failed (exit $rc): $(tail -3 "$c/log.2")"
+    times=$(sed -n 's/^Time = \([^ ]*\) .*/\1/p' "$c/log.2" | tr '\n' ' ')
+    expected=$(awk -v dt="$dt" 'BEGIN { for (t = 0.5 + dt; t < 1 - 1e-9; t += dt) printf "%.10g ", t; print "1 " }')
+    [[ $times == "$expected" ]] || fail "deltaT $dt: restarted times '$times', expected '$expected'"
+    /usr/bin/python3 - "$work/reference/case/1/fractures/fracture.dat" "$c/1/fractures/fracture.dat" <<'PY' || fail "deltaT $dt: the slip at time 1 differs"
+import sys
+rows = [[float(l.split()[3]) for l in open(p) if not l.startswith('#')] for p in sys.argv[1:]]
+a, b = rows
+big = max(abs(x) for x in a)
+# 1e-6 of the largest slip: far above the solver tolerance (residual 1e-10), far below
+# the slip a step too many or too few adds (a tenth of it).
+assert len(a) == len(b) > 10 and big > 0
+err = max(abs(x - y) for x, y in zip(a, b))
+print("deltaT restart: max slip difference %.3g of max slip %.3g" % (err, big))
+sys.exit(0 if err <= 1e-6 * big else 1)
+PY
+  done
+  # A later endTime with the same deltaT is the uninterrupted run, file for file.
+  sameOutputs "$work/reference/case" "$work/dt0.1/case"
+  ;;
+timeArithmetic)
+  # A deltaT that makes 1e10 steps is refused by name (it wrapped a counter into one step).
+  makeCase "$work/tiny" 10
+  c=$work/tiny/case
+  setKey "$c" deltaT 1e-10
+  solve "$c" "$c/log.frictionSolver"
+  ((rc == 1)) || fail "deltaT 1e-10: exit $rc, expected 1: $(tail -2 "$c/log.frictionSolver")"
+  grep -q "system/controlDict:[0-9]*: key 'deltaT'" "$c/log.frictionSolver" || fail "deltaT 1e-10: the message does not name controlDict's deltaT"
+  [[ -z $(timeFolders "$c") ]] || fail "deltaT 1e-10: time folders written"
+  # Names that timePrecision would make collide get more digits (and the log says so): one
+  # folder per step, each holding the state of its own time.
+  for keys in "deltaT 0.05|timePrecision 1|endTime 1|startTime 0" \
+              "deltaT 0.1|timePrecision 6|endTime 100001|startTime 100000"; do
+    makeCase "$work/names" 10
+    c=$work/names/case
+    setKey "$c" writeInterval 1
+    IFS='|' read -ra kv <<<"$keys"
+    for k in "${kv[@]}"; do
+      grep -q "^${k%% *} " "$c/system/controlDict" || echo "${k%% *} 0;" >>"$c/system/controlDict"
+      setKey "$c" "${k%% *}" "${k#* }"
+    done
+    solve "$c" "$c/log.frictionSolver"
+    ((rc == 0)) || fail "[$keys] exit $rc: $(tail -2 "$c/log.frictionSolver")"
+    grep -q "timePrecision raised to" "$c/log.frictionSolver" || fail "[$keys] the log does not say timePrecision was raised"
+    steps=$(grep -c "^Time = " "$c/log.frictionSolver")
+    folders=$(timeFolders "$c" | grep -vx "${kv[3]#* }")
+    (($(wc -l <<<"$folders") == steps)) || fail "[$keys] $steps steps, folders: $(echo $folders)"
+    for t in $folders; do  # each folder is its own time's
+      saved=$(sed -n 's/^time *\([^;]*\);/\1/p' "$c/$t/uniform/frictionState")
+      awk -v a="$t" -v b="$saved" 'BEGIN { d = a - b; exit !(d < 1e-9 && d > -1e-9) }' ||
+        fail "[$keys] folder $t holds the state of time $saved"
+    done
+    echo "[$keys] $steps steps, $steps folders: $(echo $folders | cut -c1-60)..."
+    rm -rf "$work/names"
+  done
   ;;
 *) fail "unknown scenario" ;;
 esac

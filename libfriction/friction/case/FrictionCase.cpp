@@ -15,6 +15,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "friction/core/OutputError.hpp"
 #include "friction/core/StopRequest.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
@@ -34,6 +35,33 @@ Dictionary readCaseFile(const std::string& caseDir, const std::string& relative)
   if (!fs::is_regular_file(path))
     throw InputError(path, "cannot open: the case needs " + relative);
   return Dictionary::read(path);
+}
+
+/// The value of a time-folder name, if the whole name is a number ("0.5", "1e-05").
+bool timeOfName(const std::string& name, double& t) {
+  if (name.empty() || name[0] == '.') return false;
+  char* end = nullptr;
+  t = std::strtod(name.c_str(), &end);
+  return end != name.c_str() && *end == '\0';
+}
+
+/// The time folders of a case (folders named as a number), by time.
+std::vector<std::pair<double, std::string>> timeFolders(const std::string& caseDir) {
+  std::vector<std::pair<double, std::string>> folders;
+  for (const auto& e : fs::directory_iterator(caseDir)) {
+    double t = 0;
+    if (e.is_directory() && timeOfName(e.path().filename().string(), t))
+      folders.emplace_back(t, e.path().filename().string());
+  }
+  std::sort(folders.begin(), folders.end());
+  return folders;
+}
+
+/// "0.1, 0.2, 0.3" or "0.1, 0.2, ..., 1 (40 folders)".
+std::string listNames(const std::vector<std::string>& names) {
+  if (names.size() <= 4) return joinWords(names);
+  return names[0] + ", " + names[1] + ", ..., " + names.back() + " (" +
+         std::to_string(names.size()) + " folders)";
 }
 
 }  // namespace
@@ -396,24 +424,80 @@ Eigen::VectorXd FrictionCase::fracturePressure(double t) const {
   return p;
 }
 
-int FrictionCase::restartStep(std::ostream& log) {
+void FrictionCase::prepareOutput(bool overwrite, std::ostream& log) {
+  outputPrepared_ = true;
+  std::vector<std::string> earlier;
+  for (const auto& [t, name] : timeFolders(caseDir_))
+    if (t > time_->startTime()) earlier.push_back(name);
+  if (overwrite) {
+    for (const std::string& name : earlier) {
+      std::error_code ec;
+      fs::remove_all(fs::path(caseDir_) / name, ec);
+      if (ec)
+        throw OutputError((fs::path(caseDir_) / name).string(),
+                          "-overwrite cannot remove this time folder (" + ec.message() + ")");
+    }
+    trimOutputs([](const std::string&) { return false; }, true);
+    log << "-overwrite: removed the earlier run's outputs ("
+        << (earlier.empty() ? std::string("no time folder") : "time folders " + listNames(earlier))
+        << ", VTK files, postProcessing/convergence.dat)\n";
+    return;
+  }
+  if (earlier.empty() || time_->startFromLatest()) return;
+  throw InputError(
+      caseDir_, "time folders of an earlier run exist after startTime " +
+                    formatNumber(time_->startTime()) + ": " + listNames(earlier) +
+                    "; frictionSolver does not overwrite them. Either continue that run with "
+                    "'startFrom latestTime;' in system/controlDict, or start again with "
+                    "'frictionSolver -overwrite', which first removes them, VTK/ and "
+                    "postProcessing/convergence.dat");
+}
+
+void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh) {
+  TimeFolder::removeLeftovers(caseDir_);
+  std::vector<std::string> fractureNames;
+  for (const auto& g : split_.fractures) fractureNames.push_back(g.name);
+  auto vtk = std::make_unique<VtkSeries>(caseDir_);
+  vtk->resume(keep, fractureNames, time_->writePrecision());
+  if (time_->writeVTK()) vtk_ = std::move(vtk);
+
+  const fs::path post = fs::path(caseDir_) / "postProcessing";
+  std::error_code ec;
+  fs::create_directories(post, ec);
+  if (ec || !fs::is_directory(post))
+    throw OutputError(post.string(), "cannot create the folder" +
+                                         (ec ? " (" + ec.message() + ")" : std::string(": a file has its name")));
+  removeTemporaryFiles(post.string());
+  // The history of the steps up to the restart time, as the run that wrote them left it:
+  // its lines start with the time's name (which reads back as that time).
+  const std::string path = (post / "convergence.dat").string();
+  std::string text = "# time iteration J relResidual stepNorm\n";
+  if (!fresh) {
+    std::ifstream in(path);
+    std::string kept;
+    for (std::string line; std::getline(in, line);) {
+      const std::string first = line.substr(0, line.find(' '));
+      if (line.empty() || line[0] == '#' || keep(first)) kept += line + "\n";
+    }
+    if (!kept.empty()) text = kept;
+  }
+  writeTextAtomic(path, text);
+  history_ = std::make_unique<AppendFile>(path, false);
+}
+
+long FrictionCase::restart(std::ostream& log) {
   // The newest time folder that is complete: it has a state file (a folder appears only
   // whole, TimeFolder.hpp; a half-written one is still named .<time>.partial).
-  double latest = -std::numeric_limits<double>::infinity();
-  fs::path folder;
-  for (const auto& e : fs::directory_iterator(caseDir_)) {
-    if (!e.is_directory()) continue;
-    const std::string name = e.path().filename().string();
-    char* end = nullptr;
-    const double t = std::strtod(name.c_str(), &end);
-    if (end == name.c_str() || *end != '\0' || name[0] == '.') continue;
-    if (t > latest && fs::exists(e.path() / "uniform" / "frictionState")) latest = t, folder = e.path();
-  }
+  std::string folder;
+  for (const auto& [t, name] : timeFolders(caseDir_))
+    if (fs::exists(fs::path(caseDir_) / name / "uniform" / "frictionState")) folder = name;
   if (folder.empty()) {
     log << "startFrom latestTime: no complete time folder yet, starting at startTime\n";
-    return 0;
+    trimOutputs([](const std::string&) { return false; }, true);
+    return 1;
   }
-  const Dictionary st = Dictionary::read((folder / "uniform" / "frictionState").string());
+  const Dictionary st =
+      Dictionary::read((fs::path(caseDir_) / folder / "uniform" / "frictionState").string());
   const std::vector<double> slip = st.getScalarList("slip");
   const std::vector<double> beta = st.getScalarList("lastIncrement");
   if (static_cast<Eigen::Index>(slip.size()) != system_->size() || beta.size() != slip.size())
@@ -421,12 +505,29 @@ int FrictionCase::restartStep(std::ostream& log) {
                     "fracture node (" + std::to_string(system_->size()) + "): the mesh or element "
                     "order changed since this folder was written");
   const long step = st.getInt("step", Bounds::nonNegative());
-  st.getScalar("time");
+  const double t0 = st.getScalar("time");
   st.checkAllRead();
   slip_ = Eigen::Map<const Eigen::VectorXd>(slip.data(), system_->size());
   lastBeta_ = Eigen::Map<const Eigen::VectorXd>(beta.data(), system_->size());
-  log << "Restarting from time " << folder.filename().string() << " (step " << step << ")\n\n";
-  return static_cast<int>(step);
+
+  // What a killed run wrote after t0 goes: every time after it has a name that reads back
+  // above both t0 and the value of t0's own name (names are distinct, TimeControl.hpp).
+  double named = t0;
+  timeOfName(folder, named);
+  const double limit = std::max(t0, named);
+  trimOutputs([limit](const std::string& name) {
+    double t = 0;
+    return timeOfName(name, t) && t <= limit;
+  }, false);
+  const long first = time_->continueAfter(t0, step);
+  log << "Restarting from time " << folder << " (step " << step << ")";
+  if (first > time_->numSteps())
+    log << ": it is endTime, nothing to compute";
+  else
+    log << ", next time " << time_->timeName(time_->time(first)) << " (step " << first << " of "
+        << time_->numSteps() << ")";
+  log << "\n\n";
+  return first;
 }
 
 std::vector<StepResult> FrictionCase::run(std::ostream& log) {
@@ -435,14 +536,14 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   const Eigen::Index n = sys.size();
   Eigen::VectorXd beta = Eigen::VectorXd::Zero(n);
   lastBeta_ = beta;
-  const int first = time_->startFromLatest() ? restartStep(log) + 1 : 1;
+  if (!outputPrepared_) prepareOutput(false, log);
+  long first = 1;
+  if (time_->startFromLatest())
+    first = restart(log);
+  else
+    trimOutputs([](const std::string&) { return false; }, true);
+  if (!time_->precisionNote().empty()) log << time_->precisionNote() << "\n\n";
   Eigen::VectorXd& lastBeta = lastBeta_;
-  const fs::path post = fs::path(caseDir_) / "postProcessing";
-  fs::create_directories(post);
-  // A restart appends to the history; a fresh run starts it.
-  std::ofstream history(post / "convergence.dat", first > 1 ? std::ios::app : std::ios::trunc);
-  if (first == 1) history << "# time iteration J relResidual stepNorm\n";
-  history.precision(8);
   const std::string controlDict = (fs::path(caseDir_) / "system" / "controlDict").string();
   auto controlStamp = fs::last_write_time(controlDict);
   bool controlDictGone = false;
@@ -450,7 +551,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   installStopHandlers();
 
   Eigen::VectorXd lastLoad, lastDirichlet, lastPressure;
-  for (int k = first; k <= time_->numSteps(); ++k) {
+  for (long k = first; k <= time_->numSteps(); ++k) {
     StepResult r;
     r.time = time_->time(k);
     const long solves0 = sys.factorization().numSolves();
@@ -522,10 +623,13 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     }
     slip_ += last_.beta;
     lastBeta = last_.beta;
+    // The time as its folder name: it identifies the step when a restart trims the history.
+    std::ostringstream lines;
+    lines.precision(8);
     for (const auto& h : r.report.history)
-      history << r.time << " " << h.iteration << " " << h.J << " " << h.relResidual << " "
-              << std::max(h.stepNorm, 0.0) << "\n";
-    history.flush();
+      lines << time_->timeName(r.time) << " " << h.iteration << " " << h.J << " " << h.relResidual
+            << " " << std::max(h.stepNorm, 0.0) << "\n";
+    history_->append(lines.str());
 
     // Stop requests: the user edited stopAt in controlDict, or sent SIGINT/SIGTERM.
     std::error_code stampError;
@@ -553,9 +657,11 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     if (write && stopAt != TimeControl::StopAt::noWriteNow) {
       try {
         writeTimeFolder(r, last_.beta, k);
+      } catch (const OutputError&) {
+        throw;
       } catch (const InputError& e) {
         // The case was read fine: a write that fails is the disk's or the system's doing.
-        throw OutputError(e.what());
+        throw OutputError(e.location(), e.message());
       }
       r.written = true;
     }
@@ -571,7 +677,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     // log gets no extra lines).
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int done = k - first + 1, total = time_->numSteps() - first + 1;
+    const long done = k - first + 1, total = time_->numSteps() - first + 1;
     log << "  [step " << k << "/" << time_->numSteps() << ", " << std::setprecision(3) << elapsed
         << " s, ~" << elapsed / done * (total - done) << " s left]\n";
     log.flush();
@@ -648,7 +754,7 @@ void FrictionCase::judgeStep(StepResult& r) const {
   }
 }
 
-void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, int step) {
+void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step) {
   const int precision = time_->writePrecision();
   TimeFolder folder(caseDir_, time_->timeName(r.time));
   const FractureSystem& sys = *system_;
@@ -717,8 +823,9 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   state.entry("slip", std::vector<double>(slip_.data(), slip_.data() + slip_.size()));
   state.entry("lastIncrement", std::vector<double>(beta.data(), beta.data() + beta.size()));
   state.writeAtomic(folder.file("uniform/frictionState"));
-  folder.commit();
 
+  // The VTK files first: the rename of the time folder commits the time. A run killed before
+  // it restarts from the time before, which drops this time's VTK files and .pvd entry.
   if (time_->writeVTK()) {
     if (!vtk_) vtk_ = std::make_unique<VtkSeries>(caseDir_);
     std::function<Eigen::Matrix2d(const Vector2&)> sigma0;
@@ -733,6 +840,8 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
     vtk_->write(r.time, time_->timeName(r.time), sys.splitSpace(), sys.splitAssembler(), u,
                 vtkFractures, precision, sigma0);
   }
+  if (history_) history_->sync();
+  folder.commit();
 }
 
 }  // namespace friction

@@ -14,6 +14,7 @@
 //   0/D                            boundary conditions (BoundaryConditions.hpp)
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <stdexcept>
@@ -24,7 +25,9 @@
 
 #include "friction/case/BoundaryConditions.hpp"
 #include "friction/control/ControlProblem.hpp"
+#include "friction/core/OutputError.hpp"
 #include "friction/control/Optimizer.hpp"
+#include "friction/core/AtomicFile.hpp"
 #include "friction/effect/Effect.hpp"
 #include "friction/fe/Material.hpp"
 #include "friction/fracture/FractureSystem.hpp"
@@ -34,13 +37,6 @@
 #include "friction/time/TimeControl.hpp"
 
 namespace friction {
-
-/// An output or system failure (cannot write, disk full, a file vanished): not the user's
-/// input. frictionSolver exits with status 6 on it.
-class OutputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// A connected part of the split mesh (triangles joined through shared split-mesh nodes, so
 /// the two sides of a fracture are different parts) that touches no Dirichlet patch.
@@ -71,10 +67,18 @@ class FrictionCase {
   explicit FrictionCase(const std::string& caseDir);
   ~FrictionCase();
 
+  /// Before any work: time folders after startTime from an earlier run are refused
+  /// (InputError naming them and both ways out) unless startFrom is latestTime, or
+  /// `overwrite` (frictionSolver -overwrite), which removes the earlier run's outputs first:
+  /// time folders after startTime, its VTK files and postProcessing/convergence.dat. run()
+  /// calls it (without overwrite) if the caller did not.
+  void prepareOutput(bool overwrite, std::ostream& log);
   /// Build the spaces, fix the Dirichlet dofs, assemble and factor once. Returns the status.
   FactorStatus setup(std::ostream& log);
   /// The time loop. Returns the step results (also logged). With startFrom latestTime it
-  /// continues from the newest complete time folder (its uniform/frictionState).
+  /// continues from the newest complete time folder (its uniform/frictionState) at its time,
+  /// after dropping what a killed run wrote beyond it, so that the outputs end as an
+  /// uninterrupted run's.
   std::vector<StepResult> run(std::ostream& log);
   /// Why run() stopped before endTime ("" if it reached it): stopAt or a signal.
   const std::string& stoppedEarly() const { return stoppedEarly_; }
@@ -102,7 +106,7 @@ class FrictionCase {
     std::unique_ptr<FrictionLaw> law;
   };
 
-  void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, int step);
+  void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step);
   /// Judge the state to be written (last_, the primal solve just done): non-finite values
   /// make the step diverged; a residual above the tolerance makes a 'converged' step
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.
@@ -136,8 +140,15 @@ class FrictionCase {
   std::vector<FloatingPart> floating_;
   double diameter_ = 0;  ///< diagonal of the mesh's bounding box [m]
   std::unique_ptr<VtkSeries> vtk_;  ///< ParaView files, when controlDict's writeVTK is on
-  /// Restart: the step to continue after, and the state read from its time folder.
-  int restartStep(std::ostream& log);
+  std::unique_ptr<AppendFile> history_;  ///< postProcessing/convergence.dat
+  bool outputPrepared_ = false;
+  /// Restart: read the state of the newest complete time folder, trim the outputs after it;
+  /// returns the first step to compute.
+  long restart(std::ostream& log);
+  /// Keep of the outputs around the time folders (VTK files and .pvd entries, convergence.dat
+  /// lines) only the times whose name `keep` accepts; remove temporary files and folders of
+  /// killed writes. `fresh`: start convergence.dat anew.
+  void trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh);
 };
 
 }  // namespace friction

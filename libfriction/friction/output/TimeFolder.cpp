@@ -4,8 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
+#include <vector>
 
-#include "friction/core/InputError.hpp"
+#include "friction/core/OutputError.hpp"
 
 namespace friction {
 
@@ -18,8 +19,8 @@ TimeFolder::TimeFolder(const std::string& caseDir, const std::string& name)
   fs::remove_all(partial_, ec);  // left over from a killed run
   fs::create_directories(partial_, ec);
   if (ec)
-    throw InputError(partial_, "cannot create the time folder being written (" + ec.message() +
-                                   "); expected a writable case folder");
+    throw OutputError(partial_, "cannot create the time folder being written (" + ec.message() +
+                                    "); expected a writable case folder");
 }
 
 TimeFolder::~TimeFolder() {
@@ -34,8 +35,8 @@ std::string TimeFolder::file(const std::string& relative) const {
   std::error_code ec;
   fs::create_directories(p.parent_path(), ec);
   if (ec)
-    throw InputError(p.parent_path().string(),
-                     "cannot create folder (" + ec.message() + "); expected a writable case folder");
+    throw OutputError(p.parent_path().string(), "cannot create folder (" + ec.message() +
+                                                    "); expected a writable case folder");
   return p.string();
 }
 
@@ -44,16 +45,34 @@ void TimeFolder::commit() {
   // rename() cannot replace a non-empty folder: move the old one aside first, so that at any
   // instant one complete folder of this name exists or is recoverable (.old).
   const fs::path finalPath(final_);
-  const std::string old = (finalPath.parent_path() / ("." + finalPath.filename().string() + ".old")).string();
+  const std::string old =
+      (finalPath.parent_path() / ("." + finalPath.filename().string() + ".old")).string();
   fs::remove_all(old, ec);
   if (fs::exists(final_)) {
     fs::rename(final_, old, ec);
-    if (ec) throw InputError(final_, "cannot replace the existing time folder (" + ec.message() + ")");
+    if (ec)
+      throw OutputError(final_, "cannot replace the existing time folder (" + ec.message() + ")");
   }
   fs::rename(partial_, final_, ec);
-  if (ec) throw InputError(final_, "cannot create the time folder (" + ec.message() + ")");
+  if (ec) throw OutputError(final_, "cannot create the time folder (" + ec.message() + ")");
   committed_ = true;
   fs::remove_all(old, ec);
+}
+
+int TimeFolder::removeLeftovers(const std::string& caseDir) {
+  const auto endsWith = [](const std::string& s, const std::string& end) {
+    return s.size() > end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+  };
+  std::error_code ec;
+  std::vector<fs::path> leftovers;
+  for (const auto& e : fs::directory_iterator(caseDir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name[0] == '.' && e.is_directory(ec) &&
+        (endsWith(name, ".partial") || endsWith(name, ".old")))
+      leftovers.push_back(e.path());
+  }
+  for (const auto& p : leftovers) fs::remove_all(p, ec);
+  return static_cast<int>(leftovers.size());
 }
 
 }  // namespace friction

@@ -10,7 +10,7 @@ namespace friction {
 
 class TimeFolder {
  public:
-  /// Throws InputError naming the folder if it cannot be created (unwritable case, full disk).
+  /// Throws OutputError naming the folder if it cannot be created (unwritable case, full disk).
   TimeFolder(const std::string& caseDir, const std::string& name);
   ~TimeFolder();
   TimeFolder(const TimeFolder&) = delete;
@@ -22,6 +22,10 @@ class TimeFolder {
   void commit();
   /// The final path <case>/<name>.
   const std::string& finalPath() const { return final_; }
+
+  /// Remove what killed runs leave in caseDir: folders .<name>.partial (never committed) and
+  /// .<name>.old (killed inside commit() while replacing a folder). Returns how many.
+  static int removeLeftovers(const std::string& caseDir);
 
  private:
   std::string partial_, final_;

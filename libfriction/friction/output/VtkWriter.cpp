@@ -16,10 +16,13 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 
-#include "friction/core/InputError.hpp"
+#include "friction/core/OutputError.hpp"
 
 namespace friction {
 
@@ -270,6 +273,98 @@ std::string VtkSeries::vtpPath(const std::string& fracture, const std::string& t
   return (fs::path(vtkDir_) / "fractures" / (fracture + "_" + timeName + ".vtp")).string();
 }
 
+namespace {
+
+std::string xmlUnescape(const std::string& s) {
+  static const std::pair<std::string, char> entities[] = {
+      {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}};
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    bool matched = false;
+    for (const auto& [entity, c] : entities)
+      if (s.compare(i, entity.size(), entity) == 0) {
+        out += c;
+        i += entity.size();
+        matched = true;
+        break;
+      }
+    if (!matched) out += s[i++];
+  }
+  return out;
+}
+
+// The time name in a file name "<prefix>_<time><suffix>", or "" if it does not have that form
+// or the time is not a number.
+std::string timeNameIn(const std::string& file, const std::string& prefix,
+                       const std::string& suffix) {
+  if (file.size() <= prefix.size() + 1 + suffix.size() || file.compare(0, prefix.size(), prefix) != 0 ||
+      file[prefix.size()] != '_' ||
+      file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return "";
+  const std::string name =
+      file.substr(prefix.size() + 1, file.size() - prefix.size() - 1 - suffix.size());
+  char* end = nullptr;
+  std::strtod(name.c_str(), &end);
+  return end != name.c_str() && *end == '\0' ? name : "";
+}
+
+}  // namespace
+
+int VtkSeries::resume(const std::function<bool(const std::string&)>& keep,
+                      const std::vector<std::string>& fractures, int precision) {
+  std::error_code ec;
+  const fs::path vtk(vtkDir_), vtp = vtk / "fractures";
+  times_.clear();
+  // The earlier collection, entry by entry; part 0 (the .vtu) starts a time.
+  if (fs::is_regular_file(pvdPath(), ec)) {
+    std::ifstream in(pvdPath());
+    const std::regex attribute("(\\w+)=\"([^\"]*)\"");
+    for (std::string line; std::getline(in, line);) {
+      if (line.find("<DataSet") == std::string::npos) continue;
+      std::map<std::string, std::string> a;
+      for (std::sregex_iterator m(line.begin(), line.end(), attribute), e; m != e; ++m)
+        a[(*m)[1]] = xmlUnescape((*m)[2]);
+      if (a["part"] == "0") {
+        const std::string name = timeNameIn(a["file"], caseName_, ".vtu");
+        times_.emplace_back(name, PvdTime{std::strtod(a["timestep"].c_str(), nullptr), {}, {}});
+      }
+      if (times_.empty()) continue;
+      times_.back().second.files.push_back(a["file"]);
+      times_.back().second.names.push_back(a["name"]);
+    }
+  }
+  std::vector<std::pair<std::string, PvdTime>> kept;
+  for (auto& t : times_)
+    if (!t.first.empty() && keep(t.first)) kept.push_back(std::move(t));
+  times_ = std::move(kept);
+
+  // Every file of this layout whose time is dropped (whether or not the .pvd listed it).
+  int removed = 0;
+  const auto sweep = [&](const fs::path& folder, const std::string& prefix, const std::string& suffix) {
+    std::vector<fs::path> doomed;
+    for (const auto& e : fs::directory_iterator(folder, ec)) {
+      const std::string name = timeNameIn(e.path().filename().string(), prefix, suffix);
+      if (!name.empty() && !keep(name)) doomed.push_back(e.path());
+    }
+    for (const auto& p : doomed) removed += fs::remove(p, ec) ? 1 : 0;
+  };
+  if (fs::is_directory(vtk, ec)) sweep(vtk, caseName_, ".vtu");
+  if (fs::is_directory(vtp, ec))
+    for (const std::string& f : fractures) sweep(vtp, f, ".vtp");
+  removed += removeTemporaryFiles(vtk.string()) + removeTemporaryFiles(vtp.string());
+
+  if (!times_.empty()) {
+    std::vector<PvdTime> all;
+    for (const auto& nt : times_) all.push_back(nt.second);
+    writePvd(pvdPath(), all, std::max(precision, 12));
+  } else if (fs::remove(pvdPath(), ec)) {
+    ++removed;
+  }
+  if (fs::is_empty(vtp, ec) && !ec) fs::remove(vtp, ec);
+  if (fs::is_empty(vtk, ec) && !ec) fs::remove(vtk, ec);
+  return removed;
+}
+
 void VtkSeries::write(double time, const std::string& timeName, const LagrangeSpace& space,
                       const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
                       const std::vector<Fracture>& fractures, int precision,
@@ -277,18 +372,27 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
   std::error_code ec;
   fs::create_directories(fs::path(vtkDir_) / "fractures", ec);
   if (ec)
-    throw InputError((fs::path(vtkDir_) / "fractures").string(),
+    throw OutputError((fs::path(vtkDir_) / "fractures").string(),
                      "cannot create the VTK output folder (" + ec.message() + ")");
 
   PvdTime entry;
   entry.time = time;
-  writeVtu(vtuPath(timeName), space, assembler, u, precision, initialStress);
-  entry.files.push_back(fs::path(vtuPath(timeName)).filename().string());
-  entry.names.push_back("mesh");
-  for (const Fracture& f : fractures) {
-    writeFractureVtp(vtpPath(f.name, timeName), f.rows, precision);
-    entry.files.push_back("fractures/" + fs::path(vtpPath(f.name, timeName)).filename().string());
-    entry.names.push_back(f.name);
+  std::vector<std::string> written;
+  try {
+    writeVtu(vtuPath(timeName), space, assembler, u, precision, initialStress);
+    written.push_back(vtuPath(timeName));
+    entry.files.push_back(fs::path(vtuPath(timeName)).filename().string());
+    entry.names.push_back("mesh");
+    for (const Fracture& f : fractures) {
+      writeFractureVtp(vtpPath(f.name, timeName), f.rows, precision);
+      written.push_back(vtpPath(f.name, timeName));
+      entry.files.push_back("fractures/" + fs::path(vtpPath(f.name, timeName)).filename().string());
+      entry.names.push_back(f.name);
+    }
+  } catch (...) {
+    // A time is written whole or not at all: no .vtu without its .vtp files (full disk).
+    for (const std::string& w : written) fs::remove(w, ec);
+    throw;
   }
 
   bool replaced = false;
@@ -303,7 +407,7 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
   all.reserve(times_.size());
   for (const auto& nt : times_) all.push_back(nt.second);
   // Time values need enough digits to stay distinct and ordered even when the files'
-  // precision is low.
+  // precision is low (resume() writes the same).
   writePvd(pvdPath(), all, std::max(precision, 12));
 }
 

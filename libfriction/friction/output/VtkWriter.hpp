@@ -44,7 +44,7 @@ constexpr int kVtkQuadraticTriangle = 22;
 int vtkStateCode(const std::string& state);
 
 /// Write the displacement and stress of `u` on the mesh of `space` as a VTK XML unstructured
-/// grid (ASCII) at `path`; the folder must exist (InputError otherwise, naming path).
+/// grid (ASCII) at `path`; the folder must exist (OutputError otherwise, naming path).
 ///  * points: every node of `space` (P2: the vertices, then the edge midpoints), z = 0 [m];
 ///  * cells: VTK_TRIANGLE (5) for P1, VTK_QUADRATIC_TRIANGLE (22) for P2 with its six nodes
 ///    in LagrangeSpace's local order v0 v1 v2 mid01 mid12 mid20, which is VTK's;
@@ -88,8 +88,8 @@ void writePvd(const std::string& path, const std::vector<PvdTime>& times, int pr
 /// The VTK output of one run (layout in the file comment). Construct it once per run and call
 /// write() at each written time; it creates <case>/VTK/ and <case>/VTK/fractures/ on the first
 /// write and rewrites the .pvd with every time written so far by this object (a time name
-/// written twice replaces its entry). It does not read an existing .pvd: a new run starts a
-/// new collection.
+/// written twice replaces its entry). A new object starts a new collection; resume() first
+/// takes over the times of an earlier run that a restart keeps.
 class VtkSeries {
  public:
   /// `caseDir`: the case folder; `caseName`: the base name of the .vtu and .pvd files
@@ -105,11 +105,21 @@ class VtkSeries {
   /// Write the .vtu of (space, assembler, u) (see writeVtu), one .vtp per fracture (see
   /// writeFractureVtp) and then the .pvd. `time`: the time value [s or load parameter];
   /// `timeName`: the time folder's name (TimeControl::timeName), used in the file names.
-  /// Throws InputError naming the file if a folder or file cannot be written.
+  /// Throws OutputError naming the file if a folder or file cannot be written.
   void write(double time, const std::string& timeName, const LagrangeSpace& space,
              const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
              const std::vector<Fracture>& fractures, int precision,
              const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress = {});
+
+  /// Take over an earlier run's collection up to a restart: read the existing .pvd (if any),
+  /// keep the times whose name `keep` accepts, and delete the files of this layout whose time
+  /// name it rejects (dropped .pvd entries, and files of times the .pvd never listed because
+  /// the run was killed before writing it), for the case's fractures `fractures`; then the
+  /// temporary files of killed writes, the .pvd itself when nothing is kept and empty VTK
+  /// folders. The .pvd is rewritten with the kept times as write() would have written it.
+  /// Names that are not numbers are never touched. Returns the number of files deleted.
+  int resume(const std::function<bool(const std::string& timeName)>& keep,
+             const std::vector<std::string>& fractures, int precision);
 
   /// <case>/VTK/<caseName>.pvd
   std::string pvdPath() const;
