@@ -26,6 +26,10 @@ class FreeFemParser {
               " edges announced by the header (line " + std::to_string(headerLine_) + "), found " +
               s_.quotedLine() + ": expected the end of the file; the counts " +
               "nv nt nbe = " + counts() + " disagree with the file");
+    numbering_.point.resize(mesh_.points.size());
+    for (std::size_t i = 0; i < numbering_.point.size(); ++i)
+      numbering_.point[i] = static_cast<long long>(i) + 1;
+    finishMesh(s_, mesh_, numbering_);
     return std::move(mesh_);
   }
 
