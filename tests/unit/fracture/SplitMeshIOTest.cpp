@@ -91,6 +91,24 @@ TEST_CASE("readSplitMesh accepts what splitFractures makes and refuses what woul
     s.mesh.edges[0] = {0, 0};
     CHECK_THAT(readError(dir, s), Contains("is not a side of any triangle"));
   }
+  SECTION("a frame that is not one (the solver would scale tractions by it)") {
+    SplitMesh s = good;
+    s.fractures[0].tangent[2] *= 1e300;
+    CHECK_THAT(readError(dir, s), Contains("must be unit vectors"));
+    s = good;
+    s.fractures[0].normal[2] = -s.fractures[0].normal[2];
+    CHECK_THAT(readError(dir, s), Contains("normal = (t_y, -t_x)"));
+  }
+  SECTION("an arclength that does not grow") {
+    SplitMesh s = good;
+    s.fractures[0].arclength[2] = s.fractures[0].arclength[1];
+    CHECK_THAT(readError(dir, s), Contains("'arclength' must start at 0 and grow"));
+  }
+  SECTION("coordinates whose triangle area overflows") {
+    SplitMesh s = good;
+    s.mesh.points[0] = Vector2(-1e300, -1e300);
+    CHECK_THAT(readError(dir, s), Contains("not a finite number"));
+  }
   SECTION("fracture nodes out of order") {
     SplitMesh s = good;
     FractureGeometry& g = s.fractures[0];
