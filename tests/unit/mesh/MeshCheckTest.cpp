@@ -49,8 +49,7 @@ TEST_CASE("mesh checks: a sound mesh has no coincident points and no unlabelled 
   }
 }
 
-TEST_CASE("mesh checks: a hidden cut is found as coincident points at any scale",
-          "[mesh][check]") {
+TEST_CASE("mesh checks: a hidden cut is found as coincident points at any scale", "[mesh][check]") {
   const int n = 6;
   // Exactly coincident, and off by round-off of the coordinates (1e-16 relative).
   for (double scale : {1e-9, 1.0, 1e6})
