@@ -1,7 +1,7 @@
 // Reader for FreeFEM's 2D .msh (what savemesh writes): header "nv nt nbe", nv lines
 // "x y label", nt lines "v1 v2 v3 region" (1-based, counter-clockwise), nbe lines
 // "v1 v2 label". Internal fracture edges are ordinary lines of the edge list, once each, in
-// either direction. See TOOLS.md, "FreeFEM".
+// either direction.
 #include <limits>
 
 #include "friction/mesh/MeshReaderDetail.hpp"
