@@ -1,4 +1,4 @@
-// splitFractureNodes: duplicate the mesh nodes along the fractures of a case (METHOD.md §2)
+// splitFractureNodes: duplicate the mesh nodes along the fractures of a case (docs/method.md)
 // and write the split mesh, with n_Γ, t_Γ and arclength per fracture node, to
 // <case>/constant/splitMesh for the solver.
 //

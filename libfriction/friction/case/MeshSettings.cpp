@@ -62,6 +62,16 @@ MeshSettings MeshSettings::read(const std::string& caseDir) {
   if (dict.found("defaultPatch")) {
     s.defaultPatch = dict.getWord("defaultPatch");
     s.defaultPatchWhere = dict.location("defaultPatch");
+    // It becomes a dictionary key (constant/splitMesh, 0/D): a word, as the patch names.
+    const std::string& n = s.defaultPatch;
+    const bool word = !n.empty() && (std::isalpha(static_cast<unsigned char>(n[0])) || n[0] == '_') &&
+                      std::all_of(n.begin(), n.end(), [](char c) {
+                        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+                      });
+    if (!word)
+      dict.fail("defaultPatch", "key 'defaultPatch': '" + n +
+                                    "' is not a valid patch name (letters, digits, '_' and '.', "
+                                    "starting with a letter)");
     if (seen.count(s.defaultPatch))
       dict.fail("defaultPatch", "key 'defaultPatch': '" + s.defaultPatch +
                                     "' is a fracture; the unlabelled boundary edges need a "

@@ -1,4 +1,4 @@
-// Node splitting along fractures (METHOD.md §2). The rule is topological: around a fracture
+// Node splitting along fractures (docs/method.md). The rule is topological: around a fracture
 // node, the triangles that still share a non-fracture edge through the node form one side.
 // Geometry enters only to tell which side is Ω⁺ (SignConventions.hpp).
 #include "friction/fracture/SplitMesh.hpp"

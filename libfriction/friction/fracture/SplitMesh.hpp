@@ -1,4 +1,4 @@
-// Splitting mesh nodes along fractures (METHOD.md §2): every node on a fracture gets one copy
+// Splitting mesh nodes along fractures (docs/method.md): every node on a fracture gets one copy
 // per group of its triangles that stay connected once the mesh is cut along the fracture
 // edges. A tip inside the body therefore stays single (the jump vanishes there); a node
 // where a fracture reaches the outer boundary is duplicated. Signs: SignConventions.hpp.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +13,7 @@
 
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
+#include "friction/fracture/SignConventions.hpp"
 
 namespace friction {
 
@@ -129,7 +131,12 @@ SplitMesh readSplitMesh(const std::string& path) {
   for (const auto& t : dict.getIntTupleList<3>("triangles")) {
     m.triangles.push_back({checkIndex(dict, "triangles", t[0]), checkIndex(dict, "triangles", t[1]),
                            checkIndex(dict, "triangles", t[2])});
-    if (!(m.signedArea(m.numTriangles() - 1) > 0))
+    const double area = m.signedArea(m.numTriangles() - 1);
+    if (!std::isfinite(area))
+      dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numTriangles() - 1) +
+                                 " has an area that is not a finite number (coordinates too "
+                                 "large in 'points'?)");
+    if (!(area > 0))
       dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numTriangles() - 1) +
                                  " is clockwise or degenerate (expected counter-clockwise)");
   }
@@ -224,6 +231,18 @@ SplitMesh readSplitMesh(const std::string& path) {
       if ((g.plus[i] == g.minus[i]) != (g.kind[i] == FractureNodeKind::tip))
         f.fail("kind", "fracture node " + std::to_string(i) +
                            ": exactly the tips have plus == minus");
+      // The solver takes the frame as written: it must be one (SignConventions.hpp).
+      const double tol = 1e-9;
+      if (!(std::abs(g.tangent[i].norm() - 1) <= tol) || !(std::abs(g.normal[i].norm() - 1) <= tol) ||
+          !((g.normal[i] - normalFromTangent(g.tangent[i])).norm() <= tol))
+        f.fail("normal", "fracture node " + std::to_string(i) +
+                             ": 'normal' and 'tangent' must be unit vectors with normal = "
+                             "(t_y, -t_x) (SignConventions.hpp)" + std::string(resplit));
+      if (!std::isfinite(g.arclength[i]) || (i == 0 ? g.arclength[i] != 0
+                                                     : !(g.arclength[i] > g.arclength[i - 1])))
+        f.fail("arclength", "fracture node " + std::to_string(i) +
+                                ": 'arclength' must start at 0 and grow along the fracture" +
+                                std::string(resplit));
       if (i > 0 && (!isSide(g.plus[i - 1], g.plus[i]) || !isSide(g.minus[i - 1], g.minus[i])))
         f.fail("plus", "fracture nodes " + std::to_string(i - 1) + " and " + std::to_string(i) +
                            ": their 'plus' and 'minus' copies must be joined by triangle sides "

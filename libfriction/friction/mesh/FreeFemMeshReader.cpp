@@ -1,7 +1,7 @@
 // Reader for FreeFEM's 2D .msh (what savemesh writes): header "nv nt nbe", nv lines
 // "x y label", nt lines "v1 v2 v3 region" (1-based, counter-clockwise), nbe lines
 // "v1 v2 label". Internal fracture edges are ordinary lines of the edge list, once each, in
-// either direction. See TOOLS.md, "FreeFEM".
+// either direction.
 #include <limits>
 
 #include "friction/mesh/MeshReaderDetail.hpp"
@@ -26,6 +26,10 @@ class FreeFemParser {
               " edges announced by the header (line " + std::to_string(headerLine_) + "), found " +
               s_.quotedLine() + ": expected the end of the file; the counts " +
               "nv nt nbe = " + counts() + " disagree with the file");
+    numbering_.point.resize(mesh_.points.size());
+    for (std::size_t i = 0; i < numbering_.point.size(); ++i)
+      numbering_.point[i] = static_cast<long long>(i) + 1;
+    finishMesh(s_, mesh_, numbering_);
     return std::move(mesh_);
   }
 

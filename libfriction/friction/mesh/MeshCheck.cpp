@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 #include <unordered_set>
 
 namespace friction {
@@ -25,15 +24,12 @@ std::vector<std::pair<Index, Index>> coincidentPoints(const Mesh& mesh) {
   // Shortest triangle side at each vertex (infinite for a vertex no triangle uses: such a
   // vertex is not part of the body and is left out).
   std::vector<double> h(n, std::numeric_limits<double>::infinity());
-  std::unordered_set<std::uint64_t> sides;
-  sides.reserve(mesh.triangles.size() * 2);
   for (const auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) {
       const Index a = t[k], b = t[(k + 1) % 3];
       const double l = (mesh.points[a] - mesh.points[b]).norm();
       h[a] = std::min(h[a], l);
       h[b] = std::min(h[b], l);
-      sides.insert(sideKey(a, b));
     }
   double cell = 0;
   for (Index v = 0; v < n; ++v)
@@ -41,56 +37,80 @@ std::vector<std::pair<Index, Index>> coincidentPoints(const Mesh& mesh) {
   std::vector<std::pair<Index, Index>> pairs;
   if (!(cell > 0)) return pairs;
 
-  // Hash grid with cells of the largest tolerance: a coincident pair lies in neighbouring
-  // cells. Cell coordinates are clamped so that a huge coordinate cannot overflow.
+  // Grid with cells of the largest tolerance, as a sorted list (one allocation): a
+  // coincident pair lies in neighbouring cells. Cell coordinates are clamped so that a huge
+  // coordinate cannot overflow.
   const auto cellOf = [&](double x) {
-    const double c = std::floor(x / cell);
     constexpr double limit = 1e15;
-    return static_cast<std::int64_t>(std::max(-limit, std::min(limit, c)));
+    return static_cast<std::int64_t>(std::max(-limit, std::min(limit, std::floor(x / cell))));
   };
-  const auto cellKey = [](std::int64_t i, std::int64_t j) {
-    return static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(j);
+  struct Entry {
+    std::int64_t i, j;
+    Index v;
+    bool operator<(const Entry& o) const { return i != o.i ? i < o.i : j != o.j ? j < o.j : v < o.v; }
   };
-  std::unordered_map<std::uint64_t, std::vector<Index>> grid;
+  std::vector<Entry> grid;
   grid.reserve(static_cast<std::size_t>(n));
   for (Index v = 0; v < n; ++v)
-    if (std::isfinite(h[v]))
-      grid[cellKey(cellOf(mesh.points[v].x()), cellOf(mesh.points[v].y()))].push_back(v);
-  for (Index v = 0; v < n; ++v) {
-    if (!std::isfinite(h[v])) continue;
-    const std::int64_t ci = cellOf(mesh.points[v].x()), cj = cellOf(mesh.points[v].y());
-    for (std::int64_t di = -1; di <= 1; ++di)
-      for (std::int64_t dj = -1; dj <= 1; ++dj) {
-        auto it = grid.find(cellKey(ci + di, cj + dj));
-        if (it == grid.end()) continue;
-        for (Index w : it->second) {
-          if (w <= v) continue;
-          const double tol = coincidentTolerance * std::min(h[v], h[w]);
-          if ((mesh.points[v] - mesh.points[w]).norm() <= tol && !sides.count(sideKey(v, w)))
-            pairs.emplace_back(v, w);
-        }
+    if (std::isfinite(h[v])) grid.push_back({cellOf(mesh.points[v].x()), cellOf(mesh.points[v].y()), v});
+  std::sort(grid.begin(), grid.end());
+  for (const Entry& e : grid)
+    for (std::int64_t di = -1; di <= 1; ++di) {
+      // Cells (i+di, j-1..j+1) are contiguous in the sorted list.
+      auto it = std::lower_bound(grid.begin(), grid.end(), Entry{e.i + di, e.j - 1, -1});
+      for (; it != grid.end() && it->i == e.i + di && it->j <= e.j + 1; ++it) {
+        const Index v = e.v, w = it->v;
+        if (w <= v) continue;
+        if ((mesh.points[v] - mesh.points[w]).norm() <= coincidentTolerance * std::min(h[v], h[w]))
+          pairs.emplace_back(v, w);
       }
-  }
+    }
+  if (pairs.empty()) return pairs;
+  // Vertices joined by a triangle side are a side length apart and so never within the
+  // tolerance of each other; a side of (near) zero length is a degenerate triangle, which the
+  // readers refuse. Kept as a guard for meshes built in code.
+  std::unordered_set<std::uint64_t> candidates;
+  for (const auto& [v, w] : pairs) candidates.insert(sideKey(v, w));
+  std::unordered_set<std::uint64_t> joined;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t key = sideKey(t[k], t[(k + 1) % 3]);
+      if (candidates.count(key)) joined.insert(key);
+    }
+  pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                             [&](const std::pair<Index, Index>& p) {
+                               return joined.count(sideKey(p.first, p.second)) > 0;
+                             }),
+              pairs.end());
   std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());  // hash collisions
   return pairs;
 }
 
 std::vector<std::array<Index, 2>> unlabelledBoundaryEdges(const Mesh& mesh) {
-  std::unordered_map<std::uint64_t, std::pair<int, std::array<Index, 2>>> sides;
-  sides.reserve(mesh.triangles.size() * 2);
+  // Sorting beats hashing here: one allocation for all sides.
+  struct Side {
+    std::uint64_t key;
+    std::array<Index, 2> edge;
+    bool operator<(const Side& o) const { return key < o.key; }
+  };
+  std::vector<Side> sides;
+  sides.reserve(mesh.triangles.size() * 3);
   for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      auto& s = sides[sideKey(t[k], t[(k + 1) % 3])];
-      ++s.first;
-      s.second = {t[k], t[(k + 1) % 3]};
-    }
-  std::unordered_set<std::uint64_t> labelled;
-  for (const auto& e : mesh.edges) labelled.insert(sideKey(e[0], e[1]));
+    for (int k = 0; k < 3; ++k)
+      sides.push_back({sideKey(t[k], t[(k + 1) % 3]), {t[k], t[(k + 1) % 3]}});
+  std::sort(sides.begin(), sides.end());
+  std::vector<std::uint64_t> labelled;
+  labelled.reserve(mesh.edges.size());
+  for (const auto& e : mesh.edges) labelled.push_back(sideKey(e[0], e[1]));
+  std::sort(labelled.begin(), labelled.end());
   std::vector<std::array<Index, 2>> out;
-  for (const auto& [key, s] : sides)
-    if (s.first == 1 && !labelled.count(key)) out.push_back(s.second);
-  // Hash order is not reproducible across libraries: sort for stable summaries.
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i + 1;
+    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
+    if (j == i + 1 && !std::binary_search(labelled.begin(), labelled.end(), sides[i].key))
+      out.push_back(sides[i].edge);
+    i = j;
+  }
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <memory>
 #include <sstream>
-#include <unordered_map>
 
 #include "friction/mesh/MeshReaderDetail.hpp"
 
@@ -147,58 +146,69 @@ void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& num
     return std::to_string(numbering.point[v]) + " " + pointText(mesh.points[v]);
   };
 
-  // A triangle listed twice doubles its stiffness and hides as a valid mesh (each of its
-  // sides then has two triangles, as inside the body).
-  std::vector<std::pair<std::array<Index, 3>, Index>> sorted;
-  sorted.reserve(mesh.triangles.size());
-  for (Index t = 0; t < mesh.numTriangles(); ++t) {
-    std::array<Index, 3> key = mesh.triangles[t];
-    std::sort(key.begin(), key.end());
-    sorted.emplace_back(key, t);
+  // Vertex -> its triangles (compressed rows): the side checks below walk one vertex's fan,
+  // a few triangles, with no sorting or hashing of all sides.
+  std::vector<Index> fanStart(mesh.points.size() + 1, 0);
+  for (const auto& t : mesh.triangles)
+    for (Index v : t) ++fanStart[v + 1];
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) fanStart[v + 1] += fanStart[v];
+  std::vector<Index> fan(fanStart.back());
+  {
+    std::vector<Index> next(fanStart.begin(), fanStart.end() - 1);
+    for (Index t = 0; t < mesh.numTriangles(); ++t)
+      for (Index v : mesh.triangles[t]) fan[next[v]++] = t;  // ascending t within each fan
   }
-  std::sort(sorted.begin(), sorted.end());
-  for (std::size_t i = 1; i < sorted.size(); ++i)
-    if (sorted[i].first == sorted[i - 1].first) {
-      const int first = numbering.triangleLine[sorted[i - 1].second];
-      const int second = numbering.triangleLine[sorted[i].second];
-      const auto& k = sorted[i].first;
-      scanner.failAt(std::max(first, second),
-                     "the triangle with vertices " + std::to_string(numbering.point[k[0]]) + " " +
-                         std::to_string(numbering.point[k[1]]) + " " +
-                         std::to_string(numbering.point[k[2]]) + " is listed twice (lines " +
-                         std::to_string(std::min(first, second)) + " and " +
-                         std::to_string(std::max(first, second)) +
-                         "): expected each triangle once");
-    }
-
-  // Triangle sides -> how many triangles, and the first two.
-  struct Side {
-    Index tri[2] = {-1, -1};
-    int count = 0;
+  const auto hasVertex = [&](Index t, Index v) {
+    const auto& tri = mesh.triangles[t];
+    return tri[0] == v || tri[1] == v || tri[2] == v;
   };
-  std::unordered_map<std::uint64_t, Side> sides;
-  sides.reserve(mesh.triangles.size() * 2);
+  const auto sortedVertices = [&](Index t) {
+    std::array<Index, 3> k = mesh.triangles[t];
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+
+  // Per side, the triangles that have it, in file order. A triangle listed twice doubles its
+  // stiffness and hides as a valid mesh (each of its sides then has two triangles, as inside
+  // the body); it shares every side with its copy, so the side walk finds it.
   for (Index t = 0; t < mesh.numTriangles(); ++t)
     for (int k = 0; k < 3; ++k) {
       const Index a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-      Side& side = sides[sideKey(a, b)];
-      if (side.count == 2)
+      Index with[3];
+      int count = 0;
+      for (Index i = fanStart[a]; i < fanStart[a + 1] && count < 3; ++i)
+        if (hasVertex(fan[i], b)) with[count++] = fan[i];
+      if (count >= 2 && with[1] == t && sortedVertices(with[0]) == sortedVertices(t)) {
+        const auto v = sortedVertices(t);
+        scanner.failAt(numbering.triangleLine[t],
+                       "the triangle with vertices " + std::to_string(numbering.point[v[0]]) +
+                           " " + std::to_string(numbering.point[v[1]]) + " " +
+                           std::to_string(numbering.point[v[2]]) + " is listed twice (lines " +
+                           std::to_string(numbering.triangleLine[with[0]]) + " and " +
+                           std::to_string(numbering.triangleLine[t]) +
+                           "): expected each triangle once");
+      }
+      if (count == 3 && with[2] == t)
         scanner.failAt(numbering.triangleLine[t],
                        "the side from vertex " + vertexText(a) + " to vertex " + vertexText(b) +
                            " is a side of a third triangle here (the others are at lines " +
-                           std::to_string(numbering.triangleLine[side.tri[0]]) + " and " +
-                           std::to_string(numbering.triangleLine[side.tri[1]]) +
+                           std::to_string(numbering.triangleLine[with[0]]) + " and " +
+                           std::to_string(numbering.triangleLine[with[1]]) +
                            "): expected a 2D triangulation, where a side bounds at most two "
                            "triangles (overlapping or folded triangles?)");
-      side.tri[side.count++] = t;
     }
+  const auto isSide = [&](Index a, Index b) {
+    for (Index i = fanStart[a]; i < fanStart[a + 1]; ++i)
+      if (hasVertex(fan[i], b)) return true;
+    return false;
+  };
 
   // Labelled edges: sides of the triangulation, each label once per side.
   std::vector<std::pair<std::pair<std::uint64_t, int>, std::size_t>> edgeKeys;
   edgeKeys.reserve(mesh.edges.size());
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
     const auto [a, b] = mesh.edges[e];
-    if (!sides.count(sideKey(a, b)))
+    if (!isSide(a, b))
       scanner.failAt(numbering.edgeLine[e],
                      "the edge from vertex " + vertexText(a) + " to vertex " + vertexText(b) +
                          " (label " + std::to_string(mesh.edgeLabel[e]) +

@@ -1,5 +1,5 @@
 // A fracture node on a Dirichlet patch has its jump held at zero and is reported
-// (METHOD.md §2).
+// (docs/method.md).
 #include <catch2/catch.hpp>
 
 #include "TestMeshes.hpp"

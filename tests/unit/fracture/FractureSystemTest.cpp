@@ -1,4 +1,4 @@
-// The finite-element SlipResponse (METHOD.md §2, §4): the gradient of J against finite
+// The finite-element SlipResponse (docs/method.md): the gradient of J against finite
 // differences for Coulomb and Tresca, P1 and P2; the M-self-adjointness of the dual map; and
 // the known answers that need no optimizer.
 #include <catch2/catch.hpp>

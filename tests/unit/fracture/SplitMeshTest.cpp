@@ -1,4 +1,4 @@
-// Node splitting (METHOD.md §2): counts, single tips, sides, n_Γ orientation, area, and the
+// Node splitting (docs/method.md): counts, single tips, sides, n_Γ orientation, area, and the
 // refusals. Sign conventions under test: SignConventions.hpp.
 #include <catch2/catch.hpp>
 

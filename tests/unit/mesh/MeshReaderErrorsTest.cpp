@@ -477,3 +477,94 @@ TEST_CASE("mesh: gmsh element blocks must follow $Nodes and name entities of $En
                      {"element block of curve 4", "$Entities (line 4) lists no such entity"});
   }
 }
+
+// Checks over the whole mesh (finishMesh): each names the line of the offending item.
+
+TEST_CASE("mesh: a triangle listed twice is rejected at its second line", "[mesh][errors]") {
+  TempDir dir;
+  // Each side of a doubled triangle bounds two triangles, as inside a body: only this check
+  // sees it (the stiffness would count the triangle twice).
+  requireReadError(dir, "twice.msh",
+                   replaceLine(replaceLine(freeFem, 1, "4 3 4"), 7, "1 3 4 1\n1 2 3 1"), 8,
+                   {"the triangle with vertices 1 2 3 is listed twice (lines 6 and 8)"});
+}
+
+TEST_CASE("mesh: a side shared by three triangles is rejected", "[mesh][errors]") {
+  TempDir dir;
+  // Vertex 5 at (2, 0.5): triangle 1 5 3 is counter-clockwise and a third one on side 1-3.
+  const std::string text =
+      replaceLine(replaceLine(replaceLine(freeFem, 1, "5 3 4"), 5, "0 1 3\n2 0.5 0"), 8,
+                  "1 3 4 1\n1 5 3 1");
+  requireReadError(dir, "three.msh", text, 9,
+                   {"is a side of a third triangle here (the others are at lines 7 and 8)"});
+}
+
+TEST_CASE("mesh: a labelled edge that is no side of any triangle is rejected", "[mesh][errors]") {
+  TempDir dir;
+  SECTION("FreeFEM: the diagonal the triangles do not have") {
+    requireReadError(dir, "diag.msh", replaceLine(freeFem, 9, "2 4 2"), 9,
+                     {"the edge from vertex 2 (1, 0) to vertex 4 (0, 1) (label 2) is not a "
+                      "side of any triangle"});
+  }
+  SECTION("gmsh 4.1: a line to a node no triangle uses") {
+    // A fifth node (tag 50, on a point entity) and a line 10-50: the line's node must not
+    // be dropped silently with the unused nodes.
+    const std::string text =
+        "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+        "$Entities\n1 1 1 0\n1 2 2 0 0\n1 0 0 0 1 0 0 1 7 0\n1 0 0 0 1 1 0 1 1 0\n$EndEntities\n"
+        "$Nodes\n2 5 10 50\n2 1 0 4\n10\n20\n30\n40\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+        "0 1 0 1\n50\n2 2 0\n$EndNodes\n"                     // lines 10-24
+        "$Elements\n2 4 1 5\n1 1 1 2\n1 10 20\n4 10 50\n"  // lines 25-29
+        "2 1 2 2\n2 10 20 30\n3 10 30 40\n$EndElements\n";
+    requireReadError(dir, "stray41.msh", text, 29,
+                     {"the edge from vertex 10 (0, 0) to vertex 50 (2, 2) (label 7) is not a "
+                      "side of any triangle",
+                      "Curve{c} In Surface{s}"});
+  }
+}
+
+TEST_CASE("mesh: an edge listed twice with one label is rejected", "[mesh][errors]") {
+  TempDir dir;
+  // Its boundary load would count twice. The same edge with another label is two patches.
+  requireReadError(dir, "edge2.msh", replaceLine(replaceLine(freeFem, 1, "4 2 5"), 11, "4 1 4\n2 1 1"),
+                   12, {"is listed twice with label 1 (lines 8 and 12)"});
+  const Mesh m = readMesh(dir.write("edge2ok.msh",
+                                    replaceLine(replaceLine(freeFem, 1, "4 2 5"), 11, "4 1 4\n2 1 9")));
+  CHECK(m.edges.size() == 5);
+}
+
+TEST_CASE("mesh: vertices no triangle uses are dropped and the rest renumbered", "[mesh][reader]") {
+  TempDir dir;
+  // Vertex 3 of 5 at (0.3, 0.7) is used by nothing; the others are the base square.
+  const std::string text =
+      "5 2 4\n0 0 1\n1 0 1\n0.3 0.7 0\n1 1 2\n0 1 3\n"
+      "1 2 4 1\n1 4 5 1\n1 2 1\n2 4 2\n4 5 3\n5 1 4\n";
+  const Mesh m = readMesh(dir.write("unused.msh", text));
+  const Mesh base = readMesh(dir.write("base.msh", freeFem));
+  REQUIRE(m.droppedPoints.size() == 1);
+  CHECK(m.droppedPoints[0].number == 3);
+  CHECK(m.droppedPoints[0].x == Vector2(0.3, 0.7));
+  CHECK(m.numPoints() == 4);
+  CHECK(base.droppedPoints.empty());
+  // Same triangles and edges, vertex for vertex (the numbering after the gap shifts by one).
+  CHECK(geometryOf(m) == geometryOf(base));
+  CHECK(m.triangles == base.triangles);
+  CHECK(m.edges == base.edges);
+}
+
+TEST_CASE("mesh: numbers are parsed strictly", "[mesh][errors]") {
+  // A decimal comma, two points, a bare exponent or trailing characters are not numbers:
+  // reading a prefix of them would silently give another mesh.
+  TempDir dir;
+  for (const std::string bad : {"0,9", "1.5.3", "1e", "1x", "1e+", "--1", "0x1p0", "1..0"}) {
+    INFO(bad);
+    requireReadError(dir, "number.msh", replaceLine(freeFem, 3, bad + " 0 1"), 3,
+                     {"expected vertex 2 of 4 as \"x y label\""});
+    requireReadError(dir, "number41.msh", replaceLine(gmsh41, 17, bad + " 0 0"), 17,
+                     {"expected the coordinates of node 2 of 4"});
+  }
+  requireReadError(dir, "trailing.msh", replaceLine(freeFem, 7, "1 3 4 1 x"), 7,
+                   {"expected triangle 2 of 2 as \"v1 v2 v3 region\""});
+  requireReadError(dir, "label.msh", replaceLine(freeFem, 8, "1 2 1.0"), 8,
+                   {"expected edge 1 of 4 as \"v1 v2 label\""});
+}

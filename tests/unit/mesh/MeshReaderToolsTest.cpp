@@ -285,3 +285,29 @@ TEST_CASE("mesh: a gmsh surface meshed clockwise is rejected with how to reverse
   }
   CHECK(thrown);
 }
+
+TEST_CASE("mesh: a gmsh Physical Point off the mesh is dropped, the rest read as without it",
+          "[mesh][tools]") {
+  // gmsh writes a node for a physical point that no surface embeds; no triangle uses it.
+  // Kept, it was a node without stiffness and crashed the solver.
+  TempDir dir;
+  dir.write("square.geo", squareGeo);
+  dir.write("probe.geo",
+            squareGeo + "Point(7) = {0.4, 0.8, 0, lc};\nPhysical Point(\"probe\", 8) = {7};\n");
+  for (const std::string format : {"msh41", "msh22"}) {
+    INFO(format);
+    REQUIRE(run(dir, "gmsh -2 -format " + format + " -o square.msh square.geo") == 0);
+    REQUIRE(run(dir, "gmsh -2 -format " + format + " -o probe.msh probe.geo") == 0);
+    const Mesh plain = readMesh(dir.file("square.msh"));
+    const Mesh probe = readMesh(dir.file("probe.msh"));
+    CHECK(plain.droppedPoints.empty());  // the corner's physical point is a mesh vertex
+    REQUIRE(probe.droppedPoints.size() == 1);
+    CHECK(probe.droppedPoints[0].x == Vector2(0.4, 0.8));
+    CHECK(probe.droppedPoints[0].number > 0);
+    CHECK(geometryOf(probe) == geometryOf(plain));
+    std::vector<char> used(probe.points.size(), 0);
+    for (const auto& t : probe.triangles)
+      for (Index v : t) used.at(v) = 1;
+    CHECK(std::count(used.begin(), used.end(), 0) == 0);
+  }
+}

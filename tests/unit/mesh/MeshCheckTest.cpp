@@ -1,0 +1,101 @@
+// coincidentPoints and unlabelledBoundaryEdges (MeshCheck.hpp): a hidden cut is found at any
+// scale, a sound mesh gives nothing, unlabelled boundary sides are exactly the unlabelled ones.
+#include <catch2/catch.hpp>
+
+#include "../fracture/TestMeshes.hpp"
+#include "friction/mesh/MeshCheck.hpp"
+
+using namespace friction;
+using namespace friction::test;
+
+namespace {
+
+// The n x n grid cut along x = 1/2 from the bottom to the top: the nodes of that column get
+// a copy (offset by `offset`) that the triangles and boundary edges right of it use.
+Mesh cutGrid(int n, double scale, double offset) {
+  Mesh m = gridMesh(n);
+  for (Vector2& p : m.points) p *= scale;
+  std::vector<Index> copy(m.points.size(), -1);
+  for (int j = 0; j <= n; ++j) {
+    const Index v = gridNode(n, n / 2, j);
+    copy[v] = m.numPoints();
+    m.points.push_back(m.points[v] + Vector2(offset, 0));
+  }
+  const auto right = [&](const Vector2& c) { return c.x() > 0.5 * scale; };
+  for (auto& t : m.triangles) {
+    const Vector2 c = (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3;
+    if (right(c))
+      for (Index& v : t)
+        if (copy[v] >= 0) v = copy[v];
+  }
+  for (auto& e : m.edges) {
+    if (right(0.5 * (m.points[e[0]] + m.points[e[1]])))
+      for (Index& v : e)
+        if (copy[v] >= 0) v = copy[v];
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("mesh checks: a sound mesh has no coincident points and no unlabelled boundary",
+          "[mesh][check]") {
+  for (double scale : {1e-9, 1.0, 1e6}) {
+    INFO("scale " << scale);
+    Mesh m = gridMesh(8);
+    for (Vector2& p : m.points) p *= scale;
+    CHECK(coincidentPoints(m).empty());
+    CHECK(unlabelledBoundaryEdges(m).empty());
+  }
+}
+
+TEST_CASE("mesh checks: a hidden cut is found as coincident points at any scale", "[mesh][check]") {
+  const int n = 6;
+  // Exactly coincident, and off by round-off of the coordinates (1e-16 relative).
+  for (double scale : {1e-9, 1.0, 1e6})
+    for (double relOffset : {0.0, 1e-15}) {
+      INFO("scale " << scale << ", offset " << relOffset);
+      const Mesh m = cutGrid(n, scale, relOffset * scale);
+      const auto pairs = coincidentPoints(m);
+      REQUIRE(pairs.size() == static_cast<std::size_t>(n + 1));  // one per node of the column
+      for (const auto& [a, b] : pairs) {
+        CHECK(a < b);
+        CHECK(m.points[a].x() == Approx(0.5 * scale).epsilon(1e-12));
+        CHECK((m.points[a] - m.points[b]).norm() <= 1e-14 * scale);
+      }
+      // The two lips, n sides each, with no label.
+      const auto edges = unlabelledBoundaryEdges(m);
+      CHECK(edges.size() == static_cast<std::size_t>(2 * n));
+      for (const auto& e : edges) {
+        CHECK(m.points[e[0]].x() == Approx(0.5 * scale).epsilon(1e-12));
+        CHECK(m.points[e[1]].x() == Approx(0.5 * scale).epsilon(1e-12));
+      }
+    }
+  // Vertices a tenth of a side apart are not coincident: only a cut's copies are.
+  CHECK(coincidentPoints(cutGrid(n, 1.0, 0.1 / n)).empty());
+}
+
+TEST_CASE("mesh checks: boundary sides without a label are listed, oriented counter-clockwise",
+          "[mesh][check]") {
+  const int n = 4;
+  Mesh m = gridMesh(n);
+  // Remove the labels of the right side (label 2).
+  std::vector<std::array<Index, 2>> edges;
+  std::vector<int> labels;
+  for (std::size_t e = 0; e < m.edges.size(); ++e)
+    if (m.edgeLabel[e] != 2) {
+      edges.push_back(m.edges[e]);
+      labels.push_back(m.edgeLabel[e]);
+    }
+  m.edges = edges;
+  m.edgeLabel = labels;
+  const auto found = unlabelledBoundaryEdges(m);
+  REQUIRE(found.size() == static_cast<std::size_t>(n));
+  for (const auto& e : found) {
+    CHECK(m.points[e[0]].x() == 1.0);
+    CHECK(m.points[e[1]].x() == 1.0);
+    CHECK(m.points[e[1]].y() > m.points[e[0]].y());  // the body on the left: upwards
+  }
+  // An interior labelled edge does not count as a boundary; an interior side is not listed.
+  CHECK(coincidentPoints(m).empty());
+}
