@@ -458,7 +458,7 @@ TEST_CASE("output and system errors name the file, exit 6 and leave no partial f
     const std::string log = c.log();
     INFO(log);
     CHECK(rc == 6);
-    CHECK_THAT(log, Catch::Contains("postProcessing: Not a directory"));
+    CHECK_THAT(log, Catch::Contains("postProcessing: cannot create the folder") && Catch::Contains("Not a directory"));
     CHECK_FALSE(fs::exists(c.dir() / "1"));
     CHECK_FALSE(hasPartialFolder(c.dir()));
   }
