@@ -208,6 +208,10 @@ def run_one(work, base, tag, order, opt, tol, max_iter, alpha, binary, timeout):
         it, bs, rr, ex, st = steps[-1]
         res.update(iterations=int(it), backSubstitutions=int(bs), relResidual=float(rr),
                    maxExcessST=float(ex), status=st.replace(" ", "_"))
+    # The run's cost: every back-substitution, those building Newton's S once per run included.
+    m = re.search(r"^Factorisations \d+ \(\S+ s\), back-substitutions (\d+)", text, re.M)
+    if m:
+        res["backSubstitutions"] = int(m.group(1))
     if rc not in (0, 3) or not steps:
         res["status"] = "crash(exit %d)" % rc
         return res, None

@@ -398,6 +398,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   SlipResponse& resp = p.response();
   const Eigen::Index n = p.size();
   const Eigen::VectorXd& mask = resp.freeMask();
+  long setupSolves = 0;
   if (cachedFor_ != &resp || Stt_.rows() != n) {
     // Column k: tractions caused by a unit tangential jump at node k (zero loads and data).
     Stt_.setZero(n, n);
@@ -408,6 +409,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
       throwIfStopNow();  // n solves: long on big fractures
       e[k] = 1;
       resp.dual(e, zero, t, &sn);
+      ++setupSolves;  // one dual solve: one back-substitution
       e[k] = 0;
       Stt_.col(k) = t;
       Snt_.col(k) = sn;
@@ -416,6 +418,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   }
 
   OptimizerReport r;
+  r.setupSolves = setupSolves;
   activeSetChanges_ = 0;
   // One primal solve gives the affine maps' offsets; the rest is dense.
   const ControlState s0 = p.evaluate(Eigen::VectorXd::Zero(n));

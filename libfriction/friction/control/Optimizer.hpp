@@ -41,6 +41,9 @@ struct OptimizerReport {
   /// A diagnosis for the log when the status is not 'converged' (e.g. active-set cycling).
   std::string note;
   std::vector<IterationRecord> history;
+  /// Back-substitutions spent on operators built once per run (Newton's condensed S), not
+  /// on this step: a restarted run builds them again, and its steps must read the same.
+  long setupSolves = 0;
 };
 
 /// Settings every optimizer shares (keys of the case's 'solver' dictionary).
