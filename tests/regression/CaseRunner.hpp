@@ -112,6 +112,9 @@ class Case {
       }
       rows.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], item[9]});
     }
+    // A fracture has two nodes at least: an empty table is a defect, and every check that
+    // loops over its rows would pass on it unseen.
+    REQUIRE(rows.size() >= 2);
     return rows;
   }
 

@@ -261,28 +261,43 @@ TEST_CASE("one factorisation for a multi-step run", "[regression]") {
 }
 
 TEST_CASE("the paper's steepest descent and Armijo decrease J", "[regression][paper]") {
-  // The paper's fixed step α = 2e-4 (γ = 2, ζ = 0) on the coarse mesh: J must fall steadily;
-  // 2000 iterations do not reach the residual tolerance, which the log must say.
-  Case c("paperBenchmark", "paperBenchmark-steepest");
-  c.remesh("-n 20");
-  c.edit("system/frictionSolution", "type +semismoothNewton;", "type steepestDescent; alpha 2e-4;");
-  c.edit("system/frictionSolution", "maxIterations +[0-9]+;", "maxIterations 2000;");
-  const int rc = c.solve();
-  INFO(c.log());
-  CHECK((rc == 0 || rc == 3));
-  const std::string hist = readText(c.dir() / "postProcessing" / "convergence.dat");
-  std::istringstream in(hist);
-  std::vector<double> J;
-  for (std::string line; std::getline(in, line);) {
-    if (line[0] == '#') continue;
-    std::istringstream s(line);
-    double t, k, j;
-    s >> t >> k >> j;
-    J.push_back(j);
+  // The paper's fixed step α = 2e-4 (γ = 2, ζ = 0) on the coarse mesh, and Armijo's
+  // backtracking from its default step: J must fall steadily; 2000 iterations of steepest
+  // descent do not reach the residual tolerance, which the log must say.
+  for (const char* type : {"steepestDescent", "armijo"}) {
+    DYNAMIC_SECTION(type) {
+      Case c("paperBenchmark", std::string("paperBenchmark-") + type);
+      c.remesh("-n 20");
+      c.edit("system/frictionSolution", "type +semismoothNewton;",
+             std::string("type ") + type + (std::string(type) == "steepestDescent" ? "; alpha 2e-4;" : ";"));
+      c.edit("system/frictionSolution", "maxIterations +[0-9]+;", "maxIterations 2000;");
+      const int rc = c.solve();
+      INFO(c.log());
+      CHECK((rc == 0 || rc == 3));
+      CHECK_THAT(c.log(), Catch::Contains("optimizer " + std::string(type)));
+      const std::string hist = readText(c.dir() / "postProcessing" / "convergence.dat");
+      std::istringstream in(hist);
+      std::vector<double> J;
+      for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream s(line);
+        double t, k, j;
+        s >> t >> k >> j;
+        J.push_back(j);
+      }
+      REQUIRE(J.size() > 100);  // neither reaches the tolerance in few iterations
+      if (std::string(type) == "steepestDescent") {
+        // A fixed step: J may rise now and then (α is near 2/L), but falls overall.
+        CHECK(J.back() < 0.05 * J.front());
+      } else {
+        // Armijo's rule never lets J rise. It falls by 5x here (measured 0.204 J₀ at 2000
+        // iterations, where it has stagnated since iteration ~500).
+        for (std::size_t k = 1; k < J.size(); ++k) CHECK(J[k] <= J[k - 1] * (1 + 1e-12));
+        CHECK(J.back() < 0.5 * J.front());
+      }
+      if (rc == 3) CHECK_THAT(c.log(), Catch::Contains("maxIterations"));
+    }
   }
-  REQUIRE(J.size() > 100);
-  CHECK(J.back() < 0.05 * J.front());
-  if (rc == 3) CHECK_THAT(c.log(), Catch::Contains("maxIterations"));
 }
 
 TEST_CASE("bad solver input names file, line and what was expected, and writes nothing",

@@ -2,6 +2,8 @@
 // methods never let J rise, and each reaches the friction law (D = 0) or says why not.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "SyntheticResponse.hpp"
 #include "friction/control/Optimizer.hpp"
 #include "friction/dict/Dictionary.hpp"
@@ -12,30 +14,72 @@ using Eigen::VectorXd;
 
 namespace {
 
-std::unique_ptr<Optimizer> make(const std::string& type, double alpha, int maxIterations) {
-  Dictionary d = Dictionary::parse("type " + type + "; alpha " + std::to_string(alpha) +
-                                       "; tolerance 1e-9; maxIterations " +
-                                       std::to_string(maxIterations) + ";",
+// Every optimizer of the selection table with every variant it has: a new optimizer is tested
+// by the loops below without a line here; only a variant key needs one.
+std::vector<std::string> allSettings() {
+  std::vector<std::string> settings;
+  for (const std::string& type : Optimizer::names()) {
+    settings.push_back(type);
+    if (type == "semismoothNewton") settings.push_back(type + "; variant krylov");
+  }
+  return settings;
+}
+
+constexpr int maxIterations = 100000;
+
+std::string typeOf(const std::string& setting) { return setting.substr(0, setting.find(';')); }
+
+// α for the gradient methods: steepestDescent's fixed step must stay below 2/L, L the largest
+// curvature of J (~ ‖S_tt‖² ≈ 10⁴ here: 1.3e-4 already diverges on seed 5), so 1e-4; the
+// others use α as a first trial (Armijo backtracks from 1). Newton reads no α. The gradient
+// methods converge linearly, with a rate set by the condition of S² (~10²): up to 4·10⁴
+// iterations to reach 1e-9 (measured), hence the iteration limit of the tests.
+std::unique_ptr<Optimizer> make(const std::string& setting, int iterationLimit) {
+  const std::string type = typeOf(setting);
+  const std::string alpha =
+      type == "semismoothNewton" ? ""
+      : type == "armijo"         ? "alpha 1;"
+      : type == "steepestDescent" ? "alpha 1e-4;"
+                                  : "alpha 1e-3;";
+  Dictionary d = Dictionary::parse("type " + setting + "; " + alpha +
+                                       " tolerance 1e-9; maxIterations " +
+                                       std::to_string(iterationLimit) + ";",
                                    "test");
-  return Optimizer::New(d);
+  auto opt = Optimizer::New(d);
+  d.checkAllRead();  // every key above is one the optimizer reads: no setting silently ignored
+  return opt;
 }
 
 }  // namespace
 
+TEST_CASE("the optimizer table lists the paper's methods and the project's own",
+          "[control][optimizer]") {
+  // The loops below run over this table: were it empty, they would pass without a test.
+  const std::vector<std::string> names = Optimizer::names();
+  for (const char* expected :
+       {"steepestDescent", "armijo", "barzilaiBorwein", "lbfgs", "semismoothNewton"})
+    CHECK(std::find(names.begin(), names.end(), expected) != names.end());
+}
+
 TEST_CASE("every optimizer solves the synthetic Coulomb problem", "[control][optimizer]") {
-  // α for the fixed-step methods: below 2/L with L ~ ‖S‖² ≈ (n·max w⁻¹)² for this operator.
-  for (const std::string type :
-       {"armijo", "barzilaiBorwein", "lbfgs", "semismoothNewton", "semismoothNewton; variant krylov"}) {
-    DYNAMIC_SECTION(type) {
+  const std::vector<std::string> settings = allSettings();
+  REQUIRE(settings.size() > Optimizer::names().size());  // the variants are in too
+  for (const std::string& setting : settings) {
+    DYNAMIC_SECTION(setting) {
       SyntheticResponse r(6, 21);
       ControlProblem p(r, VectorXd::Constant(6, 0.4), VectorXd::Zero(6), 2.0, 0.0, GradientKind::exact);
-      auto opt = make(type, type == "armijo" ? 1.0 : 1e-3, 20000);
+      auto opt = make(setting, maxIterations);
       VectorXd beta = VectorXd::Zero(6);
       const OptimizerReport rep = opt->minimize(p, beta);
       INFO("iterations " << rep.iterations << ", status " << toString(rep.status));
+      CHECK(opt->name() == typeOf(setting));
       CHECK(rep.status == OptimizerStatus::converged);
       CHECK(p.relativeResidual(p.evaluate(beta)) <= 1e-9);
-      if (type != "barzilaiBorwein")  // the only non-monotone one
+      // The problem is not solved at the start: the optimizer had to move (some node slips).
+      CHECK(rep.iterations > 0);
+      CHECK(beta.norm() > 0);
+      REQUIRE_FALSE(rep.history.empty());
+      if (typeOf(setting) != "barzilaiBorwein")  // the only non-monotone one
         for (std::size_t k = 1; k < rep.history.size(); ++k)
           CHECK(rep.history[k].J <= rep.history[k - 1].J * (1 + 1e-12));
     }
@@ -43,14 +87,19 @@ TEST_CASE("every optimizer solves the synthetic Coulomb problem", "[control][opt
 }
 
 TEST_CASE("all optimizers agree on the solution", "[control][optimizer]") {
-  VectorXd reference;
-  for (const std::string type :
-       {"semismoothNewton", "semismoothNewton; variant krylov", "lbfgs", "armijo"}) {
+  const auto solve = [](const std::string& setting) {
     SyntheticResponse r(6, 5);
     ControlProblem p(r, VectorXd::Constant(6, 0.4), VectorXd::Zero(6), 2.0, 0.0, GradientKind::exact);
     VectorXd beta = VectorXd::Zero(6);
-    make(type, type == "armijo" ? 1.0 : 1e-3, 20000)->minimize(p, beta);
-    if (reference.size() == 0) reference = beta;
+    CHECK(make(setting, maxIterations)->minimize(p, beta).status == OptimizerStatus::converged);
+    return beta;
+  };
+  // The reference: Newton, which solves D = 0 to round-off.
+  const VectorXd reference = solve("semismoothNewton");
+  REQUIRE(reference.norm() > 0);  // agreeing on β = 0 (nothing slips) would prove little
+  for (const std::string& setting : allSettings()) {
+    INFO(setting);
+    const VectorXd beta = solve(setting);
     // Converged to ‖D‖ ≤ 1e-9 ‖Σ‖; the slip error is that residual times the condition of
     // S (about 10⁴ here), so 1e-4 relative.
     CHECK((beta - reference).norm() <= 1e-4 * reference.norm());

@@ -27,6 +27,7 @@ Vector2 centroid(const Mesh& m, Index t) {
 // Every triangle that touches a fracture node uses the copy of its own side: the plus copy
 // when its centroid lies on the side opposite to n_Γ, the minus copy otherwise.
 void checkSides(const SplitMesh& s) {
+  int plusChecked = 0, minusChecked = 0;
   for (const FractureGeometry& g : s.fractures)
     for (Index i = 0; i < g.numNodes(); ++i)
       for (Index t = 0; t < s.mesh.numTriangles(); ++t) {
@@ -35,10 +36,19 @@ void checkSides(const SplitMesh& s) {
           if (s.origin[v] != g.node[i]) continue;
           const double side = (centroid(s.mesh, t) - s.mesh.points[v]).dot(g.normal[i]);
           if (g.plus[i] == g.minus[i]) continue;  // a tip serves both sides
-          if (side < -1e-12) CHECK(v == g.plus[i]);
-          if (side > 1e-12) CHECK(v == g.minus[i]);
+          if (side < -1e-12) {
+            CHECK(v == g.plus[i]);
+            ++plusChecked;
+          }
+          if (side > 1e-12) {
+            CHECK(v == g.minus[i]);
+            ++minusChecked;
+          }
         }
       }
+  // Both sides of some split node were looked at: a mesh with nothing split checks nothing.
+  CHECK(plusChecked > 0);
+  CHECK(minusChecked > 0);
 }
 
 std::string splitError(const Mesh& m, const std::vector<FractureSpec>& specs) {

@@ -1,0 +1,46 @@
+#!/usr/bin/env python3
+"""Unpack a fuzzCase input (a seed or a crash reproducer) into a case folder, so that the real
+binaries can be run on it:
+
+    tests/fuzz/unpackCase.py INPUT DIR
+    splitFractureNodes -case DIR && frictionSolver -case DIR
+
+The format is fuzzCase.cpp's: files, each introduced by a line "==> <relative path>"; bytes
+before the first header are ignored; a repeated path keeps its last content. DIR must not
+exist. Paths fuzzCase would refuse (absolute, '..') are refused here too.
+"""
+import os
+import sys
+
+
+def unpack(data: bytes):
+    files, current = {}, None
+    for line in data.split(b"\n"):
+        if line.startswith(b"==> "):
+            current = line[4:].decode("latin-1")
+            files[current] = []
+        elif current is not None:
+            files[current].append(line)
+    return {p: b"\n".join(lines) for p, lines in files.items()}
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    src, dest = sys.argv[1:]
+    with open(src, "rb") as f:
+        files = unpack(f.read())
+    if os.path.exists(dest):
+        sys.exit(f"unpackCase: {dest} exists")
+    for path, content in files.items():
+        if path.startswith("/") or ".." in path.split("/"):
+            sys.exit(f"unpackCase: refusing path {path!r}")
+        full = os.path.join(dest, path)
+        os.makedirs(os.path.dirname(full) or dest, exist_ok=True)
+        with open(full, "wb") as f:
+            f.write(content)
+    print(f"{dest}: {len(files)} files")
+
+
+if __name__ == "__main__":
+    main()
