@@ -1,7 +1,7 @@
 // Bad input, one mistake at a time, through the real binaries (splitFractureNodes and
 // frictionSolver) on copies of the cases: every user-facing error path must exit non-zero,
 // name the file (and the line, where there is one), the key or item, and what was expected,
-// and leave the case folder exactly as it was (STYLE.md "Errors and numbers"). The line
+// and leave the case folder exactly as it was. The line
 // numbers are computed from the edited file, never written down, so a reformatted case
 // cannot make a check pass by accident or fail for no reason.
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 // frictionSolver on real case folders with the real binaries (issue: solver verification):
-// the known answers of METHOD.md §6, the analytic inclined crack, the paper benchmark.
+// the known answers of docs/method.md §10, the analytic inclined crack, the paper benchmark.
 // References are analytic where one exists; each tolerance says why it is what it is.
 #include <catch2/catch.hpp>
 
@@ -367,7 +367,7 @@ TEST_CASE("ParaView files read by VTK hold the solver's own table values", "[reg
                      c.dir() / "log.vtk");
   INFO(readText(c.dir() / "log.vtk"));
   CHECK(rc == 0);
-  // The inclined crack has two tips (state tip, NaN tractions in the table and the .vtp).
+  // The inclined crack has two tips (state tip, NaN tractions in the table and the.vtp).
   Case ic("inclinedCrack", "inclinedCrack-vtk");
   REQUIRE(ic.solve() == 0);
   std::smatch m;
@@ -433,7 +433,7 @@ void setYoungPoisson(Case& c, const std::string& E, const std::string& nu) {
 TEST_CASE("results that overflow are a diverged step: nothing written, exit 3",
           "[regression][errors]") {
   // E = 1e300 Pa is finite input, but J = ½‖D‖² squares stresses of that size: inf. Before,
-  // DictionaryWriter threw on the inf, the run aborted (134) and left .1.partial.
+  // DictionaryWriter threw on the inf, the run aborted (134) and left.1.partial.
   Case c("paperBenchmark", "paperBenchmark-E1e300");
   setYoungPoisson(c, "1e300", "0.25");
   const int rc = c.solve();

@@ -1,5 +1,5 @@
 // BoundaryConditions: the case's 0/D — one entry per boundary patch in 'boundaryField', the
-// way OpenFOAM cases give them (METHOD.md §1: Dirichlet displacement and Neumann traction,
+// way OpenFOAM cases give them (docs/method.md §1: Dirichlet displacement and Neumann traction,
 // all functions of time):
 //
 //   boundaryField

@@ -209,7 +209,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     }
   }
   // γ has units of stress/length; its scale-free default is E over the mean fracture edge
-  // length h (docs/method.md §3): then γβ and τ are of the same size for slips of order h·τ/E.
+  // length h (docs/method.md §4): then γβ and τ are of the same size for slips of order h·τ/E.
   if (!gammaAbsolute_)
     gamma_ = hCount > 0 ? gammaRelative_ * material_->youngModulus() / (hSum / hCount) : 1.0;
   // Gradient steps scale like (w/E)², w the smallest lumped weight of Γ (the M of the

@@ -1,5 +1,5 @@
 // The complementarity function of Coulomb/Tresca friction at one fracture node
-// (paper (26)–(31), METHOD.md §3) and its derivatives (METHOD.md §4 table).
+// (paper (26)–(31), docs/method.md §4) and its derivatives (docs/method.md §4).
 //
 // With N = τ − γβ and the projection P_ρ(N) onto [−ρ, ρ] (zero when ρ ≤ 0):
 //   D = τ − P_ρ(N) = 0  ⇔  the friction law holds at the node (paper, Proposition 2.3).

@@ -1,4 +1,4 @@
-// Objective and exact gradient of the control problem (METHOD.md §4). Derivation, node by
+// Objective and exact gradient of the control problem (docs/method.md §4). Derivation, node by
 // node with P'_N = ∂P/∂N and P'_ρ = ∂P/∂ρ:
 //   dD/dβ = (1 − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt,   since N = τ − γβ and dρ = −μ dσ_n.
 // With M S self-adjoint (S is the Steklov–Poincaré map of the dual problem), the M-gradient

@@ -1,5 +1,5 @@
 // ControlProblem: the discrete objective J(β) = ½ DᵀMD + (ζ/2) βᵀMβ of one time step and its
-// gradient in the M inner product (METHOD.md §4), on top of a SlipResponse.
+// gradient in the M inner product (docs/method.md §4), on top of a SlipResponse.
 //
 // Friction enters node by node through ρ = c − μ σ_n (Coulomb: c = 0, μ = μ_f; Tresca:
 // μ = 0, c = g; frictionless: μ = c = 0), so every law shares one code path.

@@ -1,4 +1,4 @@
-// Optimizers of the control problem (METHOD.md §5) and their selection table.
+// Optimizers of the control problem (docs/method.md §4) and their selection table.
 #include "friction/control/Optimizer.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// Optimizer: minimises J(β) of one time step (docs/method.md §5). Run-time selectable by name
-// from one table in Optimizer.cpp (STYLE.md "Run-time selection").
+// Optimizer: minimises J(β) of one time step (docs/method.md §4). Run-time selectable by name
+// from one table in Optimizer.cpp.
 #pragma once
 
 #include <functional>
@@ -135,7 +135,7 @@ class Lbfgs : public Optimizer {
   int maxBacktracks_;
 };
 
-/// [beyond] Semismooth Newton on D(β) = 0 (docs/method.md §5), condensed variant: the interface
+/// [beyond] Semismooth Newton on D(β) = 0 (docs/method.md §4), condensed variant: the interface
 /// operators S_tt and S_nt are assembled densely once per run (one dual solve per fracture
 /// node, reused by every step, since they depend only on the mesh and the Dirichlet
 /// patches); then every iteration is dense work on Γ alone. The generalised Jacobian has,

@@ -1,5 +1,5 @@
 // SlipResponse: what the control problem needs from the elastic body in one time step — the
-// affine maps from a slip increment to the fracture tractions (METHOD.md §2, §4). The finite
+// affine maps from a slip increment to the fracture tractions (docs/method.md §4). The finite
 // element implementation does each call with one back-substitution of the one factor.
 #pragma once
 
@@ -13,7 +13,7 @@ class SlipResponse {
 
   /// Number of fracture nodes (all fractures, concatenated in arclength order).
   virtual Eigen::Index size() const = 0;
-  /// Lumped mass of Γ per node [m]: the M of METHOD.md (J and norms are in this inner
+  /// Lumped mass of Γ per node [m]: the M of docs/method.md (J and norms are in this inner
   /// product).
   virtual const Eigen::VectorXd& weights() const = 0;
   /// 1 where β is an unknown, 0 where the jump is held (tips, nodes on Dirichlet patches).

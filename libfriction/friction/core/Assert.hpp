@@ -1,4 +1,4 @@
-// FRICTION_ASSERT: internal invariants, checked in debug builds only (STYLE.md). User input
+// FRICTION_ASSERT: internal invariants, checked in debug builds only. User input
 // is never checked with it: that is InputError's job.
 #pragma once
 

@@ -1,5 +1,5 @@
 // InputError: the one exception type for anything the user supplied (case dictionaries,
-// meshes, command-line options, output folders). See STYLE.md "Errors and numbers".
+// meshes, command-line options, output folders).
 //
 // The message always says where (file, and line when known), what (the key or item) and
 // what was expected, so that a user can fix the input without reading the code.

@@ -1,5 +1,5 @@
 // Dictionary: reader for OpenFOAM-syntax dictionaries, with typed, range-checked access and
-// detection of entries the program never reads (STYLE.md "dict/").
+// detection of entries the program never reads.
 //
 // Grammar accepted (OpenFOAM's, restricted to what cases need):
 //   file       := [FoamFile-dict] entry*
@@ -8,8 +8,8 @@
 //   list       := [N] '(' value-item* ')'            N, if given, must equal the item count
 //   directive  := '#include' "file"                  (relative to the including file)
 //              |  '#includeIfPresent' "file"         (the same; nothing if the file is missing)
-//   comments   := '//' to end of line, '/* ... */'
-// A word may contain letters, digits and _ . : < > , - + (so "List<scalar>" and "uniform"
+//   comments   := '//' to end of line, '/*... */'
+// A word may contain letters, digits and _. : < >, - + (so "List<scalar>" and "uniform"
 // are words); the reader also accepts any other character but whitespace, '"' and ; { } ( )
 // (so constant/mesh.msh is a word). N is a list size when '(' follows it directly ("3(1 2 3)")
 // or on a later line (OpenFOAM's layout for long lists); "0 (0 0)" on one line is a number and
@@ -119,7 +119,7 @@ class Dictionary {
   /// A single word (or quoted string).
   std::string getWord(const std::string& key) const;
   std::string getWordOr(const std::string& key, const std::string& def) const;
-  /// A word that must be one of choices; error lists them ("valid types are: ...").
+  /// A word that must be one of choices; error lists them ("valid types are:...").
   std::string getChoice(const std::string& key, const std::vector<std::string>& choices) const;
   std::string getChoiceOr(const std::string& key, const std::vector<std::string>& choices,
                           const std::string& def) const;
@@ -134,7 +134,7 @@ class Dictionary {
   /// List of fixed-size integer tuples, e.g. ((0 1 2) (2 3 4)).
   template <std::size_t N>
   std::vector<std::array<long, N>> getIntTupleList(const std::string& key) const;
-  /// ((t0 y0) (t1 y1) ...) with y a number or a list of numbers, all of the same size;
+  /// ((t0 y0) (t1 y1)...) with y a number or a list of numbers, all of the same size;
   /// x strictly increasing.
   Table getTable(const std::string& key) const;
 

@@ -9,7 +9,7 @@
 //                                     // or values "constant/p.dat" (s p per line, interpolated)
 // Any entry may say `active no;` to be switched off without deleting it.
 //
-// Physics (METHOD.md §1, extended):
+// Physics (docs/method.md §1, extended):
 //  * bodyForce adds ∫ f·φ to the load.
 //  * initialStress is an in-situ stress σ⁰(y) = σ⁰ + y ∂σ⁰/∂y in equilibrium with the
 //    surroundings: the boundary conditions act on the perturbation (a "free" side keeps its

@@ -1,5 +1,5 @@
 // DirichletConditions and ReducedSystem: elimination of prescribed displacements with the
-// reduced matrix built once (METHOD.md §2). See the header for the design.
+// reduced matrix built once (docs/method.md §4). See the header for the design.
 #include "friction/fe/DirichletConditions.hpp"
 
 #include "friction/core/Assert.hpp"

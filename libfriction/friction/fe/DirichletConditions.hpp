@@ -1,5 +1,5 @@
 // DirichletConditions and ReducedSystem: prescribed displacements by elimination
-// (METHOD.md §2, "factor once").
+// (docs/method.md §4, "factor once").
 //
 // The set of fixed dofs decides the reduced matrix K_ff; the prescribed values u_d only enter
 // the right-hand side f_f − K_fd u_d. So the two are kept apart: fix dofs once, build one

@@ -1,4 +1,4 @@
-// ElasticityAssembler: P1 / P2 plane elasticity on affine triangles (METHOD.md §1, §2).
+// ElasticityAssembler: P1 / P2 plane elasticity on affine triangles (docs/method.md §1, §4).
 //
 // Element geometry is carried by barycentric coordinates: on an affine triangle ∇λ_i is
 // constant, so every basis gradient is a polynomial in λ times the three ∇λ_i, and no
@@ -250,7 +250,7 @@ Eigen::VectorXd ElasticityAssembler::lumpedEdgeMass(
     const std::vector<std::array<Index, 2>>& edges) const {
   const LagrangeSpace& V = *space_;
   // Trapezoid (P1) and Simpson (P2) weights: the row sums of the consistent mass, and the
-  // nodal quadrature that keeps the friction law node by node (METHOD.md §2).
+  // nodal quadrature that keeps the friction law node by node (docs/method.md §4).
   static constexpr double kP1[2] = {0.5, 0.5};
   static constexpr double kP2[3] = {1.0 / 6, 4.0 / 6, 1.0 / 6};
   const double* w = V.degree() == 1 ? kP1 : kP2;

@@ -1,6 +1,6 @@
 // ElasticityAssembler: the global stiffness matrix, load vectors, boundary-edge mass
 // matrices and point evaluation of stress and strain for P1 / P2 plane elasticity
-// (METHOD.md §1, §2; the edge mass is the M of the traction recovery (53)).
+// (docs/method.md §1, §4; the edge mass is the M of the traction recovery (53)).
 //
 // Conventions: K u = F with u the interleaved nodal displacements of LagrangeSpace
 // [m], F the nodal forces [N per m of thickness], K = ∫ ε(φ_i) : C : ε(φ_j) [N/m per m].

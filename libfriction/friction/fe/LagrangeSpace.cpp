@@ -1,4 +1,4 @@
-// LagrangeSpace: node and dof numbering of continuous P1 / P2 (METHOD.md §2). See the header
+// LagrangeSpace: node and dof numbering of continuous P1 / P2 (docs/method.md §4). See the header
 // for the numbering conventions.
 #include "friction/fe/LagrangeSpace.hpp"
 

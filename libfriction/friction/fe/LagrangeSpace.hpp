@@ -1,5 +1,5 @@
 // LagrangeSpace: continuous vector-valued Lagrange P1 or P2 on a triangle mesh (the
-// discrete displacement space of METHOD.md §2). Elements are affine: P2 nodes sit at the
+// discrete displacement space of docs/method.md §4). Elements are affine: P2 nodes sit at the
 // midpoints of straight edges.
 //
 // Numbering:

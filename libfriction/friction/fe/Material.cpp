@@ -1,4 +1,4 @@
-// Material: isotropic linear elasticity, plane strain / plane stress (METHOD.md §1).
+// Material: isotropic linear elasticity, plane strain / plane stress (docs/method.md §1).
 #include "friction/fe/Material.hpp"
 
 #include "friction/core/Assert.hpp"

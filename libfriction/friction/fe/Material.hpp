@@ -1,4 +1,4 @@
-// Material: isotropic linear elasticity in 2D, plane strain (the default, METHOD.md §1) or
+// Material: isotropic linear elasticity in 2D, plane strain (the default, docs/method.md §1) or
 // plane stress. Hooke's law σ = λ* tr(ε) I + 2μ ε with λ* = λ in plane strain and
 // λ* = 2λμ/(λ + 2μ) in plane stress (σ_zz = 0 eliminates ε_zz).
 //

@@ -1,4 +1,4 @@
-// Quadrature rules for the finite-element layer (METHOD.md §6: mass, stiffness, loads and the
+// Quadrature rules for the finite-element layer (docs/method.md §4: mass, stiffness, loads and the
 // error norms of the manufactured-solution test): symmetric rules and collapsed Gauss products
 // on triangles, Gauss–Legendre on segments.
 #pragma once

@@ -19,7 +19,7 @@ Eigen::SparseMatrix<double> fromTriplets(Index rows, Index cols, const Triplets&
 }
 
 // The unsplit mesh: the original points, triangles and boundary patches renumbered through
-// the split mesh's origin map. Its stiffness is K = Pᵀ K_split P (METHOD.md §2).
+// the split mesh's origin map. Its stiffness is K = Pᵀ K_split P (docs/method.md §4).
 Mesh unsplitMeshOf(const SplitMesh& s) {
   Mesh m;
   m.source = s.mesh.source;

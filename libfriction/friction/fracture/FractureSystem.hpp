@@ -1,5 +1,5 @@
 // FractureSystem: the elastic body with imposed jumps on its fractures, discretised as in
-// METHOD.md §2 — the finite-element SlipResponse of the control problem.
+// docs/method.md §4 — the finite-element SlipResponse of the control problem.
 //
 //  * Unknowns x are the dofs of the UNSPLIT mesh (interior dofs and the average ū on Γ); the
 //    split displacement is u_split = P x + L j, with L putting ±j/2 on the ⁺/⁻ copies.

@@ -1,4 +1,4 @@
-// The sign conventions of the whole project, stated once (METHOD.md §1). Every other file
+// The sign conventions of the whole project, stated once (docs/method.md §1). Every other file
 // points here instead of restating them.
 //
 //  * n_Γ ("normal") points from Ω⁺ to Ω⁻.
@@ -10,7 +10,7 @@
 //  * [[f]] = f⁺ − f⁻ (jump), {f} = (f⁺ + f⁻)/2 (average).
 //  * σ_n = (σ n_Γ)·n_Γ, negative in compression; τ = (σ n_Γ)·t_Γ in 2D.
 //  * Slip s = [[u]]·t_Γ, slip increment β; with Coulomb's law the slip increment is opposite
-//    to τ (METHOD.md §3, sign note).
+//    to τ (docs/method.md §2).
 #pragma once
 
 #include "friction/core/Types.hpp"

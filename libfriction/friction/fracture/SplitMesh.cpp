@@ -160,12 +160,12 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       throw InputError(file, "fractures '" + specs[list[0].first].name + "' and '" +
                                  specs[list[1].first].name + "' meet at " +
                                  fmtPoint(mesh.points[v]) +
-                                 ": fracture junctions are a later feature, not supported yet");
+                                 ": junctions of fractures are not supported (mesh them so that they do not meet)");
     if (list.size() > 2)
       throw InputError(file, "fracture '" + specs[list[0].first].name + "' branches at " +
                                  fmtPoint(mesh.points[v]) + " (" + std::to_string(list.size()) +
-                                 " fracture edges meet there): fracture junctions are a later "
-                                 "feature, not supported yet");
+                                 " fracture edges meet there): junctions of fractures are not supported (give each "
+                                 "branch its own label and keep them apart)");
   }
 
   // A curve whose nodes all have two fracture edges is closed: refuse before anything else.

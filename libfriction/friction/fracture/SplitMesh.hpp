@@ -74,7 +74,7 @@ struct SplitMesh {
 
 /// Split the mesh along the given fractures. Refuses, with an InputError naming the mesh file
 /// (and the FractureSpec's location where it helps): a fracture with no edges; branching
-/// edges or fractures that meet (junctions are a later feature); a fracture made of several
+/// edges or fractures that meet (junctions are not supported); a fracture made of several
 /// disjoint curves or of a closed curve; a triangle whose three vertices all lie on one
 /// fracture; a fracture edge that is not a side of two triangles (already split, or on the
 /// outer boundary).

@@ -1,6 +1,6 @@
 // FrictionLaw: the friction bound ρ of a fracture, in the one form every law shares,
 //   ρ = c − μ σ_n   (σ_n < 0 in compression; ρ ≤ 0 means open: τ = 0),
-// run-time selectable by name from the table in FrictionLaw.cpp (STYLE.md).
+// run-time selectable by name from the table in FrictionLaw.cpp.
 #pragma once
 
 #include <memory>

@@ -1,5 +1,5 @@
 // SparseFactor: one factorisation of the reduced stiffness matrix, many back-substitutions
-// (docs/method.md §2). Backends behind a small interface; the table below lists every backend.
+// (docs/method.md §4). Backends behind a small interface; the table below lists every backend.
 #include "friction/linalg/SparseFactor.hpp"
 
 #include <Eigen/CholmodSupport>

@@ -1,5 +1,5 @@
 // SparseFactor: "factor once, solve many" for the symmetric positive definite reduced
-// stiffness matrix (docs/method.md §2: every primal and dual solve of a run reuses one factor).
+// stiffness matrix (docs/method.md §4: every primal and dual solve of a run reuses one factor).
 //
 // Backends, chosen by name:
 //   cholmod         CHOLMOD supernodal LLᵀ (SuiteSparse) through Eigen's CholmodSupernodalLLT;
@@ -9,7 +9,7 @@
 // Both read the lower triangle of the matrix, so full and lower storage are both fine.
 //
 // A failed factorisation is a value (FactorStatus), not an exception or a crash: the caller
-// logs it and stops the run cleanly (STYLE.md "Errors and numbers").
+// logs it and stops the run cleanly.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,4 @@
-// TimeFolder: writes one time folder atomically (STYLE.md: "writing time folders in place" is
-// what we do not copy). Files go to <case>/.<name>.partial/; commit() renames it to
+// TimeFolder: writes one time folder atomically, never in place. Files go to <case>/.<name>.partial/; commit() renames it to
 // <case>/<name>. A run that dies before commit() leaves earlier time folders untouched and no
 // half-written <name>; the destructor removes an uncommitted partial folder.
 #pragma once
@@ -23,8 +22,8 @@ class TimeFolder {
   /// The final path <case>/<name>.
   const std::string& finalPath() const { return final_; }
 
-  /// Remove what killed runs leave in caseDir: folders .<name>.partial (never committed) and
-  /// .<name>.old (killed inside commit() while replacing a folder). Returns how many.
+  /// Remove what killed runs leave in caseDir: folders.<name>.partial (never committed) and
+  ///.<name>.old (killed inside commit() while replacing a folder). Returns how many.
   static int removeLeftovers(const std::string& caseDir);
 
  private:

@@ -1,4 +1,4 @@
-// The control problem's gradient against finite differences of J (METHOD.md §4), on a
+// The control problem's gradient against finite differences of J (docs/method.md §4), on a
 // synthetic affine response with the structure of the real one: S_tt = M⁻¹A with A symmetric
 // positive definite (so M S_tt is symmetric), and S_tn = M⁻¹ S_ntᵀ M (the adjoint in the M
 // inner product). The finite-element version of this test is in tests/unit/fracture.

@@ -1,4 +1,4 @@
-// A synthetic SlipResponse with the structure of the real one (METHOD.md §4): S_tt = M⁻¹A
+// A synthetic SlipResponse with the structure of the real one (docs/method.md §4): S_tt = M⁻¹A
 // with A symmetric positive definite, S_tn = M⁻¹ S_ntᵀ M, M S_nn symmetric; affine maps from
 // random offsets (compression σ_n ≈ −4, shear τ ≈ ±3). For tests of the control layer that
 // need no finite elements.

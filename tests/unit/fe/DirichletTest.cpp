@@ -1,6 +1,6 @@
 // DirichletConditions and ReducedSystem (fe/DirichletConditions.hpp): the reduced system is
 // K_ff u_f = f_f − K_fd u_d; new Dirichlet values only change the right-hand side, so one
-// factorisation serves every time step (METHOD.md §2).
+// factorisation serves every time step (docs/method.md §4).
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 // LagrangeSpace (fe/LagrangeSpace.hpp): node numbering of P1 and P2, edge lookup, and the
-// duplicated-node case of a split fracture (METHOD.md §2).
+// duplicated-node case of a split fracture (docs/method.md §4).
 #include <catch2/catch.hpp>
 #include <set>
 

@@ -1,4 +1,4 @@
-// Patch tests (METHOD.md §6): a displacement field in the element space, imposed through
+// Patch tests (docs/method.md §10): a displacement field in the element space, imposed through
 // boundary data, is reproduced exactly inside a distorted mesh. Linear fields for P1 and P2
 // (Dirichlet on the whole boundary, and Dirichlet + tractions of the constant stress), a
 // quadratic field with its constant body force for P2.

@@ -1,6 +1,6 @@
 // Stiffness matrix (fe/ElasticityAssembler.hpp): symmetry, the three rigid-body modes as its
 // exact null space, and positive definiteness once they are fixed — for P1 and P2, plane
-// strain and plane stress, on a distorted mesh and on a split mesh (METHOD.md §2, §6).
+// strain and plane stress, on a distorted mesh and on a split mesh (docs/method.md §4, §10).
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 

@@ -199,7 +199,7 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
     m.edges.push_back({gridNode(n, 4, 4), gridNode(n, 4, 5)});
     m.edgeLabel.push_back(5);
     CHECK_THAT(splitError(m, {{"fracture", 5, {}}}),
-               Contains("branches at (0.5 0.5)") && Contains("junctions are a later feature"));
+               Contains("branches at (0.5 0.5)") && Contains("junctions of fractures are not supported"));
   }
   SECTION("two fractures that meet") {
     Mesh m = gridMesh(n);

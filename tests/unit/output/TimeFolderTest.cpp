@@ -1,4 +1,4 @@
-// Time folders appear whole or not at all (STYLE.md; issue: output).
+// Time folders appear whole or not at all (a crash never leaves a half-written time folder).
 #include <catch2/catch.hpp>
 
 #include <filesystem>
