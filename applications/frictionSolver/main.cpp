@@ -18,12 +18,12 @@
 #include <iostream>
 #include <new>
 
-#include "friction/core/CommandLine.hpp"
-#include "friction/core/OutputError.hpp"
 #include "friction/case/FrictionCase.hpp"
 #include "friction/control/Optimizer.hpp"
-#include "friction/effect/Effect.hpp"
+#include "friction/core/CommandLine.hpp"
+#include "friction/core/OutputError.hpp"
 #include "friction/core/Suggest.hpp"
+#include "friction/effect/Effect.hpp"
 #include "friction/law/FrictionLaw.hpp"
 #include "friction/linalg/SparseFactor.hpp"
 
@@ -35,8 +35,9 @@ int main(int argc, char** argv) {
   po::options_description options("Options");
   options.add_options()("case", po::value<std::string>()->default_value("."), "case folder")(
       "listModels", "list the friction laws, optimizers and linear solvers")(
-      "overwrite", "remove an earlier run's outputs (time folders after startTime, VTK files, "
-                   "postProcessing/convergence.dat) before running")("help", "print this help");
+      "overwrite",
+      "remove an earlier run's outputs (time folders after startTime, VTK files, "
+      "postProcessing/convergence.dat) before running")("help", "print this help");
   const auto parsed = parseCommandLine(argc, argv, options, "frictionSolver");
   if (!parsed) return 2;
   const po::variables_map& args = *parsed;
@@ -80,7 +81,8 @@ int main(int argc, char** argv) {
     std::cout << "\nFactorisations " << f.numFactorizations() << " (" << f.factorSeconds()
               << " s), back-substitutions " << f.numSolves() << " (" << f.solveSeconds() << " s)\n";
     if (!c.stoppedEarly().empty()) {
-      std::cout << "\nStopped early (" << c.stoppedEarly() << "); continue with startFrom latestTime\n\nEnd\n";
+      std::cout << "\nStopped early (" << c.stoppedEarly()
+                << "); continue with startFrom latestTime\n\nEnd\n";
       return c.stoppedEarly().rfind("SIG", 0) == 0 ? 5 : 0;
     }
     if (notConverged) {

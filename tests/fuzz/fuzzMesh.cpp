@@ -21,10 +21,9 @@ namespace {
 // libFuzzer ends with _Exit, so no destructor removes the file: run.sh points TMPDIR into
 // the build tree instead.
 const std::string& inputPath() {
-  static const std::string path =
-      (std::filesystem::temp_directory_path() /
-       ("frictionFuzzMesh." + std::to_string(::getpid()) + ".msh"))
-          .string();
+  static const std::string path = (std::filesystem::temp_directory_path() /
+                                   ("frictionFuzzMesh." + std::to_string(::getpid()) + ".msh"))
+                                      .string();
   return path;
 }
 
@@ -44,8 +43,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::set<int> labels(mesh.edgeLabel.begin(), mesh.edgeLabel.end());
   for (const int label : labels) {
     try {
-      friction::splitFractures(mesh, {{"fracture" + std::to_string(label), label,
-                                       {"fuzz/meshDict", 1}}});
+      friction::splitFractures(mesh,
+                               {{"fracture" + std::to_string(label), label, {"fuzz/meshDict", 1}}});
     } catch (const friction::InputError&) {
     }
   }

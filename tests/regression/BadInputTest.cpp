@@ -65,8 +65,8 @@ void split(const Case& c) {
 
 /// Run `tool args` in the case, expect exit status rc, every text of `expected` in its output
 /// and no file created, removed or renamed in the case (logs aside). Returns the output.
-std::string expectFailure(const Case& c, const std::string& tool, const std::string& args,
-                          int rc, const std::vector<std::string>& expected) {
+std::string expectFailure(const Case& c, const std::string& tool, const std::string& args, int rc,
+                          const std::vector<std::string>& expected) {
   const auto before = snapshot(c.dir());
   const fs::path log = c.dir() / ("log." + tool);
   const int status = run(bin(tool) + " " + args, log);
@@ -103,9 +103,7 @@ TEST_CASE("bad command lines and case folders are refused with exit status 1 or 
     expectFailure(c, "splitFractureNodes", "-case " + quoted(c.dir()) + " -bogusOption", 2,
                   {"bogusOption", "-help"});
   }
-  SECTION("-case without its value") {
-    expectFailure(c, "frictionSolver", "-case", 2, {"case"});
-  }
+  SECTION("-case without its value") { expectFailure(c, "frictionSolver", "-case", 2, {"case"}); }
   SECTION("frictionSolver on a case folder that does not exist") {
     const fs::path missing = c.dir() / "noSuchCase";
     expectFailure(c, "frictionSolver", "-case " + quoted(missing), 1,
@@ -160,9 +158,9 @@ TEST_CASE("bad meshDict entries name file, line, key and what was expected",
 
   SECTION("mesh file that does not exist") {
     c.edit("system/meshDict", "square\\.msh", "squar.msh");
-    expectFailure(c, "splitFractureNodes", args, 1,
-                  {at("system/meshDict", lineOf(dict, "squar.msh")), "mesh", "squar.msh",
-                   "does not exist"});
+    expectFailure(
+        c, "splitFractureNodes", args, 1,
+        {at("system/meshDict", lineOf(dict, "squar.msh")), "mesh", "squar.msh", "does not exist"});
   }
   SECTION("patch label absent from the mesh") {
     c.edit("system/meshDict", "left +4;", "left 44;");
@@ -176,9 +174,9 @@ TEST_CASE("bad meshDict entries name file, line, key and what was expected",
   }
   SECTION("a fracture listed twice") {
     c.edit("system/meshDict", "\\(fracture\\)", "(fracture fracture)");
-    expectFailure(c, "splitFractureNodes", args, 1,
-                  {at("system/meshDict", lineOf(dict, "(fracture fracture)")), "fractures",
-                   "listed twice"});
+    expectFailure(
+        c, "splitFractureNodes", args, 1,
+        {at("system/meshDict", lineOf(dict, "(fracture fracture)")), "fractures", "listed twice"});
   }
 }
 
@@ -192,21 +190,38 @@ TEST_CASE("bad controlDict entries name file, line, key and what was expected",
     std::vector<std::string> expected;
   };
   const std::vector<Bad> cases = {
-      {"endBeforeStart", "endTime +1;", "endTime 0;", "endTime 0;",
-       {"endTime", "after startTime"}},
+      {"endBeforeStart", "endTime +1;", "endTime 0;", "endTime 0;", {"endTime", "after startTime"}},
       {"zeroDeltaT", "deltaT +1;", "deltaT 0;", "deltaT 0;", {"deltaT", "> 0"}},
-      {"fractionalInterval", "writeInterval +1;", "writeInterval 1.5;", "writeInterval 1.5;",
+      {"fractionalInterval",
+       "writeInterval +1;",
+       "writeInterval 1.5;",
+       "writeInterval 1.5;",
        {"writeInterval", "whole number"}},
-      {"unknownStopAt", "stopAt +endTime;", "stopAt end;", "stopAt end;",
+      {"unknownStopAt",
+       "stopAt +endTime;",
+       "stopAt end;",
+       "stopAt end;",
        {"stopAt", "endTime, writeNow, noWriteNow, nextWrite"}},
-      {"unknownStartFrom", "startFrom +startTime;", "startFrom latest;", "startFrom latest;",
+      {"unknownStartFrom",
+       "startFrom +startTime;",
+       "startFrom latest;",
+       "startFrom latest;",
        {"startFrom", "startTime, latestTime"}},
-      {"unknownWriteControl", "writeControl +timeStep;", "writeControl clockTime;",
-       "writeControl clockTime;", {"writeControl", "timeStep, runTime"}},
-      {"precisionTooLarge", "writePrecision +10;", "writePrecision 40;", "writePrecision 40;",
+      {"unknownWriteControl",
+       "writeControl +timeStep;",
+       "writeControl clockTime;",
+       "writeControl clockTime;",
+       {"writeControl", "timeStep, runTime"}},
+      {"precisionTooLarge",
+       "writePrecision +10;",
+       "writePrecision 40;",
+       "writePrecision 40;",
        {"writePrecision", "40", "17"}},
       {"endTimeNotANumber", "endTime +1;", "endTime one;", "endTime one;", {"endTime", "one"}},
-      {"typoKey", "deltaT +1;", "deltaT 1; writeVtk no;", "writeVtk",
+      {"typoKey",
+       "deltaT +1;",
+       "deltaT 1; writeVtk no;",
+       "writeVtk",
        {"writeVtk", "did you mean 'writeVTK'"}},
   };
   for (const Bad& b : cases) {
@@ -215,7 +230,8 @@ TEST_CASE("bad controlDict entries name file, line, key and what was expected",
       split(c);
       c.edit("system/controlDict", b.pattern, b.replacement);
       std::vector<std::string> expected = b.expected;
-      expected.push_back(at("system/controlDict", lineOf(c.dir() / "system/controlDict", b.lineText)));
+      expected.push_back(
+          at("system/controlDict", lineOf(c.dir() / "system/controlDict", b.lineText)));
       solverFails(c, expected);
     }
   }
@@ -232,49 +248,116 @@ TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties ent
     std::vector<std::string> expected;
   };
   const std::vector<Bad> cases = {
-      {"unknownLinearSolver", "system/frictionSolution", "linearSolver +cholmod;",
-       "linearSolver lu;", "linearSolver lu;", {"linearSolver", "lu", "cholmod, simplicialLDLT"}},
-      {"unknownGradient", "system/frictionSolution", "gradient +exact;", "gradient adjoint;",
-       "gradient adjoint;", {"gradient", "adjoint", "exact, frozenRho"}},
-      {"negativeGamma", "system/frictionSolution", "gamma +2;", "gamma -2;", "gamma -2;",
+      {"unknownLinearSolver",
+       "system/frictionSolution",
+       "linearSolver +cholmod;",
+       "linearSolver lu;",
+       "linearSolver lu;",
+       {"linearSolver", "lu", "cholmod, simplicialLDLT"}},
+      {"unknownGradient",
+       "system/frictionSolution",
+       "gradient +exact;",
+       "gradient adjoint;",
+       "gradient adjoint;",
+       {"gradient", "adjoint", "exact, frozenRho"}},
+      {"negativeGamma",
+       "system/frictionSolution",
+       "gamma +2;",
+       "gamma -2;",
+       "gamma -2;",
        {"gamma", "> 0"}},
-      {"negativeZeta", "system/frictionSolution", "zeta +0;", "zeta -1;", "zeta -1;",
+      {"negativeZeta",
+       "system/frictionSolution",
+       "zeta +0;",
+       "zeta -1;",
+       "zeta -1;",
        {"zeta", ">= 0"}},
-      {"unknownStopOn", "system/frictionSolution", "maxIterations +100;",
-       "maxIterations 100; stopOn slip;", "stopOn slip;", {"stopOn", "residual, step"}},
-      {"zeroTolerance", "system/frictionSolution", "tolerance +1e-10;", "tolerance 0;",
-       "tolerance 0;", {"tolerance", "> 0"}},
-      {"negativeMaxIterations", "system/frictionSolution", "maxIterations +100;",
-       "maxIterations -1;", "maxIterations -1;", {"maxIterations", "-1"}},
-      {"armijoCOutOfRange", "system/frictionSolution", "type +semismoothNewton;",
-       "type armijo; armijoC 2;", "armijoC 2;", {"armijoC", "(0, 1)"}},
-      {"negativeMu", "constant/mechanicalProperties", "mu +1;", "mu -1;", "mu -1;",
-       {"mu", "> 0"}},
-      {"negativeBulkModulus", "constant/mechanicalProperties", "lambda +1;", "lambda -1;",
-       "lambda -1;", {"lambda", "λ + 2μ/3 > 0"}},
-      {"negativeFrictionCoefficient", "constant/fractureProperties", "frictionCoefficient +0.2;",
-       "frictionCoefficient -0.2;", "frictionCoefficient -0.2;",
+      {"unknownStopOn",
+       "system/frictionSolution",
+       "maxIterations +100;",
+       "maxIterations 100; stopOn slip;",
+       "stopOn slip;",
+       {"stopOn", "residual, step"}},
+      {"zeroTolerance",
+       "system/frictionSolution",
+       "tolerance +1e-10;",
+       "tolerance 0;",
+       "tolerance 0;",
+       {"tolerance", "> 0"}},
+      {"negativeMaxIterations",
+       "system/frictionSolution",
+       "maxIterations +100;",
+       "maxIterations -1;",
+       "maxIterations -1;",
+       {"maxIterations", "-1"}},
+      {"armijoCOutOfRange",
+       "system/frictionSolution",
+       "type +semismoothNewton;",
+       "type armijo; armijoC 2;",
+       "armijoC 2;",
+       {"armijoC", "(0, 1)"}},
+      {"negativeMu", "constant/mechanicalProperties", "mu +1;", "mu -1;", "mu -1;", {"mu", "> 0"}},
+      {"negativeBulkModulus",
+       "constant/mechanicalProperties",
+       "lambda +1;",
+       "lambda -1;",
+       "lambda -1;",
+       {"lambda", "λ + 2μ/3 > 0"}},
+      {"negativeFrictionCoefficient",
+       "constant/fractureProperties",
+       "frictionCoefficient +0.2;",
+       "frictionCoefficient -0.2;",
+       "frictionCoefficient -0.2;",
        {"frictionCoefficient", ">= 0"}},
-      {"trescaWithoutThreshold", "constant/fractureProperties", "law +coulomb;", "law tresca;",
-       "", {"missing key 'threshold'", "> 0"}},
-      {"unknownFractureEntry", "constant/fractureProperties", "\\nfracture\\n", "\nfractur\n",
-       "fractur", {"fractur", "did you mean 'fracture'"}},
-      {"toleranceInControl", "system/frictionSolution", "gamma +2;", "gamma 2; tolerance 1e-8;",
+      {"trescaWithoutThreshold",
+       "constant/fractureProperties",
+       "law +coulomb;",
+       "law tresca;",
+       "",
+       {"missing key 'threshold'", "> 0"}},
+      {"unknownFractureEntry",
+       "constant/fractureProperties",
+       "\\nfracture\\n",
+       "\nfractur\n",
+       "fractur",
+       {"fractur", "did you mean 'fracture'"}},
+      {"toleranceInControl",
+       "system/frictionSolution",
+       "gamma +2;",
+       "gamma 2; tolerance 1e-8;",
        "tolerance 1e-8;",
        {"unknown key 'tolerance' in", "control; it belongs in control/optimizer"}},
-      {"gammaAndGammaRelative", "system/frictionSolution", "gamma +2;",
-       "gamma 2;\n    gammaRelative 1;", "gammaRelative 1;",
+      {"gammaAndGammaRelative",
+       "system/frictionSolution",
+       "gamma +2;",
+       "gamma 2;\n    gammaRelative 1;",
+       "gammaRelative 1;",
        {"keys 'gamma'", "and 'gammaRelative'",
         "are alternatives: give gamma, or gammaRelative, not both"}},
-      {"EWithLambda", "constant/mechanicalProperties", "lambda +1;", "E 1e9;\nlambda 1;",
+      {"EWithLambda",
+       "constant/mechanicalProperties",
+       "lambda +1;",
+       "E 1e9;\nlambda 1;",
        "lambda 1;",
        {"keys 'E'", "and 'lambda'",
         "belong to alternatives: give E and nu, or lambda and mu, not both"}},
-      {"decimalComma", "constant/mechanicalProperties", "mu +1;", "mu 0,9;", "mu 0,9;",
+      {"decimalComma",
+       "constant/mechanicalProperties",
+       "mu +1;",
+       "mu 0,9;",
+       "mu 0,9;",
        {"key 'mu'", "expected a number > 0, got '0,9'", "has a decimal comma: write 0.9"}},
-      {"numberOverflow", "constant/mechanicalProperties", "mu +1;", "mu 1e400;", "mu 1e400;",
+      {"numberOverflow",
+       "constant/mechanicalProperties",
+       "mu +1;",
+       "mu 1e400;",
+       "mu 1e400;",
        {"number 1e400 is out of the range of a double"}},
-      {"numberWithUnit", "system/controlDict", "deltaT +1;", "deltaT 1s;", "deltaT 1s;",
+      {"numberWithUnit",
+       "system/controlDict",
+       "deltaT +1;",
+       "deltaT 1s;",
+       "deltaT 1s;",
        {"key 'deltaT'", "'1s' is the number '1' followed by 's'"}},
   };
   for (const Bad& b : cases) {
@@ -372,7 +455,8 @@ TEST_CASE("bad constant/effects entries name file, line, key and the valid choic
   }
   SECTION("an entry that is not a dictionary lists the valid types") {
     write("\ngravity 9.81;\n");
-    solverFails(c, {at("constant/effects", 2), "gravity", "bodyForce, initialStress, fracturePressure"});
+    solverFails(
+        c, {at("constant/effects", 2), "gravity", "bodyForce, initialStress, fracturePressure"});
   }
   SECTION("fracturePressure on a fracture that does not exist suggests the nearest") {
     write("pore\n{\n    type fracturePressure;\n    fracture fractur;\n    pressure 1;\n}\n");
@@ -391,8 +475,8 @@ TEST_CASE("bad constant/effects entries name file, line, key and the valid choic
   SECTION("fracturePressure values file with three columns") {
     write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
     writeText(c.dir() / "constant/pressure.dat", "0 1\n0.5 2 7\n1 3\n");
-    solverFails(c, {"constant/pressure.dat:2:", "expected two numbers 's p'",
-                    "got '0.5 2 7' (3 items)"});
+    solverFails(
+        c, {"constant/pressure.dat:2:", "expected two numbers 's p'", "got '0.5 2 7' (3 items)"});
   }
   SECTION("fracturePressure values file with nan") {
     write("pore { type fracturePressure; fracture fracture; values \"constant/pressure.dat\"; }\n");
@@ -400,8 +484,9 @@ TEST_CASE("bad constant/effects entries name file, line, key and the valid choic
     solverFails(c, {"constant/pressure.dat:2:", "'nan' is not a finite number"});
   }
   SECTION("fracturePressure with both pressure and values") {
-    write("pore { type fracturePressure; fracture fracture;\n"
-          "       pressure 1; values \"constant/pressure.dat\"; }\n");
+    write(
+        "pore { type fracturePressure; fracture fracture;\n"
+        "       pressure 1; values \"constant/pressure.dat\"; }\n");
     writeText(c.dir() / "constant/pressure.dat", "0 1\n1 2\n");
     solverFails(c, {at("constant/effects", 2), "keys 'pressure' (line 2) and 'values'",
                     "are alternatives: give pressure, or values, not both"});
@@ -437,8 +522,9 @@ TEST_CASE("bad constant/effects entries name file, line, key and the valid choic
     solverFails(c, {at("constant/effects", 1), "density", "> 0"});
   }
   SECTION("fracturePressure table of vectors") {
-    write("pore { type fracturePressure; fracture fracture;\n"
-          "       pressure table ((0 (0 0)) (1 (1 1))); }\n");
+    write(
+        "pore { type fracturePressure; fracture fracture;\n"
+        "       pressure table ((0 (0 0)) (1 (1 1))); }\n");
     solverFails(c, {at("constant/effects", 2), "pressure", "a number"});
   }
 }

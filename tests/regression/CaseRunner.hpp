@@ -26,9 +26,7 @@ inline std::string readText(const fs::path& p) {
   return s.str();
 }
 
-inline void writeText(const fs::path& p, const std::string& text) {
-  std::ofstream(p) << text;
-}
+inline void writeText(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 
 /// Run a shell command; output goes to logFile. Returns the exit status.
 inline int run(const std::string& command, const fs::path& logFile) {
@@ -80,9 +78,9 @@ class Case {
   /// kept in the case folder.
   int solve() {
     const fs::path bin = FRICTION_BIN_DIR;
-    const int split = run("'" + (bin / "splitFractureNodes").string() + "' -case '" +
-                              dir_.string() + "' -overwrite",
-                          dir_ / "log.splitFractureNodes");
+    const int split = run(
+        "'" + (bin / "splitFractureNodes").string() + "' -case '" + dir_.string() + "' -overwrite",
+        dir_ / "log.splitFractureNodes");
     INFO(readText(dir_ / "log.splitFractureNodes"));
     REQUIRE(split == 0);
     return run("'" + (bin / "frictionSolver").string() + "' -case '" + dir_.string() + "'",

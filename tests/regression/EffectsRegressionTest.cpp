@@ -14,7 +14,8 @@ using namespace friction::regression;
 namespace {
 
 const char* kEffectsHeader =
-    "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object effects;\n}\n";
+    "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object "
+    "effects;\n}\n";
 
 double maxAbsSlip(const std::vector<Row>& rows) {
   double m = 0;
@@ -32,7 +33,8 @@ double crackError(const std::vector<Row>& rows, double tauEff) {
   const double tx = l.x - f.x, ty = l.y - f.y, len = std::hypot(tx, ty);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const double xi = ((rows[i].x - 0.5) * tx + (rows[i].y - 0.5) * ty) / len;
-    const double ana = 1.0033 * 4 * (1 - nu * nu) / E * tauEff * std::sqrt(std::max(a * a - xi * xi, 0.0));
+    const double ana =
+        1.0033 * 4 * (1 - nu * nu) / E * tauEff * std::sqrt(std::max(a * a - xi * xi, 0.0));
     num += w[i] * std::pow(std::abs(rows[i].slip) - ana, 2);
     den += w[i] * ana * ana;
   }
@@ -53,11 +55,14 @@ TEST_CASE("gravity column: sigma_yy = -rho g (H - y), with no fracture and no co
   c.edit("system/meshDict", "fractures +\\(fracture\\);", "fractures ();");
   c.edit("constant/fractureProperties", "fracture\\s*\\{[^}]*\\}", "");
   c.edit("0/D", "top\\s*\\{[^}]*\\}", "top { type free; }");
-  c.edit("0/D", "left +\\{ type free; \\}", "left { type fixedDisplacement; components (x); value (0 0); }");
-  c.edit("0/D", "right +\\{ type free; \\}", "right { type fixedDisplacement; components (x); value (0 0); }");
+  c.edit("0/D", "left +\\{ type free; \\}",
+         "left { type fixedDisplacement; components (x); value (0 0); }");
+  c.edit("0/D", "right +\\{ type free; \\}",
+         "right { type fixedDisplacement; components (x); value (0 0); }");
   c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
-  writeText(c.dir() / "constant" / "effects",
-            std::string(kEffectsHeader) + "gravity { type bodyForce; density 2000; g (0 -9.81); }\n");
+  writeText(
+      c.dir() / "constant" / "effects",
+      std::string(kEffectsHeader) + "gravity { type bodyForce; density 2000; g (0 -9.81); }\n");
   // The utility splits nothing; then the library runs the case so the stress can be probed.
   REQUIRE(run("'" + (fs::path(FRICTION_BIN_DIR) / "splitFractureNodes").string() + "' -case '" +
                   c.dir().string() + "'",
@@ -81,8 +86,10 @@ TEST_CASE("gravity column: sigma_yy = -rho g (H - y), with no fracture and no co
   const double rhoG = 2000 * 9.81;
   for (friction::Index cell = 0; cell < fc.splitMesh().mesh.numTriangles(); cell += 97) {
     const auto& t = fc.splitMesh().mesh.triangles[cell];
-    const friction::Vector2 x = (fc.splitMesh().mesh.points[t[0]] + fc.splitMesh().mesh.points[t[1]] +
-                                 fc.splitMesh().mesh.points[t[2]]) / 3;
+    const friction::Vector2 x =
+        (fc.splitMesh().mesh.points[t[0]] + fc.splitMesh().mesh.points[t[1]] +
+         fc.splitMesh().mesh.points[t[2]]) /
+        3;
     const Eigen::Matrix2d s = asmb.stress(u, cell, x);
     // Round-off of a 10⁴-dof solve of stresses of size ρg ≈ 2·10⁴ Pa.
     CHECK(s(1, 1) == Approx(-rhoG * (1 - x.y())).margin(1e-6 * rhoG));
@@ -106,7 +113,8 @@ TEST_CASE("initial stress alone reproduces the boundary-loaded inclined crack",
   REQUIRE(a.size() == b.size());
   // The uniform far field is exact in P1 either way; the crack's perturbation problem is the
   // same, so only round-off separates the two (1e-8 of the slip).
-  for (std::size_t i = 0; i < a.size(); ++i) CHECK(std::abs(a[i].slip - b[i].slip) <= 1e-8 * maxAbsSlip(a));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    CHECK(std::abs(a[i].slip - b[i].slip) <= 1e-8 * maxAbsSlip(a));
   CHECK(crackError(b, 4.3301e6 - 0.4 * 2.5e6) <= 2.5 / 16);
 }
 
@@ -114,7 +122,8 @@ TEST_CASE("a uniform fracture pressure acts through the effective normal stress"
           "[regression][effects]") {
   Case c("inclinedCrack", "effects-crack-pressure");
   writeText(c.dir() / "constant" / "effects",
-            std::string(kEffectsHeader) + "pore { type fracturePressure; fracture crack; pressure 1e6; }\n");
+            std::string(kEffectsHeader) +
+                "pore { type fracturePressure; fracture crack; pressure 1e6; }\n");
   const int rc = c.solve();
   INFO(c.log());
   REQUIRE(rc == 0);
@@ -177,8 +186,7 @@ TEST_CASE("an effect switched off reproduces the run without it bit for bit",
   CHECK(readText(base.dir() / "1" / "D") == readText(off.dir() / "1" / "D"));
 }
 
-TEST_CASE("steps whose loads did not change reuse the previous solution",
-          "[regression][effects]") {
+TEST_CASE("steps whose loads did not change reuse the previous solution", "[regression][effects]") {
   Case c("paperBenchmark", "effects-unchanged");
   c.edit("0/D", "\\(1 \\(-0.02 -0.025\\)\\)", "(0.5 (-0.02 -0.025))");
   c.edit("system/controlDict", "deltaT +1;", "deltaT 0.25;");

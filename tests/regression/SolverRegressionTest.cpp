@@ -18,7 +18,8 @@ constexpr double kA = 0.05;  // crack half-length [m]
 // factor r = 1.0033 of the issue (the infinite-plate value times r).
 double analyticSlip(double xi) {
   const double E = 10e9, nu = 0.25, tau = 4.3301e6, sigmaN = 2.5e6, muF = 0.4, r = 1.0033;
-  return r * 4 * (1 - nu * nu) / E * (tau - muF * sigmaN) * std::sqrt(std::max(kA * kA - xi * xi, 0.0));
+  return r * 4 * (1 - nu * nu) / E * (tau - muF * sigmaN) *
+         std::sqrt(std::max(kA * kA - xi * xi, 0.0));
 }
 
 // Signed coordinate along the crack from its centre (0.5, 0.5).
@@ -28,9 +29,9 @@ double xiOf(const Row& r, const Row& first, const Row& last) {
 }
 
 struct CrackResult {
-  double relError;  // ‖|slip| − analytic‖_L²(Γ) / ‖analytic‖_L²(Γ)
+  double relError;        // ‖|slip| − analytic‖_L²(Γ) / ‖analytic‖_L²(Γ)
   double maxSTDeviation;  // max |ST − μ_f| over slipping nodes with |ξ| ≤ 0.8a
-  bool signOk;   // slip opposite to τ wherever it slips
+  bool signOk;            // slip opposite to τ wherever it slips
   std::vector<Row> rows;
 };
 
@@ -38,7 +39,8 @@ CrackResult inclinedCrack(int hDivisor, int order, const std::string& label, int
   Case c("inclinedCrack", label);
   if (hDivisor != 16) c.remesh("-h " + std::to_string(kA / hDivisor));
   if (order != 1) c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
-  if (steps != 1) c.edit("system/controlDict", "deltaT +1;", "deltaT " + std::to_string(1.0 / steps) + ";");
+  if (steps != 1)
+    c.edit("system/controlDict", "deltaT +1;", "deltaT " + std::to_string(1.0 / steps) + ";");
   const int rc = c.solve();
   INFO(c.log());
   REQUIRE(rc == 0);
@@ -55,7 +57,8 @@ CrackResult inclinedCrack(int hDivisor, int order, const std::string& label, int
     num += w[i] * std::pow(std::abs(row.slip) - ana, 2);
     den += w[i] * ana * ana;
     if (row.state == "slip") {
-      if (std::abs(xi) <= 0.8 * kA) r.maxSTDeviation = std::max(r.maxSTDeviation, std::abs(row.ST - 0.4));
+      if (std::abs(xi) <= 0.8 * kA)
+        r.maxSTDeviation = std::max(r.maxSTDeviation, std::abs(row.ST - 0.4));
       if (row.slip * row.tau >= 0) r.signOk = false;
     }
   }
@@ -85,7 +88,8 @@ TEST_CASE("inclined crack: slip converges to the analytic solution", "[regressio
 
 TEST_CASE("inclined crack with P2 elements", "[regression][analytic]") {
   const CrackResult r = inclinedCrack(16, 2, "inclinedCrack-P2");
-  WARN("P2 h = a/16: relative L2 slip error " << r.relError << ", max |ST - mu_f| " << r.maxSTDeviation);
+  WARN("P2 h = a/16: relative L2 slip error " << r.relError << ", max |ST - mu_f| "
+                                              << r.maxSTDeviation);
   CHECK(r.relError <= 2.5 / 16);
   CHECK(r.maxSTDeviation <= 1e-3);
   CHECK(r.signOk);
@@ -192,7 +196,8 @@ TEST_CASE("known answers: no slip with mu_f = 0.4 and 2, equal to the unsplit so
       std::vector<std::string> v;
       std::istringstream in(s);
       for (std::string l; std::getline(in, l);)
-        if (!l.empty() && l[0] == '(' && l.back() == ')' && l.find(' ') != std::string::npos) v.push_back(l);
+        if (!l.empty() && l[0] == '(' && l.back() == ')' && l.find(' ') != std::string::npos)
+          v.push_back(l);
       return v;
     };
     const auto a = lines(ref), b = lines(d);
@@ -269,7 +274,8 @@ TEST_CASE("the paper's steepest descent and Armijo decrease J", "[regression][pa
       Case c("paperBenchmark", std::string("paperBenchmark-") + type);
       c.remesh("-n 20");
       c.edit("system/frictionSolution", "type +semismoothNewton;",
-             std::string("type ") + type + (std::string(type) == "steepestDescent" ? "; alpha 2e-4;" : ";"));
+             std::string("type ") + type +
+                 (std::string(type) == "steepestDescent" ? "; alpha 2e-4;" : ";"));
       c.edit("system/frictionSolution", "maxIterations +[0-9]+;", "maxIterations 2000;");
       const int rc = c.solve();
       INFO(c.log());
@@ -310,17 +316,35 @@ TEST_CASE("bad solver input names file, line and what was expected, and writes n
     std::vector<std::string> expected;
   };
   const std::vector<Bad> cases = {
-      {"unknownLaw", "constant/fractureProperties", "law +coulomb;", "law columb;",
+      {"unknownLaw",
+       "constant/fractureProperties",
+       "law +coulomb;",
+       "law columb;",
        {"constant/fractureProperties:", "columb", "frictionless, tresca, coulomb"}},
-      {"typoKey", "system/frictionSolution", "elementOrder", "elementOrdr",
+      {"typoKey",
+       "system/frictionSolution",
+       "elementOrder",
+       "elementOrdr",
        {"system/frictionSolution:", "elementOrdr", "elementOrder"}},
-      {"badOrder", "system/frictionSolution", "elementOrder +1;", "elementOrder 3;",
+      {"badOrder",
+       "system/frictionSolution",
+       "elementOrder +1;",
+       "elementOrder 3;",
        {"system/frictionSolution:", "elementOrder", "3"}},
-      {"unknownPatch", "0/D", "left +\\{ type free; \\}", "lefft { type free; }",
+      {"unknownPatch",
+       "0/D",
+       "left +\\{ type free; \\}",
+       "lefft { type free; }",
        {"0/D:", "lefft", "did you mean 'left'"}},
-      {"badPoisson", "constant/mechanicalProperties", "lambda +1;", "E 1; nu 0.7;",
+      {"badPoisson",
+       "constant/mechanicalProperties",
+       "lambda +1;",
+       "E 1; nu 0.7;",
        {"constant/mechanicalProperties:", "nu", "0.7"}},
-      {"unknownOptimizer", "system/frictionSolution", "type +semismoothNewton;", "type newton;",
+      {"unknownOptimizer",
+       "system/frictionSolution",
+       "type +semismoothNewton;",
+       "type newton;",
        {"system/frictionSolution:", "newton",
         "steepestDescent, armijo, barzilaiBorwein, lbfgs, semismoothNewton"}},
   };
@@ -361,10 +385,12 @@ TEST_CASE("ParaView files read by VTK hold the solver's own table values", "[reg
   Case c("paperBenchmark", "paperBenchmark-vtk");
   REQUIRE(c.solve() == 0);
   REQUIRE(fs::exists("/usr/bin/python3"));  // python3-vtk9 is installed by etc/setup
-  const std::string script = std::string(FRICTION_SOURCE_DIR) + "/tests/regression/vtkMatchesTables.py";
+  const std::string script =
+      std::string(FRICTION_SOURCE_DIR) + "/tests/regression/vtkMatchesTables.py";
   // The split mesh of the committed square: 1859 + 41 points, 3556 triangles (P1).
-  const int rc = run("/usr/bin/python3 '" + script + "' '" + c.dir().string() + "' 1 fracture 1900 3556",
-                     c.dir() / "log.vtk");
+  const int rc =
+      run("/usr/bin/python3 '" + script + "' '" + c.dir().string() + "' 1 fracture 1900 3556",
+          c.dir() / "log.vtk");
   INFO(readText(c.dir() / "log.vtk"));
   CHECK(rc == 0);
   // The inclined crack has two tips (state tip, NaN tractions in the table and the.vtp).
@@ -386,7 +412,8 @@ TEST_CASE("matrix-free Newton gives the condensed Newton's slip", "[regression][
   Case a("paperBenchmark", "paperBenchmark-condensed");
   REQUIRE(a.solve() == 0);
   Case b("paperBenchmark", "paperBenchmark-krylov");
-  b.edit("system/frictionSolution", "type +semismoothNewton;", "type semismoothNewton; variant krylov;");
+  b.edit("system/frictionSolution", "type +semismoothNewton;",
+         "type semismoothNewton; variant krylov;");
   const int rc = b.solve();
   INFO(b.log());
   REQUIRE(rc == 0);
@@ -473,22 +500,28 @@ TEST_CASE("output and system errors name the file, exit 6 and leave no partial f
     const std::string log = c.log();
     INFO(log);
     CHECK(rc == 6);
-    CHECK_THAT(log, Catch::Contains("postProcessing: cannot create the folder") && Catch::Contains("Not a directory"));
+    CHECK_THAT(log, Catch::Contains("postProcessing: cannot create the folder") &&
+                        Catch::Contains("Not a directory"));
     CHECK_FALSE(fs::exists(c.dir() / "1"));
     CHECK_FALSE(hasPartialFolder(c.dir()));
   }
   // Root ignores permission bits: the immutable attribute stops root too.
   for (const bool withPostProcessing : {false, true}) {
-    DYNAMIC_SECTION("read-only case folder, postProcessing " << (withPostProcessing ? "present" : "absent")) {
-      Case c("paperBenchmark", std::string("paperBenchmark-readOnly") + (withPostProcessing ? "Post" : ""));
+    DYNAMIC_SECTION("read-only case folder, postProcessing "
+                    << (withPostProcessing ? "present" : "absent")) {
+      Case c("paperBenchmark",
+             std::string("paperBenchmark-readOnly") + (withPostProcessing ? "Post" : ""));
       const fs::path bin = FRICTION_BIN_DIR;
-      REQUIRE(run("'" + (bin / "splitFractureNodes").string() + "' -case '" + c.dir().string() + "'",
-                  c.dir().parent_path() / "log.readOnlySplit") == 0);
+      REQUIRE(
+          run("'" + (bin / "splitFractureNodes").string() + "' -case '" + c.dir().string() + "'",
+              c.dir().parent_path() / "log.readOnlySplit") == 0);
       if (withPostProcessing) fs::create_directories(c.dir() / "postProcessing");
       const fs::path log = c.dir().parent_path() / "log.readOnly";
       REQUIRE(run("chattr +i '" + c.dir().string() + "'", log) == 0);
-      const int rc = run("'" + (bin / "frictionSolver").string() + "' -case '" + c.dir().string() + "'", log);
-      REQUIRE(run("chattr -i '" + c.dir().string() + "'", c.dir().parent_path() / "log.chattr") == 0);
+      const int rc =
+          run("'" + (bin / "frictionSolver").string() + "' -case '" + c.dir().string() + "'", log);
+      REQUIRE(run("chattr -i '" + c.dir().string() + "'", c.dir().parent_path() / "log.chattr") ==
+              0);
       const std::string text = readText(log);
       INFO(text);
       CHECK(rc == 6);
@@ -514,9 +547,11 @@ TEST_CASE("system/controlDict deleted while running: a warning, the run goes on"
   // Delete it once the first step is logged, while 499 are still to come.
   const int rc = run("'" + (bin / "frictionSolver").string() + "' -case '" + dir + "' > '" + dir +
                          "/log.frictionSolver' 2>&1 & pid=$!; "
-                         "for i in $(seq 500); do grep -q 'Time = 0.002 ' '" + dir +
+                         "for i in $(seq 500); do grep -q 'Time = 0.002 ' '" +
+                         dir +
                          "/log.frictionSolver' && break; sleep 0.01; done; "
-                         "rm '" + dir + "/system/controlDict'; wait $pid",
+                         "rm '" +
+                         dir + "/system/controlDict'; wait $pid",
                      c.dir() / "log.driver");
   const std::string log = c.log();
   INFO(log);
@@ -545,7 +580,8 @@ TEST_CASE("the status written is the status of the state written (nu = 0.4999999
   if (written > 1e-10) {
     CHECK_THAT(status, !Catch::Contains("converged"));
     CHECK(std::regex_search(status, std::regex("\\bstatus +inaccurate;")));
-    CHECK_THAT(readText(c.dir() / "1" / "fractures" / "fracture.dat"), Catch::Contains("# status inaccurate "));
+    CHECK_THAT(readText(c.dir() / "1" / "fractures" / "fracture.dat"),
+               Catch::Contains("# status inaccurate "));
     CHECK_THAT(log, Catch::Contains("round-off of an ill-conditioned system"));
     CHECK(rc == 3);
   } else {
@@ -586,19 +622,21 @@ TEST_CASE("a second SIGINT/SIGTERM stops within the step, writes nothing of it, 
               c.dir() / "log.splitFractureNodes") == 0);
   const std::string dir = c.dir().string();
   // Up to 3 s after the second signal, then SIGKILL (and 'hung' in the log).
-  const int rc = run("'" + (bin / "frictionSolver").string() + "' -case '" + dir + "' > '" + dir +
-                         "/log.frictionSolver' 2>&1 & pid=$!; sleep 1; kill -TERM $pid; sleep 0.5; "
-                         "kill -0 $pid || echo 'ended before the second signal'; kill -INT $pid; "
-                         "for i in $(seq 30); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done; "
-                         "kill -0 $pid 2>/dev/null && { echo hung; kill -KILL $pid; }; wait $pid",
-                     c.dir() / "log.driver");
+  const int rc =
+      run("'" + (bin / "frictionSolver").string() + "' -case '" + dir + "' > '" + dir +
+              "/log.frictionSolver' 2>&1 & pid=$!; sleep 1; kill -TERM $pid; sleep 0.5; "
+              "kill -0 $pid || echo 'ended before the second signal'; kill -INT $pid; "
+              "for i in $(seq 30); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done; "
+              "kill -0 $pid 2>/dev/null && { echo hung; kill -KILL $pid; }; wait $pid",
+          c.dir() / "log.driver");
   const std::string log = c.log(), driver = readText(c.dir() / "log.driver");
   INFO(log << driver);
   CHECK(rc == 5);
   CHECK(driver.find("hung") == std::string::npos);
   CHECK(driver.find("ended before") == std::string::npos);
   CHECK_THAT(log, Catch::Contains("stop requested"));
-  CHECK_THAT(log, Catch::Contains("SIGTERM, then SIGINT: the step to time 1 was abandoned and not written"));
+  CHECK_THAT(log, Catch::Contains(
+                      "SIGTERM, then SIGINT: the step to time 1 was abandoned and not written"));
   CHECK_FALSE(fs::exists(c.dir() / "1"));
   CHECK_FALSE(hasPartialFolder(c.dir()));
 }
@@ -661,8 +699,10 @@ TEST_CASE("a factorisation that fails names the part nothing holds, or the free 
   }
   SECTION("rollers that fix x only: the body slides along y") {
     Case c("paperBenchmark", "paperBenchmark-rollersX");
-    c.edit("0/D", "bottom +\\{[^}]*\\}", "bottom { type fixedDisplacement; components (x); value (0 0); }");
-    c.edit("0/D", "top\\s*\\{[^}]*\\}", "top { type fixedDisplacement; components (x); value (0 0); }");
+    c.edit("0/D", "bottom +\\{[^}]*\\}",
+           "bottom { type fixedDisplacement; components (x); value (0 0); }");
+    c.edit("0/D", "top\\s*\\{[^}]*\\}",
+           "top { type fixedDisplacement; components (x); value (0 0); }");
     const int rc = c.solve();
     const std::string log = c.log();
     INFO(log);

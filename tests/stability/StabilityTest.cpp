@@ -130,14 +130,16 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
         std::vector<std::string> items;
         std::istringstream s(line);
         for (std::string item; s >> item;) items.push_back(item);
-        const bool tipRow = f.path().extension() == ".dat" && items.size() == 10 && items[9] == "tip";
+        const bool tipRow =
+            f.path().extension() == ".dat" && items.size() == 10 && items[9] == "tip";
         INFO(line);
         for (std::size_t i = 0; i < items.size(); ++i) {
           if (tipRow && i >= 5 && i <= 8) {
             CHECK(items[i] == "nan");
             continue;
           }
-          for (const char* bad : {"nan", "NaN", "inf", "Inf"}) CHECK(items[i].find(bad) == std::string::npos);
+          for (const char* bad : {"nan", "NaN", "inf", "Inf"})
+            CHECK(items[i].find(bad) == std::string::npos);
         }
       }
     }
@@ -153,8 +155,9 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     for (const auto& f : fractures) {
       auto rows = c.table(name, f);
       // A tip has no traction (nan): leave it out of the norms and the check below.
-      rows.erase(std::remove_if(rows.begin(), rows.end(), [](const Row& r) { return r.state == "tip"; }),
-                 rows.end());
+      rows.erase(
+          std::remove_if(rows.begin(), rows.end(), [](const Row& r) { return r.state == "tip"; }),
+          rows.end());
       REQUIRE(!rows.empty());
       double sigmaMax = 0, betaMax = 0;
       for (const Row& r : rows) {
@@ -163,7 +166,8 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
       }
       // Dissipation τ·β ≤ 0 (slip opposes the shear), up to the solver's tolerance, which is
       // relative to the traction on the fracture (‖D‖ ≤ 1e-10 ‖Σ‖).
-      for (const Row& r : rows) CHECK(r.tau * r.slipIncrement <= 1e-8 * sigmaMax * betaMax + 1e-300);
+      for (const Row& r : rows)
+        CHECK(r.tau * r.slipIncrement <= 1e-8 * sigmaMax * betaMax + 1e-300);
     }
   }
   if (exitCode == 3) CHECK_THAT(c.log(), Catch::Contains("did not converge"));
@@ -192,7 +196,9 @@ int runWithMesh(Case& c, const Mesh& m) {
   return c.solve();
 }
 
-std::vector<Row> slipOf(Case& c, const std::string& time = "1") { return c.table(time, "fracture"); }
+std::vector<Row> slipOf(Case& c, const std::string& time = "1") {
+  return c.table(time, "fracture");
+}
 
 }  // namespace
 
@@ -294,7 +300,8 @@ TEST_CASE("stability: slivers of 1e-11 and 2e-12: an honest status or an honest 
       const int n = 20;
       for (int j = 0; j <= n / 2 - 1; ++j) ys.push_back(j * (0.5 - thin) / (n / 2 - 1));
       ys.push_back(0.5);
-      for (int j = 0; j <= n / 2 - 1; ++j) ys.push_back(0.5 + thin + j * (0.5 - thin) / (n / 2 - 1));
+      for (int j = 0; j <= n / 2 - 1; ++j)
+        ys.push_back(0.5 + thin + j * (0.5 - thin) / (n / 2 - 1));
       const Mesh m = gridMesh(uniform(n), ys, {{n / 2, 0, n, 5}});
       Case c("paperBenchmark", thin > 5e-12 ? "stab-sliver-1e-11" : "stab-sliver-2e-12");
       const int rc = runWithMesh(c, m);
@@ -323,7 +330,9 @@ TEST_CASE("stability: part of the fracture in tension, the rest in compression",
   const Mesh m = gridMesh(uniform(20), uniform(20), {{10, 0, 20, 5}}, true);
   Case c("paperBenchmark", "stab-tension");
   c.edit("system/meshDict", "left +4;", "left 4; topRight 6;");
-  c.edit("0/D", "right +\\{ type free; \\}", "right { type free; }\n    topRight { type fixedDisplacement; value table ((0 (0 0)) (1 (-0.02 0.03))); }");
+  c.edit("0/D", "right +\\{ type free; \\}",
+         "right { type free; }\n    topRight { type fixedDisplacement; value table ((0 (0 0)) (1 "
+         "(-0.02 0.03))); }");
   const int rc = runWithMesh(c, m);
   checkRun(c, {"fracture"}, rc);
   REQUIRE(rc == 0);
@@ -348,7 +357,8 @@ TEST_CASE("stability: fracture ends on a free boundary and on a Dirichlet patch"
   }
   SECTION("left side on rollers: that end's jump is held") {
     Case c("paperBenchmark", "stab-dirichlet");
-    c.edit("0/D", "left +\\{ type free; \\}", "left { type fixedDisplacement; components (x); value (0 0); }");
+    c.edit("0/D", "left +\\{ type free; \\}",
+           "left { type fixedDisplacement; components (x); value (0 0); }");
     // The rollers stiffen the body: a lower friction coefficient makes the fracture slip.
     c.edit("constant/fractureProperties", "frictionCoefficient 0.2;", "frictionCoefficient 0.02;");
     const int rc = c.solve();

@@ -16,8 +16,8 @@
 #include <set>
 #include <sstream>
 
-#include "friction/core/CommandLine.hpp"
 #include "friction/case/MeshSettings.hpp"
+#include "friction/core/CommandLine.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/fracture/SplitMeshIO.hpp"
 #include "friction/mesh/MeshReader.hpp"
@@ -38,7 +38,8 @@ std::string point(const Vector2& p) {
 std::string patchesAt(const Mesh& mesh, Index v, const std::set<int>& fractureLabels) {
   std::set<std::string> names;
   for (std::size_t e = 0; e < mesh.edges.size(); ++e)
-    if ((mesh.edges[e][0] == v || mesh.edges[e][1] == v) && !fractureLabels.count(mesh.edgeLabel[e]))
+    if ((mesh.edges[e][0] == v || mesh.edges[e][1] == v) &&
+        !fractureLabels.count(mesh.edgeLabel[e]))
       names.insert(mesh.labelNames.at(mesh.edgeLabel[e]));
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
@@ -58,20 +59,18 @@ void printChecks(const Mesh& mesh, const MeshSettings& settings,
   std::cout << "Checks\n    unused vertices:           " << mesh.droppedPoints.size();
   if (!mesh.droppedPoints.empty())
     std::cout << " dropped from " << mesh.source << " (used by no triangle, e.g. a gmsh "
-              << "Physical Point): "
-              << few(mesh.droppedPoints, [](const Mesh::DroppedPoint& p) {
+              << "Physical Point): " << few(mesh.droppedPoints, [](const Mesh::DroppedPoint& p) {
                    return "vertex " + std::to_string(p.number) + " at " + point(p.x);
                  });
   std::cout << "\n    coincident nodes:          " << found.coincident.size();
   if (!found.coincident.empty())
     std::cout << " pairs, allowed by allowCoincidentNodes (a traction-free cut): "
-              << few(found.coincident, [&](const std::pair<Index, Index>& p) {
-                   return point(mesh.points[p.first]);
-                 });
+              << few(found.coincident,
+                     [&](const std::pair<Index, Index>& p) { return point(mesh.points[p.first]); });
   std::cout << "\n    unlabelled boundary edges: " << found.unlabelled.size();
   if (!found.unlabelled.empty())
-    std::cout << ", in patch " << settings.defaultPatch << " (defaultPatch): "
-              << few(found.unlabelled, [&](const std::array<Index, 2>& e) {
+    std::cout << ", in patch " << settings.defaultPatch
+              << " (defaultPatch): " << few(found.unlabelled, [&](const std::array<Index, 2>& e) {
                    return point(mesh.points[e[0]]) + "-" + point(mesh.points[e[1]]);
                  });
   std::cout << "\n\n";
@@ -85,7 +84,8 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
             << "    area:      " << mesh.totalArea() << "\n\n";
 
   std::cout << "Patches\n    " << std::left << std::setw(16) << "name" << std::setw(8) << "label"
-            << std::setw(8) << "edges" << std::setw(14) << "length" << "type\n";
+            << std::setw(8) << "edges" << std::setw(14) << "length"
+            << "type\n";
   for (const auto& [label, name] : mesh.labelNames) {
     int count = 0;
     double length = 0;
@@ -122,8 +122,8 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
 
   const SplitMesh& s = split;
   std::cout << "Split mesh\n"
-            << "    points:    " << s.mesh.numPoints() << " (+" << s.mesh.numPoints() - mesh.numPoints()
-            << ")\n"
+            << "    points:    " << s.mesh.numPoints() << " (+"
+            << s.mesh.numPoints() - mesh.numPoints() << ")\n"
             << "    triangles: " << s.mesh.numTriangles() << "\n"
             << "    area:      " << s.mesh.totalArea() << "\n\n";
 }
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
   options.add_options()("case", po::value<std::string>()->default_value("."),
                         "case folder (holds system/meshDict)")(
       "overwrite", "split again, replacing an existing constant/splitMesh")("help",
-                                                                             "print this help");
+                                                                            "print this help");
   const auto parsed = parseCommandLine(argc, argv, options, "splitFractureNodes");
   if (!parsed) return 2;
   const po::variables_map& args = *parsed;

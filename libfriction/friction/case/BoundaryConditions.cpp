@@ -31,43 +31,45 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
                            suggestionText(name, valid) + " (patches: " + joinWords(valid) + ")");
     const Dictionary& p = field.subDict(name);
     try {
-    Patch patch;
-    patch.name = name;
-    patch.label = it->second;
-    const std::string type = p.getChoice("type", typeNames());
-    if (type == "fixedDisplacement") {
-      patch.type = Type::fixedDisplacement;
-      patch.value = TimeFunction::read(p, "value", 2);
-      if (p.found("components")) {
-        const std::vector<std::string> c = p.getWordList("components");
-        const bool x = std::find(c.begin(), c.end(), "x") != c.end();
-        const bool y = std::find(c.begin(), c.end(), "y") != c.end();
-        if (c.empty() || c.size() != static_cast<std::size_t>(x + y))
-          p.fail("components", "key 'components': expected (x), (y) or (x y)");
-        patch.components = x && y ? FixedComponents::all : x ? FixedComponents::x : FixedComponents::y;
+      Patch patch;
+      patch.name = name;
+      patch.label = it->second;
+      const std::string type = p.getChoice("type", typeNames());
+      if (type == "fixedDisplacement") {
+        patch.type = Type::fixedDisplacement;
+        patch.value = TimeFunction::read(p, "value", 2);
+        if (p.found("components")) {
+          const std::vector<std::string> c = p.getWordList("components");
+          const bool x = std::find(c.begin(), c.end(), "x") != c.end();
+          const bool y = std::find(c.begin(), c.end(), "y") != c.end();
+          if (c.empty() || c.size() != static_cast<std::size_t>(x + y))
+            p.fail("components", "key 'components': expected (x), (y) or (x y)");
+          patch.components = x && y ? FixedComponents::all
+                             : x    ? FixedComponents::x
+                                    : FixedComponents::y;
+        }
+      } else if (type == "traction") {
+        patch.type = Type::traction;
+        patch.value = TimeFunction::read(p, "traction", 2);
+      } else if (type == "pressure") {
+        patch.type = Type::pressure;
+        patch.value = TimeFunction::read(p, "pressure", 1);
+        // Outward normal of each edge: away from the third vertex of the triangle it bounds.
+        std::map<std::pair<Index, Index>, Index> thirdVertex;
+        for (const auto& t : mesh.triangles)
+          for (int k = 0; k < 3; ++k)
+            thirdVertex[std::minmax(t[k], t[(k + 1) % 3])] = t[(k + 2) % 3];
+        for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+          if (mesh.edgeLabel[e] != patch.label) continue;
+          const auto [a, b] = mesh.edges[e];
+          const Vector2 d = mesh.points[b] - mesh.points[a];
+          Vector2 n = Vector2(d.y(), -d.x()).normalized();
+          const Index c = thirdVertex.at(std::minmax(a, b));
+          if ((mesh.points[c] - mesh.points[a]).dot(n) > 0) n = -n;
+          patch.outwardNormal.push_back(n);
+        }
       }
-    } else if (type == "traction") {
-      patch.type = Type::traction;
-      patch.value = TimeFunction::read(p, "traction", 2);
-    } else if (type == "pressure") {
-      patch.type = Type::pressure;
-      patch.value = TimeFunction::read(p, "pressure", 1);
-      // Outward normal of each edge: away from the third vertex of the triangle it bounds.
-      std::map<std::pair<Index, Index>, Index> thirdVertex;
-      for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k)
-          thirdVertex[std::minmax(t[k], t[(k + 1) % 3])] = t[(k + 2) % 3];
-      for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-        if (mesh.edgeLabel[e] != patch.label) continue;
-        const auto [a, b] = mesh.edges[e];
-        const Vector2 d = mesh.points[b] - mesh.points[a];
-        Vector2 n = Vector2(d.y(), -d.x()).normalized();
-        const Index c = thirdVertex.at(std::minmax(a, b));
-        if ((mesh.points[c] - mesh.points[a]).dot(n) > 0) n = -n;
-        patch.outwardNormal.push_back(n);
-      }
-    }
-    patches_.push_back(std::move(patch));
+      patches_.push_back(std::move(patch));
     } catch (const InputError& e) {
       // Say which patch: the same key ('value') appears once per patch.
       if (e.message().find("patch '") != std::string::npos) throw;
@@ -124,8 +126,8 @@ Eigen::VectorXd BoundaryConditions::neumannLoad(const LagrangeSpace& space, doub
     for (std::size_t e = 0; e < edges.size(); ++e) {
       const auto [a, b] = edges[e];
       const double length = (mesh.points[b] - mesh.points[a]).norm();
-      const Vector2 g = p.type == Type::traction ? Vector2(v[0], v[1])
-                                                 : Vector2(-v[0] * p.outwardNormal[e]);
+      const Vector2 g =
+          p.type == Type::traction ? Vector2(v[0], v[1]) : Vector2(-v[0] * p.outwardNormal[e]);
       // ∫ φ_i ds on a straight edge: L/2 at the ends (P1); L/6, 2L/3, L/6 (P2).
       const NodeList nodes = space.edgeNodes(a, b);
       const double w1[2] = {0.5, 0.5}, w2[3] = {1.0 / 6, 2.0 / 3, 1.0 / 6};

@@ -3,15 +3,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
-#include <limits>
-#include <map>
-#include <numeric>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
+#include <map>
+#include <numeric>
 #include <ostream>
 #include <sstream>
 
@@ -32,8 +32,7 @@ namespace {
 
 Dictionary readCaseFile(const std::string& caseDir, const std::string& relative) {
   const std::string path = (fs::path(caseDir) / relative).lexically_normal().string();
-  if (!fs::is_regular_file(path))
-    throw InputError(path, "cannot open: the case needs " + relative);
+  if (!fs::is_regular_file(path)) throw InputError(path, "cannot open: the case needs " + relative);
   return Dictionary::read(path);
 }
 
@@ -70,11 +69,13 @@ FrictionCase::~FrictionCase() = default;
 
 FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   if (!fs::exists(caseDir))
-    throw InputError(caseDir, "the case folder does not exist (expected a folder with system/, "
-                              "constant/ and 0/; see -case)");
+    throw InputError(caseDir,
+                     "the case folder does not exist (expected a folder with system/, "
+                     "constant/ and 0/; see -case)");
   if (!fs::is_directory(caseDir))
-    throw InputError(caseDir, "is not a folder (expected a case folder with system/, constant/ "
-                              "and 0/; see -case)");
+    throw InputError(caseDir,
+                     "is not a folder (expected a case folder with system/, constant/ "
+                     "and 0/; see -case)");
   // 1. Every dictionary is read and checked before any work: a typo costs nothing.
   const Dictionary controlDict = readCaseFile(caseDir, "system/controlDict");
   time_ = std::make_unique<TimeControl>(controlDict);
@@ -103,8 +104,8 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   for (const auto& g : split_.fractures) names.push_back(g.name);
   for (const std::string& key : fp.keys())
     if (key != "FoamFile" && std::find(names.begin(), names.end(), key) == names.end())
-      fp.fail(key, "'" + key + "' is not a fracture of the split mesh" + suggestionText(key, names) +
-                       " (fractures: " + joinWords(names) + ")");
+      fp.fail(key, "'" + key + "' is not a fracture of the split mesh" +
+                       suggestionText(key, names) + " (fractures: " + joinWords(names) + ")");
   for (const auto& g : split_.fractures) {
     if (!fp.isDict(g.name))
       throw InputError(fp.location(), "no entry for fracture '" + g.name +
@@ -166,7 +167,8 @@ void FrictionCase::printSettings(std::ostream& log) const {
   }
   log << "Control: optimizer " << optimizer_->name() << ", gradient "
       << (gradient_ == GradientKind::exact ? "exact" : "frozenRho") << ", gamma " << gamma_
-      << " Pa/m" << (gammaAbsolute_ ? "" : " (gammaRelative " + formatNumber(gammaRelative_) + " x E/h)")
+      << " Pa/m"
+      << (gammaAbsolute_ ? "" : " (gammaRelative " + formatNumber(gammaRelative_) + " x E/h)")
       << ", zeta " << zeta_;
   if (optimizer_->name() != "semismoothNewton")
     log << ", alpha " << optimizer_->alpha() << " m/Pa"
@@ -183,8 +185,10 @@ void FrictionCase::printSettings(std::ostream& log) const {
   }
   for (const auto& e : effects_)
     log << "Effect " << e->name() << ": " << e->type() << ", " << e->describe() << "\n";
-  for (const auto& name : skippedEffects_) log << "Effect " << name << ": switched off (active no)\n";
-  log << "Not simulated (not in the case): " << (off.empty() ? std::string("-") : joinWords(off)) << "\n";
+  for (const auto& name : skippedEffects_)
+    log << "Effect " << name << ": switched off (active no)\n";
+  log << "Not simulated (not in the case): " << (off.empty() ? std::string("-") : joinWords(off))
+      << "\n";
 }
 
 FactorStatus FrictionCase::setup(std::ostream& log) {
@@ -224,8 +228,8 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
 
   const auto& f = system_->factorization();
   log << "Split mesh: " << split_.mesh.numPoints() << " points, " << split_.mesh.numTriangles()
-      << " triangles, " << system_->unsplitSpace().numDofs() << " dofs (P" << order_ << "), "
-      << n << " fracture control nodes\n";
+      << " triangles, " << system_->unsplitSpace().numDofs() << " dofs (P" << order_ << "), " << n
+      << " fracture control nodes\n";
   // P1 triangles lock for nearly incompressible material (the discrete divergence-free
   // space is too small): the displacement comes out too small. P2 copes far better.
   if (order_ == 1 && !material_->planeStress() && material_->poissonRatio() > 0.45)
@@ -241,7 +245,8 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
           << " hold it; where they cannot carry its load (frictionless, tension) it slides "
              "without bound\n";
   if (int held = system_->numHeldOnDirichlet())
-    log << "Note: " << held << " fracture node(s) lie on a Dirichlet patch: their jump is held at zero\n";
+    log << "Note: " << held
+        << " fracture node(s) lie on a Dirichlet patch: their jump is held at zero\n";
   log << "Assemblies: " << system_->numAssemblies() << " stiffness matri"
       << (system_->numAssemblies() == 1 ? "x" : "ces")
       << (n == 0 ? " (no fracture: no split stiffness, no control loop)" : "") << "\n";
@@ -352,8 +357,8 @@ void FrictionCase::findFloatingParts() {
 std::string FrictionCase::factorFailureDiagnosis() const {
   const SparseFactor& f = system_->factorization();
   std::ostringstream s;
-  s << std::setprecision(4) << "the stiffness matrix could not be factored (" << toString(f.status())
-    << "): ";
+  s << std::setprecision(4) << "the stiffness matrix could not be factored ("
+    << toString(f.status()) << "): ";
   // 1. Scaling: entries beyond double precision (the case's units).
   if (!std::isfinite(f.maxAbsEntry()) || f.maxAbsEntry() > 1e250) {
     s << "its entries overflow double precision (largest |K_ij| " << f.maxAbsEntry()
@@ -397,7 +402,8 @@ std::string FrictionCase::factorFailureDiagnosis() const {
       longest = std::max(longest, (m.points[tri[a]] - m.points[tri[(a + 1) % 3]]).squaredNorm());
     const double area = std::abs(m.signedArea(t));
     const double aspect = area > 0 ? longest / (2 * area) : std::numeric_limits<double>::infinity();
-    if (aspect > worst) worst = aspect, where = (m.points[tri[0]] + m.points[tri[1]] + m.points[tri[2]]) / 3;
+    if (aspect > worst)
+      worst = aspect, where = (m.points[tri[0]] + m.points[tri[1]] + m.points[tri[2]]) / 3;
   }
   s << "every part is held, so the matrix is singular to working precision through its "
        "conditioning (smallest pivot ratio "
@@ -444,13 +450,13 @@ void FrictionCase::prepareOutput(bool overwrite, std::ostream& log) {
     return;
   }
   if (earlier.empty() || time_->startFromLatest()) return;
-  throw InputError(
-      caseDir_, "time folders of an earlier run exist after startTime " +
-                    formatNumber(time_->startTime()) + ": " + listNames(earlier) +
-                    "; frictionSolver does not overwrite them. Either continue that run with "
-                    "'startFrom latestTime;' in system/controlDict, or start again with "
-                    "'frictionSolver -overwrite', which first removes them, VTK/ and "
-                    "postProcessing/convergence.dat");
+  throw InputError(caseDir_,
+                   "time folders of an earlier run exist after startTime " +
+                       formatNumber(time_->startTime()) + ": " + listNames(earlier) +
+                       "; frictionSolver does not overwrite them. Either continue that run with "
+                       "'startFrom latestTime;' in system/controlDict, or start again with "
+                       "'frictionSolver -overwrite', which first removes them, VTK/ and "
+                       "postProcessing/convergence.dat");
 }
 
 void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh) {
@@ -465,8 +471,9 @@ void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& ke
   std::error_code ec;
   fs::create_directories(post, ec);
   if (ec || !fs::is_directory(post))
-    throw OutputError(post.string(), "cannot create the folder" +
-                                         (ec ? " (" + ec.message() + ")" : std::string(": a file has its name")));
+    throw OutputError(post.string(),
+                      "cannot create the folder" +
+                          (ec ? " (" + ec.message() + ")" : std::string(": a file has its name")));
   removeTemporaryFiles(post.string());
   // The history of the steps up to the restart time, as the run that wrote them left it:
   // its lines start with the time's name (which reads back as that time).
@@ -501,9 +508,12 @@ long FrictionCase::restart(std::ostream& log) {
   const std::vector<double> slip = st.getScalarList("slip");
   const std::vector<double> beta = st.getScalarList("lastIncrement");
   if (static_cast<Eigen::Index>(slip.size()) != system_->size() || beta.size() != slip.size())
-    st.fail("slip", "key 'slip': " + std::to_string(slip.size()) + " values, expected one per "
-                    "fracture node (" + std::to_string(system_->size()) + "): the mesh or element "
-                    "order changed since this folder was written");
+    st.fail("slip", "key 'slip': " + std::to_string(slip.size()) +
+                        " values, expected one per "
+                        "fracture node (" +
+                        std::to_string(system_->size()) +
+                        "): the mesh or element "
+                        "order changed since this folder was written");
   const long step = st.getInt("step", Bounds::nonNegative());
   const double t0 = st.getScalar("time");
   st.checkAllRead();
@@ -515,10 +525,12 @@ long FrictionCase::restart(std::ostream& log) {
   double named = t0;
   timeOfName(folder, named);
   const double limit = std::max(t0, named);
-  trimOutputs([limit](const std::string& name) {
-    double t = 0;
-    return timeOfName(name, t) && t <= limit;
-  }, false);
+  trimOutputs(
+      [limit](const std::string& name) {
+        double t = 0;
+        return timeOfName(name, t) && t <= limit;
+      },
+      false);
   const long first = time_->continueAfter(t0, step);
   log << "Restarting from time " << folder << " (step " << step << ")";
   if (first > time_->numSteps())
@@ -567,35 +579,37 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       r.report.status = OptimizerStatus::converged;
       r.relResidual = results.back().relResidual;
       last_.beta.setZero();
-    } else try {
-      sys.setStep(load, slip_);
-      if (n > 0) {
-        Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(n);
-        for (const auto& e : effects_) e->addFractureTraction(sys.controlNodes(), r.time, sn0, tau0);
-        sys.setTractionOffset(sn0, tau0);
+    } else
+      try {
+        sys.setStep(load, slip_);
+        if (n > 0) {
+          Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(n);
+          for (const auto& e : effects_)
+            e->addFractureTraction(sys.controlNodes(), r.time, sn0, tau0);
+          sys.setTractionOffset(sn0, tau0);
+        }
+        // ρ = c − μ(σ_n + p): the pressure lowers the cohesion term node by node.
+        const Eigen::VectorXd cohesion = cohesion_ - mu_.cwiseProduct(pressure);
+        ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_);
+        beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(n);
+        if (n > 0)
+          r.report = optimizer_->minimize(problem, beta);
+        else
+          r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
+        // The accepted β once more, so that displacement and tractions on disk belong to it (a
+        // line search may have evaluated a rejected trial last). judgeStep() below judges this
+        // state, not the optimizer's last evaluation.
+        last_ = problem.evaluate(beta);
+        r.relResidual = problem.relativeResidual(last_);
+      } catch (const StopNow& s) {
+        // A second signal: the step is abandoned; nothing of it is written.
+        stoppedEarly_ = std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM") + ", then " +
+                        s.what() + ": the step to time " + time_->timeName(r.time) +
+                        " was abandoned and not written";
+        log << "\nStopped during the step to time " << time_->timeName(r.time) << " ("
+            << stoppedEarly_ << ")\n";
+        break;
       }
-      // ρ = c − μ(σ_n + p): the pressure lowers the cohesion term node by node.
-      const Eigen::VectorXd cohesion = cohesion_ - mu_.cwiseProduct(pressure);
-      ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_);
-      beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(n);
-      if (n > 0)
-        r.report = optimizer_->minimize(problem, beta);
-      else
-        r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
-      // The accepted β once more, so that displacement and tractions on disk belong to it (a
-      // line search may have evaluated a rejected trial last). judgeStep() below judges this
-      // state, not the optimizer's last evaluation.
-      last_ = problem.evaluate(beta);
-      r.relResidual = problem.relativeResidual(last_);
-    } catch (const StopNow& s) {
-      // A second signal: the step is abandoned; nothing of it is written.
-      stoppedEarly_ = std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM") + ", then " +
-                      s.what() + ": the step to time " + time_->timeName(r.time) +
-                      " was abandoned and not written";
-      log << "\nStopped during the step to time " << time_->timeName(r.time) << " ("
-          << stoppedEarly_ << ")\n";
-      break;
-    }
     lastLoad = load;
     lastDirichlet = sys.dirichlet().values();
     lastPressure = pressure;
@@ -610,14 +624,14 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     for (Eigen::Index i = 0; i < n; ++i) {
       const double effective = last_.sigmaN[i] + pressure[i];
       if (sys.freeMask()[i] > 0 && effective < 0)
-        r.maxExcessST = std::max(r.maxExcessST, (std::abs(last_.tau[i]) - std::max(last_.rho[i], 0.0)) /
-                                                    -effective);
+        r.maxExcessST = std::max(
+            r.maxExcessST, (std::abs(last_.tau[i]) - std::max(last_.rho[i], 0.0)) / -effective);
     }
     if (!r.reused) judgeStep(r);
     if (r.nonFinite) {
       // Nothing non-finite reaches the disk, and later steps would start from it: stop here.
-      log << "Time = " << time_->timeName(r.time) << "  iterations " << r.report.iterations
-          << "  " << toString(r.report.status) << "  [" << r.report.note << "]  (not written)\n"
+      log << "Time = " << time_->timeName(r.time) << "  iterations " << r.report.iterations << "  "
+          << toString(r.report.status) << "  [" << r.report.note << "]  (not written)\n"
           << "\nStopped at time " << time_->timeName(r.time)
           << ": its results are not finite, later steps would start from them\n";
       results.push_back(std::move(r));
@@ -638,8 +652,9 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     const auto stamp = fs::last_write_time(controlDict, stampError);
     if (stampError) {
       // Removed or unreadable while running: the run keeps the settings it read at start.
-      if (!controlDictGone) log << "Warning: " << controlDict << " cannot be read any more (" << stampError.message()
-                                << "): the run goes on with the settings read at start\n";
+      if (!controlDictGone)
+        log << "Warning: " << controlDict << " cannot be read any more (" << stampError.message()
+            << "): the run goes on with the settings read at start\n";
       controlDictGone = true;
     } else if (stamp != controlStamp) {
       controlDictGone = false;
@@ -667,13 +682,15 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       }
       r.written = true;
     }
-    log << "Time = " << time_->timeName(r.time) << (r.reused ? "  loads unchanged: previous solution reused" : "")
-        << "  iterations " << r.report.iterations
-        << "  backSubstitutions " << r.backSubstitutions
-        << (r.report.setupSolves ? " (+" + std::to_string(r.report.setupSolves) + " building S, once per run)" : "")
-        << std::setprecision(4) << "  J " << r.J
-        << "  |D|/|Sigma| " << r.relResidual << "  maxExcessST " << r.maxExcessST << "  |dBeta| "
-        << r.lastStepNorm << "  " << toString(r.report.status)
+    log << "Time = " << time_->timeName(r.time)
+        << (r.reused ? "  loads unchanged: previous solution reused" : "") << "  iterations "
+        << r.report.iterations << "  backSubstitutions " << r.backSubstitutions
+        << (r.report.setupSolves
+                ? " (+" + std::to_string(r.report.setupSolves) + " building S, once per run)"
+                : "")
+        << std::setprecision(4) << "  J " << r.J << "  |D|/|Sigma| " << r.relResidual
+        << "  maxExcessST " << r.maxExcessST << "  |dBeta| " << r.lastStepNorm << "  "
+        << toString(r.report.status)
         << (!r.reused && n > 0 && r.report.iterations == 0 ? " (stuck at the trial state)" : "")
         << (r.report.note.empty() ? "" : "  [" + r.report.note + "]")
         << (r.written ? "  (written)" : "");
@@ -689,8 +706,8 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     if (stopNow && k < time_->numSteps()) {
       stoppedEarly_ = signalled ? std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM")
                                 : "stopAt in system/controlDict";
-      log << "\nStopped at time " << time_->timeName(time_->time(k)) << " (" << stoppedEarly_
-          << ")" << (results.back().written ? ", this time written" : "") << "\n";
+      log << "\nStopped at time " << time_->timeName(time_->time(k)) << " (" << stoppedEarly_ << ")"
+          << (results.back().written ? ", this time written" : "") << "\n";
       break;
     }
   }
@@ -714,8 +731,9 @@ void FrictionCase::judgeStep(StepResult& r) const {
     r.nonFinite = true;
     r.report.status = OptimizerStatus::diverged;
     std::ostringstream s;
-    s << "non-finite " << joinWords(bad) << ": the numbers overflow double precision (E = "
-      << material_->youngModulus() << " Pa; J = ½‖D‖² squares the stresses); express the case "
+    s << "non-finite " << joinWords(bad)
+      << ": the numbers overflow double precision (E = " << material_->youngModulus()
+      << " Pa; J = ½‖D‖² squares the stresses); express the case "
       << "in units that keep E and the stresses well below 1e150 (e.g. MPa or GPa)";
     addNote(s.str());
     return;
@@ -748,7 +766,8 @@ void FrictionCase::judgeStep(StepResult& r) const {
     for (const FloatingPart& p : floating_)
       if (p.heldThroughFracture)
         parts.push_back("the part " + p.describe() + " touches no Dirichlet patch and only " +
-                        joinWords(p.fractures) + " hold" + (p.fractures.size() == 1 ? "s" : "") + " it");
+                        joinWords(p.fractures) + " hold" + (p.fractures.size() == 1 ? "s" : "") +
+                        " it");
     if (parts.empty())
       s << "the fractures cannot carry the load (check the loads and the friction law)";
     else
@@ -800,8 +819,8 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
       // ρ ≤ 0 frees a node; it is open only where σ'_n ≥ 0 — compressed (frictionless, μ_f = 0)
       // it slides freely.
       const SlipState law = last_.node[k].state;
-      row.state = nodes[k].tip ? "tip"
-                  : held       ? "stick"
+      row.state = nodes[k].tip             ? "tip"
+                  : held                   ? "stick"
                   : law == SlipState::open ? (effective >= 0 ? "open" : "slip")
                                            : toString(law);
       rows.push_back(row);

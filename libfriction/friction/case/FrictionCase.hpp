@@ -25,9 +25,9 @@
 
 #include "friction/case/BoundaryConditions.hpp"
 #include "friction/control/ControlProblem.hpp"
-#include "friction/core/OutputError.hpp"
 #include "friction/control/Optimizer.hpp"
 #include "friction/core/AtomicFile.hpp"
+#include "friction/core/OutputError.hpp"
 #include "friction/effect/Effect.hpp"
 #include "friction/fe/Material.hpp"
 #include "friction/fracture/FractureSystem.hpp"
@@ -42,8 +42,8 @@ namespace friction {
 /// the two sides of a fracture are different parts) that touches no Dirichlet patch.
 struct FloatingPart {
   int triangles = 0;
-  Vector2 point = Vector2::Zero();  ///< centroid of the part's triangle nearest its centre
-  bool heldThroughFracture = false;  ///< joined to a held part in the unsplit mesh
+  Vector2 point = Vector2::Zero();     ///< centroid of the part's triangle nearest its centre
+  bool heldThroughFracture = false;    ///< joined to a held part in the unsplit mesh
   std::vector<std::string> fractures;  ///< fractures on its boundary
   /// "around (x, y), N triangles"
   std::string describe() const;
@@ -57,7 +57,7 @@ struct StepResult {
   double J = 0, relResidual = 0, maxExcessST = 0, lastStepNorm = 0;
   double equilibrium = 0;  ///< ‖K x − b‖/‖b‖ of the step's final primal solve
   bool written = false;
-  bool reused = false;  ///< loads unchanged since the previous step: its solution reused
+  bool reused = false;     ///< loads unchanged since the previous step: its solution reused
   bool nonFinite = false;  ///< the results overflowed: the step is diverged and not written
 };
 
@@ -138,8 +138,8 @@ class FrictionCase {
   Eigen::VectorXd lastBeta_;  ///< increment of the last step (warm start, restart)
   std::string stoppedEarly_;
   std::vector<FloatingPart> floating_;
-  double diameter_ = 0;  ///< diagonal of the mesh's bounding box [m]
-  std::unique_ptr<VtkSeries> vtk_;  ///< ParaView files, when controlDict's writeVTK is on
+  double diameter_ = 0;                  ///< diagonal of the mesh's bounding box [m]
+  std::unique_ptr<VtkSeries> vtk_;       ///< ParaView files, when controlDict's writeVTK is on
   std::unique_ptr<AppendFile> history_;  ///< postProcessing/convergence.dat
   bool outputPrepared_ = false;
   /// Restart: read the state of the newest complete time folder, trim the outputs after it;

@@ -26,8 +26,9 @@ MeshSettings MeshSettings::read(const std::string& caseDir) {
                                     "system/meshDict; see -case)"
                                   : "the case folder does not exist (see -case)");
   if (!fs::exists(s.dictPath))
-    throw InputError(s.dictPath, "cannot open: the case has no system/meshDict (is -case "
-                                 "pointing at a case folder?)");
+    throw InputError(s.dictPath,
+                     "cannot open: the case has no system/meshDict (is -case "
+                     "pointing at a case folder?)");
   const Dictionary dict = Dictionary::read(s.dictPath);
 
   const std::string mesh = dict.getFileName("mesh");
@@ -64,7 +65,8 @@ MeshSettings MeshSettings::read(const std::string& caseDir) {
     s.defaultPatchWhere = dict.location("defaultPatch");
     // It becomes a dictionary key (constant/splitMesh, 0/D): a word, as the patch names.
     const std::string& n = s.defaultPatch;
-    const bool word = !n.empty() && (std::isalpha(static_cast<unsigned char>(n[0])) || n[0] == '_') &&
+    const bool word = !n.empty() &&
+                      (std::isalpha(static_cast<unsigned char>(n[0])) || n[0] == '_') &&
                       std::all_of(n.begin(), n.end(), [](char c) {
                         return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
                       });
@@ -103,10 +105,11 @@ void MeshSettings::nameLabels(Mesh& mesh) const {
       names[l] = it != mesh.labelNames.end() ? it->second : "patch" + std::to_string(l);
       // Patch names become dictionary keys (constant/splitMesh, 0/D): they must be words.
       const std::string& n = names[l];
-      const bool word = !n.empty() && (std::isalpha(static_cast<unsigned char>(n[0])) || n[0] == '_') &&
-                        std::all_of(n.begin(), n.end(), [](char c) {
-                          return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
-                        });
+      const bool word =
+          !n.empty() && (std::isalpha(static_cast<unsigned char>(n[0])) || n[0] == '_') &&
+          std::all_of(n.begin(), n.end(), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+          });
       if (!word)
         throw InputError(mesh.source, "physical name '" + n + "' of label " + std::to_string(l) +
                                           " is not a valid patch name (letters, digits, '_' and "

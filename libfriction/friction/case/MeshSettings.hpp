@@ -16,8 +16,8 @@ namespace friction {
 
 struct MeshSettings {
   std::string caseDir;
-  std::string dictPath;  ///< caseDir/system/meshDict, as used in messages
-  std::string meshFile;  ///< path of the mesh file (caseDir joined with the 'mesh' entry)
+  std::string dictPath;   ///< caseDir/system/meshDict, as used in messages
+  std::string meshFile;   ///< path of the mesh file (caseDir joined with the 'mesh' entry)
   std::string meshEntry;  ///< the 'mesh' entry as written (relative to the case folder)
   SourceLocation meshWhere;
 

@@ -13,9 +13,8 @@
 
 namespace friction {
 
-ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu,
-                               Eigen::VectorXd cohesion, double gamma, double zeta,
-                               GradientKind gradient)
+ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen::VectorXd cohesion,
+                               double gamma, double zeta, GradientKind gradient)
     : response_(response),
       mu_(std::move(mu)),
       cohesion_(std::move(cohesion)),

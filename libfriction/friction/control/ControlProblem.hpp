@@ -15,8 +15,8 @@
 namespace friction {
 
 enum class GradientKind {
-  exact,      ///< [beyond] includes the normal part μ P'_ρ D n_Γ of the dual jump
-  frozenRho   ///< the paper's (46)–(47), (54): ρ treated as fixed (Tresca-like)
+  exact,     ///< [beyond] includes the normal part μ P'_ρ D n_Γ of the dual jump
+  frozenRho  ///< the paper's (46)–(47), (54): ρ treated as fixed (Tresca-like)
 };
 
 /// Everything known at one β.
@@ -30,8 +30,8 @@ struct ControlState {
 class ControlProblem {
  public:
   /// mu, cohesion: per node μ (–) and c [Pa]; gamma [Pa/m] > 0; zeta [Pa/m] ≥ 0.
-  ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen::VectorXd cohesion,
-                 double gamma, double zeta, GradientKind gradient);
+  ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen::VectorXd cohesion, double gamma,
+                 double zeta, GradientKind gradient);
 
   /// Primal solve at β, then D, J. (One back-substitution.)
   ControlState evaluate(const Eigen::VectorXd& beta);

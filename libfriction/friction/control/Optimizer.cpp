@@ -15,11 +15,16 @@ namespace friction {
 
 const char* toString(OptimizerStatus s) {
   switch (s) {
-    case OptimizerStatus::converged: return "converged";
-    case OptimizerStatus::maxIterations: return "maxIterations";
-    case OptimizerStatus::diverged: return "diverged";
-    case OptimizerStatus::stalled: return "stalled";
-    case OptimizerStatus::inaccurate: return "inaccurate";
+    case OptimizerStatus::converged:
+      return "converged";
+    case OptimizerStatus::maxIterations:
+      return "maxIterations";
+    case OptimizerStatus::diverged:
+      return "diverged";
+    case OptimizerStatus::stalled:
+      return "stalled";
+    case OptimizerStatus::inaccurate:
+      return "inaccurate";
   }
   return "?";
 }
@@ -37,14 +42,18 @@ const OptimizerEntry optimizerTable[] = {
     // h = 1/40: (h/E)² = 10⁻⁴); it diverges on the inclined crack, so the default is 1,
     // stable on every case of the project (README.md).
     {"steepestDescent",
-     [](const Dictionary&) -> std::unique_ptr<Optimizer> { return std::make_unique<SteepestDescent>(); }},
+     [](const Dictionary&) -> std::unique_ptr<Optimizer> {
+       return std::make_unique<SteepestDescent>();
+     }},
     {"armijo",
      [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
        return std::make_unique<Armijo>(d.getScalarOr("armijoC", 1e-4, {0, 1, true, true}),
                                        static_cast<int>(d.getIntOr("maxBacktracks", 60, {1, 200})));
      }},
     {"barzilaiBorwein",
-     [](const Dictionary&) -> std::unique_ptr<Optimizer> { return std::make_unique<BarzilaiBorwein>(); }},
+     [](const Dictionary&) -> std::unique_ptr<Optimizer> {
+       return std::make_unique<BarzilaiBorwein>();
+     }},
     {"lbfgs",
      [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
        return std::make_unique<Lbfgs>(static_cast<int>(d.getIntOr("memory", 10, {1, 100})),
@@ -77,13 +86,17 @@ std::unique_ptr<Optimizer> Optimizer::New(const Dictionary& dict) {
     if (dict.alternative({{"alpha"}, {"alphaRelative"}}, 1) == 0)
       opt->setStep(dict.getScalar("alpha", Bounds::positive()), false);
     else
-      opt->setStep(dict.getScalarOr("alphaRelative", type == "armijo" ? 10.0 : type == "steepestDescent" ? 1.0 : 2.0,
+      opt->setStep(dict.getScalarOr("alphaRelative",
+                                    type == "armijo"            ? 10.0
+                                    : type == "steepestDescent" ? 1.0
+                                                                : 2.0,
                                     Bounds::positive()),
                    true);
   }
   StopRule s;
-  s.on = dict.getChoiceOr("stopOn", {"residual", "step"}, "residual") == "step" ? StopRule::On::step
-                                                                               : StopRule::On::residual;
+  s.on = dict.getChoiceOr("stopOn", {"residual", "step"}, "residual") == "step"
+             ? StopRule::On::step
+             : StopRule::On::residual;
   s.tolerance = dict.getScalarOr("tolerance", s.tolerance, Bounds::positive());
   s.maxIterations = static_cast<int>(dict.getIntOr("maxIterations", s.maxIterations, {0, 1e9}));
   opt->setStopRule(s);
@@ -277,7 +290,8 @@ OptimizerReport Lbfgs::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
         const double sy = p.dot(sv, y);
         if (sy > 1e-14 * p.norm(sv) * p.norm(y)) {  // keep the curvature pairs positive
           S.push_back(sv), Y.push_back(y), rho.push_back(1 / sy);
-          if (static_cast<int>(S.size()) > memory_) S.erase(S.begin()), Y.erase(Y.begin()), rho.erase(rho.begin());
+          if (static_cast<int>(S.size()) > memory_)
+            S.erase(S.begin()), Y.erase(Y.begin()), rho.erase(rho.begin());
         }
         lastStep = p.norm(sv);
         s = std::move(trial);
@@ -348,8 +362,7 @@ Eigen::VectorXd gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&
         break;
       }
     }
-    const Eigen::VectorXd y =
-        H.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
+    const Eigen::VectorXd y = H.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
     x += V.leftCols(k) * y;
     if (std::abs(g[k]) <= tol * bnorm) break;
   }
@@ -358,9 +371,10 @@ Eigen::VectorXd gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&
 
 }  // namespace
 
-bool SemismoothNewton::lineSearch(ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
-                                  const std::function<ControlState(const Eigen::VectorXd&)>& stateAt,
-                                  double& lastStep, std::vector<SlipState>& states) {
+bool SemismoothNewton::lineSearch(
+    ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
+    const std::function<ControlState(const Eigen::VectorXd&)>& stateAt, double& lastStep,
+    std::vector<SlipState>& states) {
   // Backtracking on the merit ½‖D‖²_M; counts active-set changes for the cycling report.
   const double merit = 0.5 * p.dot(s.D, s.D);
   double t = 1;
@@ -379,9 +393,8 @@ bool SemismoothNewton::lineSearch(ControlProblem& p, ControlState& s, const Eige
   return false;
 }
 
-OptimizerReport& SemismoothNewton::finish(ControlProblem& p, const ControlState& s,
-                                          double lastStep, OptimizerReport& r,
-                                          Eigen::VectorXd& beta) {
+OptimizerReport& SemismoothNewton::finish(ControlProblem& p, const ControlState& s, double lastStep,
+                                          OptimizerReport& r, Eigen::VectorXd& beta) {
   if (r.status != OptimizerStatus::stalled && converged(p, s, lastStep))
     r.status = OptimizerStatus::converged;
   // An active set that keeps changing without the residual closing is cycling: say so
@@ -537,7 +550,8 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
       };
       // Inexact Newton: solve as accurately as the current residual warrants.
       const double eta = std::max(1e-10, std::min(1e-3, p.relativeResidual(s)));
-      const Eigen::VectorXd delta = gmres(applyActive, rhs, eta, static_cast<int>(std::min<Eigen::Index>(4 * m, 2000)));
+      const Eigen::VectorXd delta =
+          gmres(applyActive, rhs, eta, static_cast<int>(std::min<Eigen::Index>(4 * m, 2000)));
       for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta[a];
     }
     const auto evaluate = [&](const Eigen::VectorXd& b) { return p.evaluate(b); };

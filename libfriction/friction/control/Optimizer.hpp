@@ -49,7 +49,7 @@ struct OptimizerReport {
 /// Settings every optimizer shares (keys of the case's 'solver' dictionary).
 struct StopRule {
   enum class On { residual, step };
-  On on = On::residual;    ///< residual: ‖D‖_M ≤ tol ‖Σ‖_M; step: ‖Δβ‖_M ≤ tol (paper)
+  On on = On::residual;  ///< residual: ‖D‖_M ≤ tol ‖Σ‖_M; step: ‖Δβ‖_M ≤ tol (paper)
   double tolerance = 1e-6;  ///< relative (residual) or in m·√m (step, the paper's L²(Γ) norm)
   int maxIterations = 2000;
 };

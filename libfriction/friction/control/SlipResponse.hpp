@@ -24,8 +24,8 @@ class SlipResponse {
                       Eigen::VectorXd& sigmaN) = 0;
   /// Dual solve: no loads, zero Dirichlet data, jump qt t_Γ + qn n_Γ. Returns the
   /// tangential traction τ(p) per node [Pa] (qt, qn in m), and σ_n(p) if sigmaNDual is given.
-  virtual void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
-                    Eigen::VectorXd& tauDual, Eigen::VectorXd* sigmaNDual = nullptr) = 0;
+  virtual void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
+                    Eigen::VectorXd* sigmaNDual = nullptr) = 0;
 };
 
 }  // namespace friction

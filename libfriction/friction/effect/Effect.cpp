@@ -56,7 +56,8 @@ class InitialStress : public Effect {
     s0_ << s[0], s[2], s[2], s[1];
     if (d.found("gradient")) {
       const std::vector<double> g = d.getScalarList("gradient");
-      if (g.size() != 3) d.fail("gradient", "key 'gradient': expected (dsxx/dy dsyy/dy dsxy/dy) [Pa/m]");
+      if (g.size() != 3)
+        d.fail("gradient", "key 'gradient': expected (dsxx/dy dsyy/dy dsxy/dy) [Pa/m]");
       gradY_ << g[0], g[2], g[2], g[1];
     }
   }
@@ -64,7 +65,8 @@ class InitialStress : public Effect {
   std::string describe() const override {
     std::ostringstream s;
     s << "sigma0 (xx yy xy) = (" << s0_(0, 0) << " " << s0_(1, 1) << " " << s0_(0, 1) << ") Pa";
-    if (!gradY_.isZero()) s << " + y (" << gradY_(0, 0) << " " << gradY_(1, 1) << " " << gradY_(0, 1) << ") Pa/m";
+    if (!gradY_.isZero())
+      s << " + y (" << gradY_(0, 0) << " " << gradY_(1, 1) << " " << gradY_(0, 1) << ") Pa/m";
     return s.str();
   }
   Eigen::Matrix2d initialStress(const Vector2& x) const override { return s0_ + x.y() * gradY_; }
@@ -74,8 +76,8 @@ class InitialStress : public Effect {
     if (gradY_.isZero()) return;
     F += a.bodyForce(Vector2(gradY_.col(1)));
   }
-  void addFractureTraction(const std::vector<ControlNode>& nodes, double,
-                           Eigen::VectorXd& sigmaN, Eigen::VectorXd& tau) const override {
+  void addFractureTraction(const std::vector<ControlNode>& nodes, double, Eigen::VectorXd& sigmaN,
+                           Eigen::VectorXd& tau) const override {
     for (std::size_t k = 0; k < nodes.size(); ++k) {
       const Vector2 t = initialStress(nodes[k].x) * nodes[k].normal;
       sigmaN[k] += t.dot(nodes[k].normal);
@@ -95,14 +97,15 @@ class FracturePressure : public Effect {
     fracture_ = d.getWord("fracture");
     if (std::find(fractures.begin(), fractures.end(), fracture_) == fractures.end())
       d.fail("fracture", "key 'fracture': '" + fracture_ + "' is not a fracture of the case" +
-                             suggestionText(fracture_, fractures) + " (fractures: " +
-                             joinWords(fractures) + ")");
+                             suggestionText(fracture_, fractures) +
+                             " (fractures: " + joinWords(fractures) + ")");
     if (d.alternative({{"pressure"}, {"values"}}) == 1) {
-      file_ = (std::filesystem::path(caseDir) / d.getFileName("values")).lexically_normal().string();
+      file_ =
+          (std::filesystem::path(caseDir) / d.getFileName("values")).lexically_normal().string();
       std::ifstream in(file_, std::ios::binary);
       if (!in || std::filesystem::is_directory(file_))
-        d.fail("values", "key 'values': cannot open '" + file_ +
-                             "' (a file, relative to the case folder)");
+        d.fail("values",
+               "key 'values': cannot open '" + file_ + "' (a file, relative to the case folder)");
       readValues(std::string(std::istreambuf_iterator<char>(in), {}));
     } else {
       pressure_ = TimeFunction::read(d, "pressure", 1);
@@ -191,7 +194,9 @@ struct EffectEntry {
 const EffectEntry effectTable[] = {
     {"bodyForce",
      [](const std::string& n, const Dictionary& d, const std::vector<std::string>&,
-        const std::string&) -> std::unique_ptr<Effect> { return std::make_unique<BodyForce>(n, d); }},
+        const std::string&) -> std::unique_ptr<Effect> {
+       return std::make_unique<BodyForce>(n, d);
+     }},
     {"initialStress",
      [](const std::string& n, const Dictionary& d, const std::vector<std::string>&,
         const std::string&) -> std::unique_ptr<Effect> {

@@ -4,7 +4,8 @@
 //
 //   gravity  { type bodyForce;        density 2500; g (0 -9.81); }        // f = ρ g [N/m³]
 //   inSitu   { type initialStress;    stress (sxx syy sxy);               // σ⁰ [Pa]
-//                                     gradient (gxx gyy gxy); }           // optional, ∂σ⁰/∂y [Pa/m]
+//                                     gradient (gxx gyy gxy); }           // optional, ∂σ⁰/∂y
+//                                     [Pa/m]
 //   pore     { type fracturePressure; fracture crack; pressure 1e6; }     // p [Pa], or a table,
 //                                     // or values "constant/p.dat" (s p per line, interpolated)
 // Any entry may say `active no;` to be switched off without deleting it.
@@ -58,8 +59,8 @@ class Effect {
                                    Eigen::VectorXd& /*sigmaN*/, Eigen::VectorXd& /*tau*/) const {}
   /// Add the fluid pressure p at the control nodes at time t [Pa].
   virtual void addFracturePressure(const std::vector<ControlNode>& /*nodes*/,
-                                   const std::vector<std::string>& /*fractureNames*/,
-                                   double /*t*/, Eigen::VectorXd& /*p*/) const {}
+                                   const std::vector<std::string>& /*fractureNames*/, double /*t*/,
+                                   Eigen::VectorXd& /*p*/) const {}
   /// In-situ stress at x (zero unless initialStress) [Pa]: added to written stresses.
   virtual Eigen::Matrix2d initialStress(const Vector2& /*x*/) const {
     return Eigen::Matrix2d::Zero();

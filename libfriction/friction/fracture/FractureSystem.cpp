@@ -58,7 +58,8 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   Triplets pt;
   for (Index i = 0; i < splitSpace_->numNodes(); ++i) {
     FRICTION_ASSERT(toUnsplit[i] >= 0, "every split node belongs to a cell");
-    for (int c = 0; c < 2; ++c) pt.emplace_back(LagrangeSpace::dof(i, c), LagrangeSpace::dof(toUnsplit[i], c), 1.0);
+    for (int c = 0; c < 2; ++c)
+      pt.emplace_back(LagrangeSpace::dof(i, c), LagrangeSpace::dof(toUnsplit[i], c), 1.0);
   }
   P_ = fromTriplets(splitSpace_->numDofs(), unsplitSpace_->numDofs(), pt);
 
@@ -132,7 +133,8 @@ FactorStatus FractureSystem::factor(const std::string& backend) {
       ControlNode& v = nodes_[k];
       v.onDirichlet = false;
       for (int c = 0; c < 2; ++c) {
-        Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Pr, LagrangeSpace::dof(v.plus, c));
+        Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(
+            Pr, LagrangeSpace::dof(v.plus, c));
         if (it && dirichlet_->isFixed(static_cast<Index>(it.col()))) v.onDirichlet = true;
       }
       if (v.tip || v.onDirichlet) mask_[k] = 0;
@@ -140,26 +142,26 @@ FactorStatus FractureSystem::factor(const std::string& backend) {
   }
 
   if (n > 0) {
-  // The split stiffness is needed only for the lifting and the traction recovery: a case
-  // without fractures never assembles it.
-  const Eigen::SparseMatrix<double> Ksplit = splitAssembler_->stiffness();
-  ++numAssemblies_;
-  B_ = P_.transpose() * (Ksplit * L_);
-  // Rows of K_split at the copies, scaled: Σ_k = (r⁺_k − r⁻_k) / (2 w_k).
-  Triplets et;
-  for (Index k = 0; k < n; ++k) {
-    if (nodes_[k].tip) continue;  // a single node has no two sides to compare
-    const double s = 0.5 / weights_[k];
-    for (int c = 0; c < 2; ++c) {
-      et.emplace_back(2 * k + c, LagrangeSpace::dof(nodes_[k].plus, c), s);
-      et.emplace_back(2 * k + c, LagrangeSpace::dof(nodes_[k].minus, c), -s);
+    // The split stiffness is needed only for the lifting and the traction recovery: a case
+    // without fractures never assembles it.
+    const Eigen::SparseMatrix<double> Ksplit = splitAssembler_->stiffness();
+    ++numAssemblies_;
+    B_ = P_.transpose() * (Ksplit * L_);
+    // Rows of K_split at the copies, scaled: Σ_k = (r⁺_k − r⁻_k) / (2 w_k).
+    Triplets et;
+    for (Index k = 0; k < n; ++k) {
+      if (nodes_[k].tip) continue;  // a single node has no two sides to compare
+      const double s = 0.5 / weights_[k];
+      for (int c = 0; c < 2; ++c) {
+        et.emplace_back(2 * k + c, LagrangeSpace::dof(nodes_[k].plus, c), s);
+        et.emplace_back(2 * k + c, LagrangeSpace::dof(nodes_[k].minus, c), -s);
+      }
     }
-  }
-  const Eigen::SparseMatrix<double> E = fromTriplets(2 * n, splitSpace_->numDofs(), et);
-  const Eigen::SparseMatrix<double> EK = E * Ksplit;
-  Tx_ = EK * P_;
-  Tj_ = EK * L_;
-  Tf_ = -E;
+    const Eigen::SparseMatrix<double> E = fromTriplets(2 * n, splitSpace_->numDofs(), et);
+    const Eigen::SparseMatrix<double> EK = E * Ksplit;
+    Tx_ = EK * P_;
+    Tj_ = EK * L_;
+    Tf_ = -E;
   } else {
     B_.resize(unsplitSpace_->numDofs(), 0);
     Tx_.resize(0, unsplitSpace_->numDofs());

@@ -31,14 +31,14 @@ namespace friction {
 
 /// One node where β is defined.
 struct ControlNode {
-  int fracture = 0;       ///< index into SplitMesh::fractures
-  Index plus = 0;         ///< node of the split space on the Ω⁺ side
-  Index minus = 0;        ///< node on the Ω⁻ side (== plus at a tip)
+  int fracture = 0;  ///< index into SplitMesh::fractures
+  Index plus = 0;    ///< node of the split space on the Ω⁺ side
+  Index minus = 0;   ///< node on the Ω⁻ side (== plus at a tip)
   Vector2 x = Vector2::Zero();
   Vector2 normal = Vector2::Zero(), tangent = Vector2::Zero();
-  double arclength = 0;   ///< [m]
-  double weight = 0;      ///< lumped mass of Γ [m]
-  bool tip = false;       ///< single node: no jump
+  double arclength = 0;      ///< [m]
+  double weight = 0;         ///< lumped mass of Γ [m]
+  bool tip = false;          ///< single node: no jump
   bool onDirichlet = false;  ///< on a Dirichlet patch: jump held at zero
 };
 
@@ -78,8 +78,7 @@ class FractureSystem : public SlipResponse {
   Eigen::Index size() const override { return static_cast<Eigen::Index>(nodes_.size()); }
   const Eigen::VectorXd& weights() const override { return weights_; }
   const Eigen::VectorXd& freeMask() const override { return mask_; }
-  void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
-              Eigen::VectorXd& sigmaN) override;
+  void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau, Eigen::VectorXd& sigmaN) override;
   void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
             Eigen::VectorXd* sigmaNDual = nullptr) override;
 

@@ -48,9 +48,12 @@ struct EdgeTriangles {
 
 const char* toString(FractureNodeKind kind) {
   switch (kind) {
-    case FractureNodeKind::interior: return "interior";
-    case FractureNodeKind::boundary: return "boundary";
-    case FractureNodeKind::tip: return "tip";
+    case FractureNodeKind::interior:
+      return "interior";
+    case FractureNodeKind::boundary:
+      return "boundary";
+    case FractureNodeKind::tip:
+      return "tip";
   }
   return "?";
 }
@@ -157,21 +160,25 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     bool mixed = false;
     for (const auto& fe : list) mixed |= fe.first != list.front().first;
     if (mixed)
-      throw InputError(file, "fractures '" + specs[list[0].first].name + "' and '" +
-                                 specs[list[1].first].name + "' meet at " +
-                                 fmtPoint(mesh.points[v]) +
-                                 ": junctions of fractures are not supported (mesh them so that they do not meet)");
+      throw InputError(
+          file,
+          "fractures '" + specs[list[0].first].name + "' and '" + specs[list[1].first].name +
+              "' meet at " + fmtPoint(mesh.points[v]) +
+              ": junctions of fractures are not supported (mesh them so that they do not meet)");
     if (list.size() > 2)
-      throw InputError(file, "fracture '" + specs[list[0].first].name + "' branches at " +
-                                 fmtPoint(mesh.points[v]) + " (" + std::to_string(list.size()) +
-                                 " fracture edges meet there): junctions of fractures are not supported (give each "
-                                 "branch its own label and keep them apart)");
+      throw InputError(
+          file,
+          "fracture '" + specs[list[0].first].name + "' branches at " + fmtPoint(mesh.points[v]) +
+              " (" + std::to_string(list.size()) +
+              " fracture edges meet there): junctions of fractures are not supported (give each "
+              "branch its own label and keep them apart)");
   }
 
   // A curve whose nodes all have two fracture edges is closed: refuse before anything else.
   for (std::size_t f = 0; f < specs.size(); ++f) {
     bool hasEnd = false;
-    for (const auto& [a, b] : fracEdges[f]) hasEnd |= nodeEdges[a].size() == 1 || nodeEdges[b].size() == 1;
+    for (const auto& [a, b] : fracEdges[f])
+      hasEnd |= nodeEdges[a].size() == 1 || nodeEdges[b].size() == 1;
     if (!hasEnd)
       throw InputError(specs[f].where, "fracture '" + specs[f].name +
                                            "' is a closed curve; only open fractures (two ends) "
@@ -185,19 +192,21 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     bool all = true;
     for (int k = 0; k < 3 && all; ++k) {
       auto it = nodeEdges.find(tri[k]);
-      if (it == nodeEdges.end()) { all = false; break; }
+      if (it == nodeEdges.end()) {
+        all = false;
+        break;
+      }
       const int f = it->second.front().first;
       if (f0 != -2 && f != f0) all = false;
       f0 = f;
     }
     if (all)
-      throw InputError(file, "triangle " + std::to_string(t + 1) + " " +
-                                 fmtPoint(mesh.points[tri[0]]) + " " +
-                                 fmtPoint(mesh.points[tri[1]]) + " " +
-                                 fmtPoint(mesh.points[tri[2]]) +
-                                 " has all three vertices on fracture '" + specs[f0].name +
-                                 "', so it cannot be assigned to one side; refining the mesh "
-                                 "near the fracture (a smaller element size there) removes it");
+      throw InputError(
+          file, "triangle " + std::to_string(t + 1) + " " + fmtPoint(mesh.points[tri[0]]) + " " +
+                    fmtPoint(mesh.points[tri[1]]) + " " + fmtPoint(mesh.points[tri[2]]) +
+                    " has all three vertices on fracture '" + specs[f0].name +
+                    "', so it cannot be assigned to one side; refining the mesh "
+                    "near the fracture (a smaller element size there) removes it");
   }
 
   // Node -> incident triangles, for the nodes on fractures only.
@@ -290,7 +299,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
           uf.unite(static_cast<int>(p), static_cast<int>(q));
         }
       std::map<int, std::vector<Index>> groups;  // root -> triangles of one side
-      for (std::size_t p = 0; p < tris.size(); ++p) groups[uf.find(static_cast<int>(p))].push_back(tris[p]);
+      for (std::size_t p = 0; p < tris.size(); ++p)
+        groups[uf.find(static_cast<int>(p))].push_back(tris[p]);
 
       if (groups.size() == 1) {
         if (nodeEdges[v].size() != 1)
@@ -306,7 +316,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
                                    ": the fracture cuts the triangles around this node into " +
                                    std::to_string(groups.size()) +
                                    " groups (2 expected); the mesh is not a manifold here");
-      g.kind[i] = nodeEdges[v].size() == 1 ? FractureNodeKind::boundary : FractureNodeKind::interior;
+      g.kind[i] =
+          nodeEdges[v].size() == 1 ? FractureNodeKind::boundary : FractureNodeKind::interior;
 
       // Which group is Ω⁺: take a triangle of the group that has a fracture edge (v, w) and
       // see on which side of that edge its third vertex lies. Ω⁺ is where (x − x_v)·n < 0.
@@ -369,7 +380,10 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     std::array<Index, 2> ne{a, b};
     for (Index& x : ne)
       for (int k = 0; k < 3; ++k)
-        if (orig[k] == x) { x = split[k]; break; }
+        if (orig[k] == x) {
+          x = split[k];
+          break;
+        }
     out.mesh.edges.push_back(ne);
     out.mesh.edgeLabel.push_back(mesh.edgeLabel[e]);
   }

@@ -33,12 +33,12 @@ const char* toString(FractureNodeKind kind);
 struct FractureGeometry {
   std::string name;
   int label = 0;
-  std::vector<Index> node;   ///< node number in the unsplit mesh
-  std::vector<Index> plus;   ///< copy used by triangles in Ω⁺ (split-mesh node number)
-  std::vector<Index> minus;  ///< copy used by triangles in Ω⁻ (== plus at tips)
-  std::vector<Vector2> normal;   ///< unit n_Γ, from Ω⁺ to Ω⁻
-  std::vector<Vector2> tangent;  ///< unit t_Γ, along growing arclength
-  std::vector<double> arclength; ///< s, from 0 at the first node [length units of the mesh]
+  std::vector<Index> node;        ///< node number in the unsplit mesh
+  std::vector<Index> plus;        ///< copy used by triangles in Ω⁺ (split-mesh node number)
+  std::vector<Index> minus;       ///< copy used by triangles in Ω⁻ (== plus at tips)
+  std::vector<Vector2> normal;    ///< unit n_Γ, from Ω⁺ to Ω⁻
+  std::vector<Vector2> tangent;   ///< unit t_Γ, along growing arclength
+  std::vector<double> arclength;  ///< s, from 0 at the first node [length units of the mesh]
   std::vector<FractureNodeKind> kind;
 
   Index numNodes() const { return static_cast<Index>(node.size()); }

@@ -140,7 +140,8 @@ SplitMesh readSplitMesh(const std::string& path) {
       dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numTriangles() - 1) +
                                  " is clockwise or degenerate (expected counter-clockwise)");
   }
-  if (m.triangles.empty()) dict.fail("triangles", "key 'triangles': expected at least one triangle");
+  if (m.triangles.empty())
+    dict.fail("triangles", "key 'triangles': expected at least one triangle");
   {
     std::vector<std::pair<std::array<Index, 3>, Index>> sorted;
     for (Index t = 0; t < m.numTriangles(); ++t) {
@@ -151,11 +152,10 @@ SplitMesh readSplitMesh(const std::string& path) {
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t i = 1; i < sorted.size(); ++i)
       if (sorted[i].first == sorted[i - 1].first)
-        dict.fail("triangles", "key 'triangles': triangles " +
-                                   std::to_string(sorted[i - 1].second) + " and " +
-                                   std::to_string(sorted[i].second) +
-                                   " have the same vertices (expected each triangle once)" +
-                                   resplit);
+        dict.fail("triangles",
+                  "key 'triangles': triangles " + std::to_string(sorted[i - 1].second) + " and " +
+                      std::to_string(sorted[i].second) +
+                      " have the same vertices (expected each triangle once)" + resplit);
   }
   // A point no triangle uses would be a node without stiffness (and no row in the
   // split-to-unsplit map the solver builds cell by cell).
@@ -170,7 +170,8 @@ SplitMesh readSplitMesh(const std::string& path) {
     if (!used[i])
       dict.fail("points", "key 'points': point " + std::to_string(i) +
                               " is used by no triangle (expected every point to be a vertex of "
-                              "a triangle)" + resplit);
+                              "a triangle)" +
+                              resplit);
   const auto isSide = [&](Index a, Index b) { return sides.count(sideKey(a, b)) > 0; };
   for (long r : dict.getIntList("regions")) m.triangleRegion.push_back(static_cast<int>(r));
   if (m.triangleRegion.size() != m.triangles.size())
@@ -190,7 +191,8 @@ SplitMesh readSplitMesh(const std::string& path) {
         p.fail("edges", "key 'edges': the edge (" + std::to_string(e[0]) + " " +
                             std::to_string(e[1]) +
                             ") is not a side of any triangle (expected the patch's edges to be "
-                            "triangle sides)" + resplit);
+                            "triangle sides)" +
+                            resplit);
     }
   }
 
@@ -205,18 +207,24 @@ SplitMesh readSplitMesh(const std::string& path) {
     for (long i : f.getIntList("plus")) g.plus.push_back(checkIndex(f, "plus", i));
     for (long i : f.getIntList("minus")) g.minus.push_back(checkIndex(f, "minus", i));
     for (const std::string& k : f.getWordList("kind")) {
-      if (k == "interior") g.kind.push_back(FractureNodeKind::interior);
-      else if (k == "boundary") g.kind.push_back(FractureNodeKind::boundary);
-      else if (k == "tip") g.kind.push_back(FractureNodeKind::tip);
-      else f.fail("kind", "key 'kind': '" + k + "' is not a node kind (expected interior, "
-                          "boundary or tip)");
+      if (k == "interior")
+        g.kind.push_back(FractureNodeKind::interior);
+      else if (k == "boundary")
+        g.kind.push_back(FractureNodeKind::boundary);
+      else if (k == "tip")
+        g.kind.push_back(FractureNodeKind::tip);
+      else
+        f.fail("kind", "key 'kind': '" + k +
+                           "' is not a node kind (expected interior, "
+                           "boundary or tip)");
     }
     g.arclength = f.getScalarList("arclength");
     g.normal = f.getVectorList("normal");
     g.tangent = f.getVectorList("tangent");
     const std::size_t n = g.node.size();
     for (const auto& [key, size] :
-         std::map<std::string, std::size_t>{{"plus", g.plus.size()}, {"minus", g.minus.size()},
+         std::map<std::string, std::size_t>{{"plus", g.plus.size()},
+                                            {"minus", g.minus.size()},
                                             {"kind", g.kind.size()},
                                             {"arclength", g.arclength.size()},
                                             {"normal", g.normal.size()},
@@ -229,24 +237,27 @@ SplitMesh readSplitMesh(const std::string& path) {
         f.fail("plus", "fracture node " + std::to_string(i) +
                            ": 'plus' and 'minus' must be copies of 'node' (see 'origin')");
       if ((g.plus[i] == g.minus[i]) != (g.kind[i] == FractureNodeKind::tip))
-        f.fail("kind", "fracture node " + std::to_string(i) +
-                           ": exactly the tips have plus == minus");
+        f.fail("kind",
+               "fracture node " + std::to_string(i) + ": exactly the tips have plus == minus");
       // The solver takes the frame as written: it must be one (SignConventions.hpp).
       const double tol = 1e-9;
-      if (!(std::abs(g.tangent[i].norm() - 1) <= tol) || !(std::abs(g.normal[i].norm() - 1) <= tol) ||
+      if (!(std::abs(g.tangent[i].norm() - 1) <= tol) ||
+          !(std::abs(g.normal[i].norm() - 1) <= tol) ||
           !((g.normal[i] - normalFromTangent(g.tangent[i])).norm() <= tol))
         f.fail("normal", "fracture node " + std::to_string(i) +
                              ": 'normal' and 'tangent' must be unit vectors with normal = "
-                             "(t_y, -t_x) (SignConventions.hpp)" + std::string(resplit));
-      if (!std::isfinite(g.arclength[i]) || (i == 0 ? g.arclength[i] != 0
-                                                     : !(g.arclength[i] > g.arclength[i - 1])))
+                             "(t_y, -t_x) (SignConventions.hpp)" +
+                             std::string(resplit));
+      if (!std::isfinite(g.arclength[i]) ||
+          (i == 0 ? g.arclength[i] != 0 : !(g.arclength[i] > g.arclength[i - 1])))
         f.fail("arclength", "fracture node " + std::to_string(i) +
                                 ": 'arclength' must start at 0 and grow along the fracture" +
                                 std::string(resplit));
       if (i > 0 && (!isSide(g.plus[i - 1], g.plus[i]) || !isSide(g.minus[i - 1], g.minus[i])))
         f.fail("plus", "fracture nodes " + std::to_string(i - 1) + " and " + std::to_string(i) +
                            ": their 'plus' and 'minus' copies must be joined by triangle sides "
-                           "(consecutive nodes along the fracture)" + std::string(resplit));
+                           "(consecutive nodes along the fracture)" +
+                           std::string(resplit));
     }
     if (n < 2) f.fail("node", "key 'node': expected at least two fracture nodes (one edge)");
     s.fractures.push_back(std::move(g));
@@ -272,7 +283,8 @@ std::string fileHash(const std::string& path) {
       h ^= buffer[i];
       h *= 1099511628211ull;  // FNV prime
     }
-  if (std::ferror(f.get())) throw InputError(path, std::string("cannot read: ") + std::strerror(errno));
+  if (std::ferror(f.get()))
+    throw InputError(path, std::string("cannot read: ") + std::strerror(errno));
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
   return std::string("fnv1a64:") + hex;
@@ -284,20 +296,23 @@ void checkSplitMeshCurrent(const std::string& caseDir, const SplitMesh& split) {
                            " -overwrite (then run frictionSolver again)";
   const SplitMeshRecord& made = split.madeFrom;
   if (made.empty())
-    throw InputError(splitPath, "does not record which mesh and system/meshDict it was made "
-                                "from (written by an older splitFractureNodes), so it may be "
-                                "stale" + redo);
+    throw InputError(splitPath,
+                     "does not record which mesh and system/meshDict it was made "
+                     "from (written by an older splitFractureNodes), so it may be "
+                     "stale" +
+                         redo);
   const std::string dictPath = (fs::path(caseDir) / "system" / "meshDict").string();
   if (!fs::is_regular_file(dictPath))
     throw InputError(splitPath, "was made from " + dictPath + ", which no longer exists" + redo);
   if (fileHash(dictPath) != made.meshDictHash)
     throw InputError(splitPath, "is stale: " + dictPath +
                                     " changed after the mesh was split (its hash is not the "
-                                    "recorded " + made.meshDictHash + ")" + redo);
+                                    "recorded " +
+                                    made.meshDictHash + ")" + redo);
   const std::string meshPath = (fs::path(caseDir) / made.mesh).lexically_normal().string();
   if (!fs::is_regular_file(meshPath))
-    throw InputError(splitPath, "was made from the mesh file " + meshPath +
-                                    ", which no longer exists" + redo);
+    throw InputError(splitPath,
+                     "was made from the mesh file " + meshPath + ", which no longer exists" + redo);
   if (fileHash(meshPath) != made.meshHash)
     throw InputError(splitPath, "is stale: the mesh file " + meshPath +
                                     " changed after it was split (e.g. ./Allmesh ran after "

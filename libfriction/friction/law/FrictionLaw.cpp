@@ -14,16 +14,20 @@ struct LawEntry {
 
 // The one table of friction laws: adding one is one line here.
 const LawEntry lawTable[] = {
-    {"frictionless", [](const Dictionary&) -> std::unique_ptr<FrictionLaw> {
+    {"frictionless",
+     [](const Dictionary&) -> std::unique_ptr<FrictionLaw> {
        return std::make_unique<Frictionless>();
      }},
-    {"tresca", [](const Dictionary& d) -> std::unique_ptr<FrictionLaw> {
+    {"tresca",
+     [](const Dictionary& d) -> std::unique_ptr<FrictionLaw> {
        return std::make_unique<Tresca>(d.getScalar("threshold", Bounds::positive()));
      }},
-    {"coulomb", [](const Dictionary& d) -> std::unique_ptr<FrictionLaw> {
+    {"coulomb",
+     [](const Dictionary& d) -> std::unique_ptr<FrictionLaw> {
        return std::make_unique<Coulomb>(d.getScalar("frictionCoefficient", Bounds::nonNegative()));
      }},
-    {"coulombCohesion", [](const Dictionary& d) -> std::unique_ptr<FrictionLaw> {
+    {"coulombCohesion",
+     [](const Dictionary& d) -> std::unique_ptr<FrictionLaw> {
        return std::make_unique<CoulombCohesion>(
            d.getScalar("frictionCoefficient", Bounds::nonNegative()),
            d.getScalar("cohesion", Bounds::nonNegative()));

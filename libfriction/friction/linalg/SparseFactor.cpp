@@ -173,9 +173,8 @@ FactorStatus SparseFactor::factor(const SparseMatrix& A) {
   maxAbsEntry_ = 0.0;
   for (Eigen::Index k = 0; k < A.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(A, k); it; ++it)
-      maxAbsEntry_ = std::isfinite(it.value())
-                         ? std::max(maxAbsEntry_, std::abs(it.value()))
-                         : std::numeric_limits<double>::infinity();
+      maxAbsEntry_ = std::isfinite(it.value()) ? std::max(maxAbsEntry_, std::abs(it.value()))
+                                               : std::numeric_limits<double>::infinity();
   // A non-finite entry makes every pivot meaningless: no backend is asked.
   if (!std::isfinite(maxAbsEntry_)) {
     status_ = FactorStatus::nonFinite;

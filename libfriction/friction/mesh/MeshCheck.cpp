@@ -47,12 +47,15 @@ std::vector<std::pair<Index, Index>> coincidentPoints(const Mesh& mesh) {
   struct Entry {
     std::int64_t i, j;
     Index v;
-    bool operator<(const Entry& o) const { return i != o.i ? i < o.i : j != o.j ? j < o.j : v < o.v; }
+    bool operator<(const Entry& o) const {
+      return i != o.i ? i < o.i : j != o.j ? j < o.j : v < o.v;
+    }
   };
   std::vector<Entry> grid;
   grid.reserve(static_cast<std::size_t>(n));
   for (Index v = 0; v < n; ++v)
-    if (std::isfinite(h[v])) grid.push_back({cellOf(mesh.points[v].x()), cellOf(mesh.points[v].y()), v});
+    if (std::isfinite(h[v]))
+      grid.push_back({cellOf(mesh.points[v].x()), cellOf(mesh.points[v].y()), v});
   std::sort(grid.begin(), grid.end());
   for (const Entry& e : grid)
     for (std::int64_t di = -1; di <= 1; ++di) {

@@ -181,8 +181,8 @@ void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& num
       if (count >= 2 && with[1] == t && sortedVertices(with[0]) == sortedVertices(t)) {
         const auto v = sortedVertices(t);
         scanner.failAt(numbering.triangleLine[t],
-                       "the triangle with vertices " + std::to_string(numbering.point[v[0]]) +
-                           " " + std::to_string(numbering.point[v[1]]) + " " +
+                       "the triangle with vertices " + std::to_string(numbering.point[v[0]]) + " " +
+                           std::to_string(numbering.point[v[1]]) + " " +
                            std::to_string(numbering.point[v[2]]) + " is listed twice (lines " +
                            std::to_string(numbering.triangleLine[with[0]]) + " and " +
                            std::to_string(numbering.triangleLine[t]) +

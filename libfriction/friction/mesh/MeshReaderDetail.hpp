@@ -53,7 +53,8 @@ void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, con
 
 /// Where each item of a parsed mesh came from, for the whole-mesh checks of finishMesh.
 struct FileNumbering {
-  std::vector<long long> point;  ///< per vertex, its number in the file (FreeFEM position, gmsh tag)
+  std::vector<long long>
+      point;  ///< per vertex, its number in the file (FreeFEM position, gmsh tag)
   std::vector<int> triangleLine;  ///< per triangle, its line
   std::vector<int> edgeLine;      ///< per labelled edge, its line
 };

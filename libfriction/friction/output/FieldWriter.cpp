@@ -10,8 +10,7 @@
 
 namespace friction {
 
-void writeDisplacementField(const std::string& path, const std::vector<Vector2>& u,
-                            int precision) {
+void writeDisplacementField(const std::string& path, const std::vector<Vector2>& u, int precision) {
   DictionaryWriter w("pointVectorField", "D", "displacement [m] at the split-mesh points");
   w.setPrecision(precision);
   w.entryRaw("dimensions", "[0 1 0 0 0 0 0]");

@@ -19,8 +19,7 @@
 namespace friction {
 
 /// points: split-mesh points; u: 2 values per point [m].
-void writeDisplacementField(const std::string& path, const std::vector<Vector2>& u,
-                            int precision);
+void writeDisplacementField(const std::string& path, const std::vector<Vector2>& u, int precision);
 
 struct FractureRow {
   /// residual: the friction law's residual D of the complementarity function [Pa].

@@ -1,6 +1,7 @@
-// TimeFolder: writes one time folder atomically, never in place. Files go to <case>/.<name>.partial/; commit() renames it to
-// <case>/<name>. A run that dies before commit() leaves earlier time folders untouched and no
-// half-written <name>; the destructor removes an uncommitted partial folder.
+// TimeFolder: writes one time folder atomically, never in place. Files go to
+// <case>/.<name>.partial/; commit() renames it to <case>/<name>. A run that dies before commit()
+// leaves earlier time folders untouched and no half-written <name>; the destructor removes an
+// uncommitted partial folder.
 #pragma once
 
 #include <string>

@@ -39,11 +39,20 @@ std::string xmlEscape(const std::string& s) {
   std::string out;
   for (const char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -66,8 +75,7 @@ void openArray(std::ostream& s, const char* type, const std::string& name, int c
 }
 void closeArray(std::ostream& s) { s << "        </DataArray>\n"; }
 
-const char* const kHeader =
-    "<?xml version=\"1.0\"?>\n";
+const char* const kHeader = "<?xml version=\"1.0\"?>\n";
 const char* const kFileAttributes =
     " version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
 
@@ -87,8 +95,7 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
               const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress) {
   if (u.size() != space.numDofs())
     throw std::invalid_argument("writeVtu: u has " + std::to_string(u.size()) +
-                                " values, the space " + std::to_string(space.numDofs()) +
-                                " dofs");
+                                " values, the space " + std::to_string(space.numDofs()) + " dofs");
   const Mesh& mesh = space.mesh();
   const Index numNodes = space.numNodes();
   const Index numCells = space.numCells();
@@ -100,8 +107,7 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
   s.precision(precision);
   s << kHeader << "<VTKFile type=\"UnstructuredGrid\"" << kFileAttributes << ">\n"
     << "  <UnstructuredGrid>\n"
-    << "    <Piece NumberOfPoints=\"" << numNodes << "\" NumberOfCells=\"" << numCells
-    << "\">\n";
+    << "    <Piece NumberOfPoints=\"" << numNodes << "\" NumberOfCells=\"" << numCells << "\">\n";
 
   s << "      <PointData Vectors=\"displacement\">\n";
   openArray(s, "Float64", "displacement", 3);
@@ -128,10 +134,9 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
     const double sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
     s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
       << finite(sxy) << " 0 0\n";
-    const double vonMises = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) +
-                                             (syy - szz) * (syy - szz) +
-                                             (szz - sxx) * (szz - sxx)) +
-                                      3.0 * sxy * sxy);
+    const double vonMises = std::sqrt(
+        0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+        3.0 * sxy * sxy);
     vm << "          " << finite(vonMises) << "\n";
     const int r = static_cast<std::size_t>(c) < mesh.triangleRegion.size()
                       ? mesh.triangleRegion[static_cast<std::size_t>(c)]
@@ -184,7 +189,8 @@ void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& r
   std::ostringstream s;
   s.precision(precision);
   s << kHeader
-    << "<!-- fracture table as a polyline; point array state: 0 stick, 1 slip, 2 open, 3 tip (no traction: nan) -->\n"
+    << "<!-- fracture table as a polyline; point array state: 0 stick, 1 slip, 2 open, 3 tip (no "
+       "traction: nan) -->\n"
     << "<VTKFile type=\"PolyData\"" << kFileAttributes << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\""
@@ -297,8 +303,8 @@ std::string xmlUnescape(const std::string& s) {
 // or the time is not a number.
 std::string timeNameIn(const std::string& file, const std::string& prefix,
                        const std::string& suffix) {
-  if (file.size() <= prefix.size() + 1 + suffix.size() || file.compare(0, prefix.size(), prefix) != 0 ||
-      file[prefix.size()] != '_' ||
+  if (file.size() <= prefix.size() + 1 + suffix.size() ||
+      file.compare(0, prefix.size(), prefix) != 0 || file[prefix.size()] != '_' ||
       file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0)
     return "";
   const std::string name =
@@ -340,7 +346,8 @@ int VtkSeries::resume(const std::function<bool(const std::string&)>& keep,
 
   // Every file of this layout whose time is dropped (whether or not the .pvd listed it).
   int removed = 0;
-  const auto sweep = [&](const fs::path& folder, const std::string& prefix, const std::string& suffix) {
+  const auto sweep = [&](const fs::path& folder, const std::string& prefix,
+                         const std::string& suffix) {
     std::vector<fs::path> doomed;
     for (const auto& e : fs::directory_iterator(folder, ec)) {
       const std::string name = timeNameIn(e.path().filename().string(), prefix, suffix);
@@ -373,7 +380,7 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
   fs::create_directories(fs::path(vtkDir_) / "fractures", ec);
   if (ec)
     throw OutputError((fs::path(vtkDir_) / "fractures").string(),
-                     "cannot create the VTK output folder (" + ec.message() + ")");
+                      "cannot create the VTK output folder (" + ec.message() + ")");
 
   PvdTime entry;
   entry.time = time;

@@ -68,8 +68,7 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 ///  2 open, 3 tip; see vtkStateCode).
 /// The file also says the state coding in an XML comment. No rows: an empty data set (no
 /// points, no line). The folder must exist.
-void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows,
-                      int precision);
+void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision);
 
 /// One time of a .pvd collection.
 struct PvdTime {

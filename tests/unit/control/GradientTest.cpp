@@ -16,7 +16,6 @@ using friction::test::SyntheticResponse;
 
 namespace {
 
-
 // Smallest distance of any node from a kink of D (|N| = ρ, or ρ = 0), relative to ρ's scale.
 double kinkMargin(const ControlState& s, double gamma) {
   double m = 1e300;

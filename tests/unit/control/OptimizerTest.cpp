@@ -9,8 +9,8 @@
 #include "friction/dict/Dictionary.hpp"
 
 using namespace friction;
-using friction::test::SyntheticResponse;
 using Eigen::VectorXd;
+using friction::test::SyntheticResponse;
 
 namespace {
 
@@ -36,15 +36,14 @@ std::string typeOf(const std::string& setting) { return setting.substr(0, settin
 // iterations to reach 1e-9 (measured), hence the iteration limit of the tests.
 std::unique_ptr<Optimizer> make(const std::string& setting, int iterationLimit) {
   const std::string type = typeOf(setting);
-  const std::string alpha =
-      type == "semismoothNewton" ? ""
-      : type == "armijo"         ? "alpha 1;"
-      : type == "steepestDescent" ? "alpha 1e-4;"
-                                  : "alpha 1e-3;";
-  Dictionary d = Dictionary::parse("type " + setting + "; " + alpha +
-                                       " tolerance 1e-9; maxIterations " +
-                                       std::to_string(iterationLimit) + ";",
-                                   "test");
+  const std::string alpha = type == "semismoothNewton"  ? ""
+                            : type == "armijo"          ? "alpha 1;"
+                            : type == "steepestDescent" ? "alpha 1e-4;"
+                                                        : "alpha 1e-3;";
+  Dictionary d =
+      Dictionary::parse("type " + setting + "; " + alpha + " tolerance 1e-9; maxIterations " +
+                            std::to_string(iterationLimit) + ";",
+                        "test");
   auto opt = Optimizer::New(d);
   d.checkAllRead();  // every key above is one the optimizer reads: no setting silently ignored
   return opt;
@@ -67,7 +66,8 @@ TEST_CASE("every optimizer solves the synthetic Coulomb problem", "[control][opt
   for (const std::string& setting : settings) {
     DYNAMIC_SECTION(setting) {
       SyntheticResponse r(6, 21);
-      ControlProblem p(r, VectorXd::Constant(6, 0.4), VectorXd::Zero(6), 2.0, 0.0, GradientKind::exact);
+      ControlProblem p(r, VectorXd::Constant(6, 0.4), VectorXd::Zero(6), 2.0, 0.0,
+                       GradientKind::exact);
       auto opt = make(setting, maxIterations);
       VectorXd beta = VectorXd::Zero(6);
       const OptimizerReport rep = opt->minimize(p, beta);
@@ -89,7 +89,8 @@ TEST_CASE("every optimizer solves the synthetic Coulomb problem", "[control][opt
 TEST_CASE("all optimizers agree on the solution", "[control][optimizer]") {
   const auto solve = [](const std::string& setting) {
     SyntheticResponse r(6, 5);
-    ControlProblem p(r, VectorXd::Constant(6, 0.4), VectorXd::Zero(6), 2.0, 0.0, GradientKind::exact);
+    ControlProblem p(r, VectorXd::Constant(6, 0.4), VectorXd::Zero(6), 2.0, 0.0,
+                     GradientKind::exact);
     VectorXd beta = VectorXd::Zero(6);
     CHECK(make(setting, maxIterations)->minimize(p, beta).status == OptimizerStatus::converged);
     return beta;

@@ -1,5 +1,5 @@
-// Manufactured solution (docs/method.md §10): u = (sin πx sin πy, x² y³) on the unit square with the
-// body force from Hooke's law and Dirichlet data on all sides. Observed orders on four
+// Manufactured solution (docs/method.md §10): u = (sin πx sin πy, x² y³) on the unit square with
+// the body force from Hooke's law and Dirichlet data on all sides. Observed orders on four
 // refinements: P1 → 2 in L², 1 in H¹; P2 → 3 in L², 2 in H¹.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -28,7 +28,8 @@ TEST_CASE("fracture ends on a Dirichlet patch hold their jump at zero", "[fractu
     // A slip imposed everywhere moves both copies of the held node alike.
     sys.dirichlet().setPatchValue(1, Vector2(0, 0));
     sys.dirichlet().setPatchValue(4, Vector2(0, 0));
-    sys.setStep(Eigen::VectorXd::Zero(sys.splitSpace().numDofs()), Eigen::VectorXd::Zero(sys.size()));
+    sys.setStep(Eigen::VectorXd::Zero(sys.splitSpace().numDofs()),
+                Eigen::VectorXd::Zero(sys.size()));
     Eigen::VectorXd tau, sigmaN;
     sys.primal(Eigen::VectorXd::Constant(sys.size(), 1e-3), tau, sigmaN);
     const Eigen::VectorXd u = sys.lastSplitDisplacement();

@@ -48,7 +48,8 @@ double kinkMargin(const ControlState& s, double gamma) {
 
 }  // namespace
 
-TEST_CASE("the finite-element gradient of J matches finite differences", "[control][gradient][fe]") {
+TEST_CASE("the finite-element gradient of J matches finite differences",
+          "[control][gradient][fe]") {
   for (int degree : {1, 2}) {
     for (const char* law : {"coulomb", "tresca"}) {
       DYNAMIC_SECTION("P" << degree << " " << law) {
@@ -69,7 +70,8 @@ TEST_CASE("the finite-element gradient of J matches finite differences", "[contr
           for (const auto& c : s.node) slipping += c.state == SlipState::slip;
           const VectorXd d = VectorXd::NullaryExpr(n, [&] { return u(rng); });
           const double eps = 1e-7;
-          const double fd = (p.evaluate(beta + eps * d).J - p.evaluate(beta - eps * d).J) / (2 * eps);
+          const double fd =
+              (p.evaluate(beta + eps * d).J - p.evaluate(beta - eps * d).J) / (2 * eps);
           // J is piecewise quadratic and β ± εd stays in one piece: the central difference
           // is exact up to cancellation, ~1e-16 J / ε relative.
           CHECK(p.dot(p.gradient(s), d) == Approx(fd).epsilon(1e-6));

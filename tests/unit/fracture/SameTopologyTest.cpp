@@ -1,14 +1,14 @@
 // A FreeFEM mesh and a gmsh mesh of the same geometry (the paper benchmark: unit square cut
 // across its whole width at y = 0.5) split into the same topology: one fracture, no tip,
 // every node duplicated, ends on the left and right patches, the body cut in two, n_Γ = (0 -1).
-#include <catch2/catch.hpp>
 #include <gmsh.h>
+#include <catch2/catch.hpp>
 
+#include <unistd.h>
 #include <filesystem>
 #include <functional>
 #include <numeric>
 #include <set>
-#include <unistd.h>
 
 #include "TestMeshes.hpp"
 #include "friction/fracture/SplitMesh.hpp"
@@ -27,12 +27,18 @@ struct Topology {
   std::map<std::string, double> patchLength;
 };
 
-
 Topology topologyOf(const Mesh& mesh, int fractureLabel) {
   const SplitMesh s = splitFractures(mesh, {{"fracture", fractureLabel, {}}});
   const FractureGeometry& g = s.fractures.at(0);
-  Topology t{g.numNodes(), g.numDuplicated(), g.numTips(), g.kind.front(), g.kind.back(),
-             g.length(), test::connectedComponents(s.mesh), g.normal[g.numNodes() / 2], {}};
+  Topology t{g.numNodes(),
+             g.numDuplicated(),
+             g.numTips(),
+             g.kind.front(),
+             g.kind.back(),
+             g.length(),
+             test::connectedComponents(s.mesh),
+             g.normal[g.numNodes() / 2],
+             {}};
   for (std::size_t e = 0; e < s.mesh.edges.size(); ++e)
     t.patchLength[s.mesh.labelNames.at(s.mesh.edgeLabel[e])] +=
         (s.mesh.points[s.mesh.edges[e][1]] - s.mesh.points[s.mesh.edges[e][0]]).norm();
@@ -76,12 +82,12 @@ std::string writeGmshSquare(const std::string& path) {
 
 TEST_CASE("FreeFEM and gmsh meshes of the paper benchmark split into the same topology",
           "[split][gmsh][freefem]") {
-  Mesh freefem = readMesh(std::string(FRICTION_SOURCE_DIR) +
-                          "/cases/paperBenchmark/constant/mesh/square.msh");
+  Mesh freefem =
+      readMesh(std::string(FRICTION_SOURCE_DIR) + "/cases/paperBenchmark/constant/mesh/square.msh");
   freefem.labelNames = {{1, "bottom"}, {2, "right"}, {3, "top"}, {4, "left"}, {5, "fracture"}};
 
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("friction-topology-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("friction-topology-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const Mesh gmshMesh = readMesh(writeGmshSquare((dir / "square.msh").string()));
   std::filesystem::remove_all(dir);

@@ -2,12 +2,12 @@
 // refusals. Sign conventions under test: SignConventions.hpp.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <numeric>
 #include <set>
-#include <unistd.h>
 
 #include "TestMeshes.hpp"
 #include "friction/fracture/SplitMesh.hpp"
@@ -19,9 +19,9 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-
 Vector2 centroid(const Mesh& m, Index t) {
-  return (m.points[m.triangles[t][0]] + m.points[m.triangles[t][1]] + m.points[m.triangles[t][2]]) / 3;
+  return (m.points[m.triangles[t][0]] + m.points[m.triangles[t][1]] + m.points[m.triangles[t][2]]) /
+         3;
 }
 
 // Every triangle that touches a fracture node uses the copy of its own side: the plus copy
@@ -62,8 +62,7 @@ std::string splitError(const Mesh& m, const std::vector<FractureSpec>& specs) {
 
 }  // namespace
 
-TEST_CASE("a fracture across the whole width duplicates every node, ends included",
-          "[split]") {
+TEST_CASE("a fracture across the whole width duplicates every node, ends included", "[split]") {
   const int n = 8;
   Mesh m = gridMesh(n);
   addHorizontalFracture(m, n, n / 2, 0, n, 5, "fracture");
@@ -198,8 +197,9 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
     addHorizontalFracture(m, n, 4, 0, n, 5, "fracture");
     m.edges.push_back({gridNode(n, 4, 4), gridNode(n, 4, 5)});
     m.edgeLabel.push_back(5);
-    CHECK_THAT(splitError(m, {{"fracture", 5, {}}}),
-               Contains("branches at (0.5 0.5)") && Contains("junctions of fractures are not supported"));
+    CHECK_THAT(
+        splitError(m, {{"fracture", 5, {}}}),
+        Contains("branches at (0.5 0.5)") && Contains("junctions of fractures are not supported"));
   }
   SECTION("two fractures that meet") {
     Mesh m = gridMesh(n);
@@ -220,8 +220,7 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
   }
   SECTION("a fracture on the outer boundary") {
     Mesh m = gridMesh(n);
-    CHECK_THAT(splitError(m, {{"bottom", 1, {}}}),
-               Contains("outer boundary") && Contains("grid8"));
+    CHECK_THAT(splitError(m, {{"bottom", 1, {}}}), Contains("outer boundary") && Contains("grid8"));
   }
   SECTION("a closed fracture") {
     Mesh m = gridMesh(n);
@@ -257,8 +256,8 @@ TEST_CASE("the split mesh file reads back to the same split mesh", "[split][io]"
   addHorizontalFracture(m, n, 3, 1, 5, 5, "crack");
   m.labelNames[5] = "crack";
   const SplitMesh s = splitFractures(m, {{"crack", 5, {}}});
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("friction-splitio-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("friction-splitio-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "splitMesh").string();
   writeSplitMesh(s, path);

@@ -57,7 +57,9 @@ inline void addHorizontalFracture(Mesh& m, int n, int j, int i0, int i1, int lab
 inline int connectedComponents(const Mesh& m) {
   std::vector<int> parent(m.numPoints());
   std::iota(parent.begin(), parent.end(), 0);
-  std::function<int(int)> find = [&](int i) { return parent[i] == i ? i : parent[i] = find(parent[i]); };
+  std::function<int(int)> find = [&](int i) {
+    return parent[i] == i ? i : parent[i] = find(parent[i]);
+  };
   for (const auto& t : m.triangles) {
     parent[find(t[0])] = find(t[1]);
     parent[find(t[1])] = find(t[2]);

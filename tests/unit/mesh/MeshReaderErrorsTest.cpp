@@ -492,9 +492,8 @@ TEST_CASE("mesh: a triangle listed twice is rejected at its second line", "[mesh
 TEST_CASE("mesh: a side shared by three triangles is rejected", "[mesh][errors]") {
   TempDir dir;
   // Vertex 5 at (2, 0.5): triangle 1 5 3 is counter-clockwise and a third one on side 1-3.
-  const std::string text =
-      replaceLine(replaceLine(replaceLine(freeFem, 1, "5 3 4"), 5, "0 1 3\n2 0.5 0"), 8,
-                  "1 3 4 1\n1 5 3 1");
+  const std::string text = replaceLine(
+      replaceLine(replaceLine(freeFem, 1, "5 3 4"), 5, "0 1 3\n2 0.5 0"), 8, "1 3 4 1\n1 5 3 1");
   requireReadError(dir, "three.msh", text, 9,
                    {"is a side of a third triangle here (the others are at lines 7 and 8)"});
 }
@@ -513,7 +512,7 @@ TEST_CASE("mesh: a labelled edge that is no side of any triangle is rejected", "
         "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
         "$Entities\n1 1 1 0\n1 2 2 0 0\n1 0 0 0 1 0 0 1 7 0\n1 0 0 0 1 1 0 1 1 0\n$EndEntities\n"
         "$Nodes\n2 5 10 50\n2 1 0 4\n10\n20\n30\n40\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
-        "0 1 0 1\n50\n2 2 0\n$EndNodes\n"                     // lines 10-24
+        "0 1 0 1\n50\n2 2 0\n$EndNodes\n"                  // lines 10-24
         "$Elements\n2 4 1 5\n1 1 1 2\n1 10 20\n4 10 50\n"  // lines 25-29
         "2 1 2 2\n2 10 20 30\n3 10 30 40\n$EndElements\n";
     requireReadError(dir, "stray41.msh", text, 29,
@@ -526,10 +525,11 @@ TEST_CASE("mesh: a labelled edge that is no side of any triangle is rejected", "
 TEST_CASE("mesh: an edge listed twice with one label is rejected", "[mesh][errors]") {
   TempDir dir;
   // Its boundary load would count twice. The same edge with another label is two patches.
-  requireReadError(dir, "edge2.msh", replaceLine(replaceLine(freeFem, 1, "4 2 5"), 11, "4 1 4\n2 1 1"),
-                   12, {"is listed twice with label 1 (lines 8 and 12)"});
-  const Mesh m = readMesh(dir.write("edge2ok.msh",
-                                    replaceLine(replaceLine(freeFem, 1, "4 2 5"), 11, "4 1 4\n2 1 9")));
+  requireReadError(dir, "edge2.msh",
+                   replaceLine(replaceLine(freeFem, 1, "4 2 5"), 11, "4 1 4\n2 1 1"), 12,
+                   {"is listed twice with label 1 (lines 8 and 12)"});
+  const Mesh m = readMesh(
+      dir.write("edge2ok.msh", replaceLine(replaceLine(freeFem, 1, "4 2 5"), 11, "4 1 4\n2 1 9")));
   CHECK(m.edges.size() == 5);
 }
 

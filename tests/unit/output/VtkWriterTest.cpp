@@ -26,15 +26,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kGrid = 4;              // 4 x 4 cells of the unit square, 32 triangles
-constexpr double kFractureY = 0.5;    // fracture along grid row 2, across the whole width
-constexpr int kFracturePoints = 7;    // synthetic fracture table rows
+constexpr int kGrid = 4;            // 4 x 4 cells of the unit square, 32 triangles
+constexpr double kFractureY = 0.5;  // fracture along grid row 2, across the whole width
+constexpr int kFracturePoints = 7;  // synthetic fracture table rows
 constexpr double kE = 2.0e10, kNu = 0.25;
 // u = t (A x + b + c [x in Ω⁺]): linear on each side, so the FE stress is exact; the jump c
 // makes the two coincident copies of each fracture node differ.
 const double kA[4] = {2.0e-3, -2.0e-4, 5.0e-4, -3.0e-3};  // A = [[a11 a12] [a21 a22]]
-const double kB[2] = {1.0e-2, -2.0e-2};                    // [m]
-const double kC[2] = {4.0e-3, 1.0e-3};                     // jump [m]
+const double kB[2] = {1.0e-2, -2.0e-2};                   // [m]
+const double kC[2] = {4.0e-3, 1.0e-3};                    // jump [m]
 
 /// The rows readVtk.py expects (keep in step with fractureRows there), scaled by t except
 /// s and ST.
@@ -71,8 +71,8 @@ Eigen::VectorXd linearField(const LagrangeSpace& space, double t) {
   const Mesh& mesh = space.mesh();
   for (Index c = 0; c < space.numCells(); ++c) {
     const auto& tri = mesh.triangles[static_cast<std::size_t>(c)];
-    const double yc = (mesh.points[tri[0]].y() + mesh.points[tri[1]].y() +
-                       mesh.points[tri[2]].y()) / 3;
+    const double yc =
+        (mesh.points[tri[0]].y() + mesh.points[tri[1]].y() + mesh.points[tri[2]].y()) / 3;
     const double plus = yc > kFractureY ? 1.0 : 0.0;
     for (const Index n : space.cellNodes(c)) {
       const Vector2& x = space.coordinate(n);
@@ -100,8 +100,7 @@ std::string readFile(const fs::path& p) {
 
 int countOf(const std::string& text, const std::string& what) {
   int n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-    ++n;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
 }
 
@@ -160,10 +159,10 @@ TEST_CASE("VTK output of a linear field on a split mesh reads back in VTK with e
   cmd.precision(17);
   cmd << "/usr/bin/python3 '" << script.string() << "' '" << series.pvdPath() << "'"
       << " --E " << kE << " --nu " << kNu << (planeStress ? " --planeStress" : "") << " --A "
-      << kA[0] << " " << kA[1] << " " << kA[2] << " " << kA[3] << " --b " << kB[0] << " "
-      << kB[1] << " --jump " << kC[0] << " " << kC[1] << " --fractureY " << kFractureY
-      << " --points " << wantPoints << " --cells 32 --degree " << degree
-      << " --fracturePoints " << kFracturePoints << " --times 2"
+      << kA[0] << " " << kA[1] << " " << kA[2] << " " << kA[3] << " --b " << kB[0] << " " << kB[1]
+      << " --jump " << kC[0] << " " << kC[1] << " --fractureY " << kFractureY << " --points "
+      << wantPoints << " --cells 32 --degree " << degree << " --fracturePoints " << kFracturePoints
+      << " --times 2"
       << " > '" << (dir / "readVtk.log").string() << "' 2>&1";
   const int status = std::system(cmd.str().c_str());
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
