@@ -138,6 +138,17 @@ TEST_CASE("paper benchmark: Coulomb holds, slip only where ST reaches mu_f",
   CHECK(rows.front().state == "stick");
   CHECK(rows.back().state == "stick");
   CHECK(rows[rows.size() / 2].state == "slip");
+  // The case README states the slipping nodes as 0.125 ≤ x ≤ 0.875 (n = 40, spacing 0.025):
+  // the slipping set is one interval between those nodes. Half a spacing of slack, since
+  // the set is discrete.
+  double xMin = 1, xMax = 0;
+  for (const Row& r : rows)
+    if (r.state == "slip") xMin = std::min(xMin, r.x), xMax = std::max(xMax, r.x);
+  CHECK(std::abs(xMin - 0.125) < 0.0125);
+  CHECK(std::abs(xMax - 0.875) < 0.0125);
+  int inside = 0;
+  for (const Row& r : rows) inside += r.x >= xMin && r.x <= xMax;
+  CHECK(inside == slipping);  // every node of the interval slips: no stick node inside it
 }
 
 TEST_CASE("paper benchmark: the slip converges under mesh refinement", "[regression][paper]") {
