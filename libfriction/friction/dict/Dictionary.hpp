@@ -31,11 +31,9 @@
 
 #include <array>
 #include <limits>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "friction/core/InputError.hpp"

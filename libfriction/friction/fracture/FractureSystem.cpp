@@ -2,8 +2,6 @@
 // traction recovery from the split residual (53). See FractureSystem.hpp.
 #include "friction/fracture/FractureSystem.hpp"
 
-#include <set>
-
 #include "friction/core/Assert.hpp"
 
 namespace friction {

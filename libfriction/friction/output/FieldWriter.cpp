@@ -2,7 +2,6 @@
 #include "friction/output/FieldWriter.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "friction/core/AtomicFile.hpp"

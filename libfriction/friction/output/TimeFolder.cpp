@@ -1,7 +1,6 @@
 // Atomic time folders: see TimeFolder.hpp.
 #include "friction/output/TimeFolder.hpp"
 
-#include <cstdio>
 #include <filesystem>
 #include <system_error>
 #include <vector>

@@ -6,9 +6,6 @@
 
 #include <unistd.h>
 #include <filesystem>
-#include <functional>
-#include <numeric>
-#include <set>
 
 #include "TestMeshes.hpp"
 #include "friction/fracture/SplitMesh.hpp"

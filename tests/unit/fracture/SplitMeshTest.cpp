@@ -5,9 +5,6 @@
 #include <unistd.h>
 #include <cmath>
 #include <filesystem>
-#include <functional>
-#include <numeric>
-#include <set>
 
 #include "TestMeshes.hpp"
 #include "friction/fracture/SplitMesh.hpp"
