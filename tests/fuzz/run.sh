@@ -66,7 +66,7 @@ for target in "${targets[@]}"; do
   rc=$?
   # Executions: the final stats (one process), or the sum over fork mode's jobs.
   grep -E "^(Done [0-9]+ runs|stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb)" "$work/log"
-  grep -E "^#[0-9]+: cov: .* exec/s: " "$work/log" | tail -n 1
+  grep -E "^#[0-9]+: cov: .* exec/s" "$work/log" | tail -n 1
   findings=$(ls "$work/artifacts")
   if [ "$rc" -ne 0 ] || [ -n "$findings" ]; then
     status=1
