@@ -28,6 +28,8 @@
 #include <cctype>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -147,6 +149,11 @@ void solve(const std::string& dir) {
   c.run(log);
 }
 
+bool verbose() {
+  static const bool v = std::getenv("FRICTION_FUZZ_VERBOSE") != nullptr;
+  return v;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -156,14 +163,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (text.find(device) != std::string::npos) return 0;
   const auto files = unpack(text);
   if (files.empty() || !write(files)) return 0;
-  if (requestedIterations() > maxIterations) return 0;
+  if (requestedIterations() > maxIterations) {
+    if (verbose()) std::fprintf(stderr, "fuzzCase: skipped (maxIterations over %ld)\n", maxIterations);
+    return 0;
+  }
   const std::string dir = caseDir().string();
   try {
     if (!files.count("constant/splitMesh") && !split(dir)) return 0;
     solve(dir);
-  } catch (const InputError&) {
-  } catch (const std::exception&) {
-    // The mains' last resort (message, exit code): not a finding of this target.
+  } catch (const std::exception& e) {
+    // InputError, or the mains' last resort (message, exit code): not a finding of this
+    // target. FRICTION_FUZZ_VERBOSE=1 prints what a main would, to follow one input.
+    if (verbose()) std::fprintf(stderr, "fuzzCase: error: %s\n", e.what());
   }
+  if (verbose()) std::fprintf(stderr, "fuzzCase: ran to the end\n");
   return 0;
 }

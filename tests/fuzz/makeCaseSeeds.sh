@@ -25,12 +25,13 @@ coarse=(-setnumber a 0.2 -setnumber h 0.1 -setnumber hFar 0.4 -setnumber dMin 0.
 gmsh -2 -format msh41 "${coarse[@]}" "$geo" -o "$work/crack41.msh" >/dev/null
 gmsh -2 -format msh22 "${coarse[@]}" "$geo" -o "$work/crack22.msh" >/dev/null
 
-# case FOLDER SEED: pack every file of FOLDER (sorted) into corpus/case/SEED.
+# pack FOLDER SEED: pack every file of FOLDER (sorted) into corpus/case/SEED.
 pack() {
   local dir=$1 seed=$2
   (cd "$dir" && find . -type f | LC_ALL=C sort | sed 's|^\./||' | while read -r f; do
     printf '==> %s\n' "$f"
     cat "$f"
+    [ -z "$(tail -c 1 "$f")" ] || echo  # the next header starts a line
   done) >"$out/$seed"
 }
 

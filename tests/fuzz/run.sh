@@ -20,6 +20,8 @@ repo="$(cd "$here/../.." && pwd)"
 seconds="${1:-60}"
 build="${2:-$repo/build/fuzz}"
 shift 2 2>/dev/null || shift $#
+# Absolute: the targets run from their work folders below.
+mkdir -p "$build" && build="$(cd "$build" && pwd)"
 targets=("$@")
 ((${#targets[@]})) || targets=(fuzzDictionary fuzzMesh fuzzCase)
 cxx="${FRICTION_FUZZ_CXX:-clang++-14}"
@@ -47,7 +49,7 @@ for target in "${targets[@]}"; do
   case "$target" in
     fuzzDictionary) corpus=dictionary ;;
     fuzzMesh) corpus=mesh ;;
-    fuzzCase) corpus=case; dict=(-dict="$here/case.dict") ;;
+    fuzzCase) corpus=case; dict=(-dict="$here/case.dict" -max_len=16384) ;;
     *) echo "run.sh: unknown target '$target' (fuzzDictionary, fuzzMesh, fuzzCase)" >&2; exit 2 ;;
   esac
   work="$build/run/$target"
@@ -64,7 +66,7 @@ for target in "${targets[@]}"; do
   rc=$?
   # Executions: the final stats (one process), or the sum over fork mode's jobs.
   grep -E "^(Done [0-9]+ runs|stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb)" "$work/log"
-  grep -E "^#[0-9]+: cov: .* exec/s: " "$work/log" | tail -n 1
+  grep -E "^#[0-9]+: cov: .* exec/s" "$work/log" | tail -n 1
   findings=$(ls "$work/artifacts")
   if [ "$rc" -ne 0 ] || [ -n "$findings" ]; then
     status=1

@@ -14,14 +14,18 @@ import sys
 
 
 def unpack(data: bytes):
+    """As fuzzCase.cpp's unpack: every line keeps its newline (a file's last line too)."""
     files, current = {}, None
-    for line in data.split(b"\n"):
+    # Only "\n" ends a line (bytes.splitlines would also split at "\r").
+    pieces = data.split(b"\n")
+    lines = [p + b"\n" for p in pieces[:-1]] + ([pieces[-1]] if pieces[-1] else [])
+    for line in lines:
         if line.startswith(b"==> "):
-            current = line[4:].decode("latin-1")
-            files[current] = []
+            current = line[4:].rstrip(b"\n").decode("latin-1")
+            files[current] = b""
         elif current is not None:
-            files[current].append(line)
-    return {p: b"\n".join(lines) for p, lines in files.items()}
+            files[current] += line
+    return files
 
 
 def main():

@@ -60,7 +60,7 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
       if (m.edgeLabel[e] == label) edges.push_back({m.edges[e][0], m.edges[e][1]});
     const bool isFracture =
         std::any_of(split.fractures.begin(), split.fractures.end(),
-                    [&](const FractureGeometry& g) { return g.label == label; });
+                    [&, l = label](const FractureGeometry& g) { return g.label == l; });
     if (isFracture) continue;  // its edges live in 'fractures'
     w.beginDict(name);
     w.entry("label", label);
