@@ -164,7 +164,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto files = unpack(text);
   if (files.empty() || !write(files)) return 0;
   if (requestedIterations() > maxIterations) {
-    if (verbose()) std::fprintf(stderr, "fuzzCase: skipped (maxIterations over %ld)\n", maxIterations);
+    if (verbose())
+      std::fprintf(stderr, "fuzzCase: skipped (maxIterations over %ld)\n", maxIterations);
     return 0;
   }
   const std::string dir = caseDir().string();
