@@ -10,6 +10,10 @@
 # Usage: noDataLoss.sh BIN_DIR SOURCE_DIR WORK_DIR SCENARIO [KILL_AT_RENAME_LIBRARY]
 set -uo pipefail
 bin=$1 src=$2 work=$3 scenario=$4 killLib=${5:-}
+# A sanitized solver (FRICTION_SANITIZE) needs the ASan runtime first among the preloaded
+# libraries, before the rename() hook.
+asanLib=$(ldd "$bin/frictionSolver" 2>/dev/null | awk '/libasan/ {print $3}')
+preload="${asanLib:+$asanLib }$killLib"
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL [$scenario]: $*"; exit 1; }
 
@@ -97,7 +101,7 @@ killRestart)
     label=kill$((++n))  # (a folder name must not contain the text looked for)
     makeCase "$work/$label" $steps
     c=$work/$label/case
-    FRICTION_KILL_AT_RENAME=$point LD_PRELOAD=$killLib "$bin/frictionSolver" -case "$c" >"$c/log.1" 2>&1
+    FRICTION_KILL_AT_RENAME=$point LD_PRELOAD=$preload "$bin/frictionSolver" -case "$c" >"$c/log.1" 2>&1
     rc=$?
     ((rc == 137)) || fail "[$point] not killed (exit $rc): nothing was tested"
     [[ -n $(cd "$c" && find . -name '.?*') ]] || fail "[$point] the kill left nothing half-written: nothing was tested"
