@@ -165,7 +165,9 @@ OptimizerReport Armijo::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
     for (int b = 0; b < maxBacktracks_; ++b) {
       const Eigen::VectorXd next = s.beta - alpha * g;
       ControlState trial = p.evaluate(next);
-      if (std::isfinite(trial.J) && trial.J <= s.J - c_ * alpha * g2) {
+      // Strictly lower J as well: once c·α·‖g‖² is below J's round-off, an equal J would pass
+      // the Armijo test and the iteration would stand still until maxIterations.
+      if (std::isfinite(trial.J) && trial.J < s.J && trial.J <= s.J - c_ * alpha * g2) {
         lastStep = p.norm(trial.beta - s.beta);
         s = std::move(trial);
         accepted = true;
@@ -284,7 +286,7 @@ OptimizerReport Lbfgs::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
     bool accepted = false;
     for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
       ControlState trial = p.evaluate(s.beta + t * d);
-      if (std::isfinite(trial.J) && trial.J <= s.J + 1e-4 * t * slope) {
+      if (std::isfinite(trial.J) && trial.J < s.J && trial.J <= s.J + 1e-4 * t * slope) {
         const Eigen::VectorXd gNew = p.gradient(trial);
         const Eigen::VectorXd sv = trial.beta - s.beta, y = gNew - g;
         const double sy = p.dot(sv, y);
