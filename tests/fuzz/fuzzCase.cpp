@@ -130,10 +130,17 @@ long requestedIterations() {
 // What splitFractureNodes does, up to the file. False: the input is skipped (too large).
 bool split(const std::string& dir) {
   const MeshSettings settings = MeshSettings::read(dir);
+  // As the utility does: the record of what the split is made from (without it the solver
+  // refuses the split mesh as stale), and the checks of hidden cuts and unlabelled edges.
+  SplitMeshRecord madeFrom{settings.meshEntry, fileHash(settings.meshFile),
+                           fileHash(settings.dictPath)};
   Mesh mesh = readMesh(settings.meshFile);
   if (mesh.numPoints() > maxPoints || mesh.numTriangles() > maxTriangles) return false;
   settings.nameLabels(mesh);
-  const SplitMesh s = splitFractures(mesh, settings.fractureSpecs(mesh));
+  const std::vector<FractureSpec> specs = settings.fractureSpecs(mesh);
+  settings.checkMesh(mesh);
+  SplitMesh s = splitFractures(mesh, specs);
+  s.madeFrom = std::move(madeFrom);
   writeSplitMesh(s, (fs::path(dir) / "constant" / "splitMesh").string());
   return true;
 }
