@@ -144,17 +144,6 @@ std::vector<FractureSpec> MeshSettings::fractureSpecs(const Mesh& mesh) const {
   return specs;
 }
 
-namespace {
-
-std::string pointText(const Vector2& p) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "(" << p.x() << " " << p.y() << ")";
-  return s.str();
-}
-
-}  // namespace
-
 MeshSettings::MeshFindings MeshSettings::checkMesh(Mesh& mesh) const {
   MeshFindings found;
   found.coincident = coincidentPoints(mesh);
@@ -162,7 +151,7 @@ MeshSettings::MeshFindings MeshSettings::checkMesh(Mesh& mesh) const {
     std::string where;
     const std::size_t shown = std::min<std::size_t>(found.coincident.size(), 5);
     for (std::size_t i = 0; i < shown; ++i)
-      where += (i ? ", " : "") + pointText(mesh.points[found.coincident[i].first]);
+      where += (i ? ", " : "") + formatPoint(mesh.points[found.coincident[i].first]);
     if (shown < found.coincident.size()) where += ", ...";
     throw InputError(
         mesh.source,
@@ -185,8 +174,8 @@ MeshSettings::MeshFindings MeshSettings::checkMesh(Mesh& mesh) const {
     std::string where;
     const std::size_t shown = std::min<std::size_t>(found.unlabelled.size(), 3);
     for (std::size_t i = 0; i < shown; ++i)
-      where += std::string(i ? ", " : "") + pointText(mesh.points[found.unlabelled[i][0]]) + "-" +
-               pointText(mesh.points[found.unlabelled[i][1]]);
+      where += std::string(i ? ", " : "") + formatPoint(mesh.points[found.unlabelled[i][0]]) + "-" +
+               formatPoint(mesh.points[found.unlabelled[i][1]]);
     if (shown < found.unlabelled.size()) where += ", ...";
     std::ostringstream len;
     len.precision(6);

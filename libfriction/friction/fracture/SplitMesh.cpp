@@ -16,18 +16,6 @@ namespace friction {
 
 namespace {
 
-std::string fmtPoint(const Vector2& p) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "(" << p.x() << " " << p.y() << ")";
-  return s.str();
-}
-
-std::uint64_t edgeKey(Index a, Index b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
-
 // Minimal union-find over a few dozen triangles around one node.
 struct UnionFind {
   std::vector<int> parent;
@@ -84,7 +72,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
   for (Index t = 0; t < mesh.numTriangles(); ++t) {
     const auto& tri = mesh.triangles[t];
     for (int k = 0; k < 3; ++k) {
-      EdgeTriangles& e = sides[edgeKey(tri[k], tri[(k + 1) % 3])];
+      EdgeTriangles& e = sides[sideKey(tri[k], tri[(k + 1) % 3])];
       if (e.count < 2) e.tri[e.count] = t;
       ++e.count;
     }
@@ -93,7 +81,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     if (e.count > 2) {
       const Index a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
       throw InputError(file, "the mesh is not a valid 2D triangulation: the edge " +
-                                 fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
+                                 formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
                                  " is a side of " + std::to_string(e.count) +
                                  " triangles (at most 2 expected)");
     }
@@ -115,29 +103,30 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
       if (mesh.edgeLabel[e] != spec.label) continue;
       const auto [a, b] = mesh.edges[e];
-      const std::uint64_t key = edgeKey(a, b);
+      const std::uint64_t key = sideKey(a, b);
       auto it = fractureOfEdge.find(key);
       if (it != fractureOfEdge.end()) {
         if (it->second == static_cast<int>(f)) continue;  // listed twice in one patch
         throw InputError(spec.where, "fractures '" + specs[it->second].name + "' and '" +
                                          spec.name + "' share the edge " +
-                                         fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
-                                         " of " + file + ": a fracture patch must be listed once");
+                                         formatPoint(mesh.points[a]) + "-" +
+                                         formatPoint(mesh.points[b]) + " of " + file +
+                                         ": a fracture patch must be listed once");
       }
       auto side = sides.find(key);
       if (side == sides.end())
         throw InputError(file, "fracture '" + spec.name + "': its edge " +
-                                   fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
+                                   formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
                                    " is not a side of any triangle");
       if (side->second.count == 1) {
         if (hasTwin(a) || hasTwin(b))
           throw InputError(file, "fracture '" + spec.name + "' is already split in this mesh " +
-                                     "(its edge " + fmtPoint(mesh.points[a]) + "-" +
-                                     fmtPoint(mesh.points[b]) +
+                                     "(its edge " + formatPoint(mesh.points[a]) + "-" +
+                                     formatPoint(mesh.points[b]) +
                                      " bounds one triangle and its nodes have coincident " +
                                      "copies); give splitFractureNodes the unsplit mesh");
         throw InputError(file, "fracture '" + spec.name + "': its edge " +
-                                   fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
+                                   formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
                                    " lies on the outer boundary of the mesh; a fracture must be "
                                    "inside the body (a side of two triangles)");
       }
@@ -163,13 +152,13 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       throw InputError(
           file,
           "fractures '" + specs[list[0].first].name + "' and '" + specs[list[1].first].name +
-              "' meet at " + fmtPoint(mesh.points[v]) +
+              "' meet at " + formatPoint(mesh.points[v]) +
               ": junctions of fractures are not supported (mesh them so that they do not meet)");
     if (list.size() > 2)
       throw InputError(
           file,
-          "fracture '" + specs[list[0].first].name + "' branches at " + fmtPoint(mesh.points[v]) +
-              " (" + std::to_string(list.size()) +
+          "fracture '" + specs[list[0].first].name + "' branches at " +
+              formatPoint(mesh.points[v]) + " (" + std::to_string(list.size()) +
               " fracture edges meet there): junctions of fractures are not supported (give each "
               "branch its own label and keep them apart)");
   }
@@ -202,8 +191,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     }
     if (all)
       throw InputError(
-          file, "triangle " + std::to_string(t + 1) + " " + fmtPoint(mesh.points[tri[0]]) + " " +
-                    fmtPoint(mesh.points[tri[1]]) + " " + fmtPoint(mesh.points[tri[2]]) +
+          file, "triangle " + std::to_string(t + 1) + " " + formatPoint(mesh.points[tri[0]]) + " " +
+                    formatPoint(mesh.points[tri[1]]) + " " + formatPoint(mesh.points[tri[2]]) +
                     " has all three vertices on fracture '" + specs[f0].name +
                     "', so it cannot be assigned to one side; refining the mesh "
                     "near the fracture (a smaller element size there) removes it");
@@ -290,7 +279,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       for (std::size_t p = 0; p < tris.size(); ++p)
         for (Index w : mesh.triangles[tris[p]]) {
           if (w == v) continue;
-          const std::uint64_t key = edgeKey(v, w);
+          const std::uint64_t key = sideKey(v, w);
           if (fractureOfEdge.count(key)) continue;
           const EdgeTriangles& e = sides.at(key);
           if (e.count != 2) continue;
@@ -304,7 +293,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
 
       if (groups.size() == 1) {
         if (nodeEdges[v].size() != 1)
-          throw InputError(file, "fracture '" + spec.name + "' at " + fmtPoint(mesh.points[v]) +
+          throw InputError(file, "fracture '" + spec.name + "' at " + formatPoint(mesh.points[v]) +
                                      ": the triangles around this node are not separated by "
                                      "the fracture (is the mesh conforming to the fracture?)");
         g.kind[i] = FractureNodeKind::tip;
@@ -312,7 +301,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
         continue;
       }
       if (groups.size() > 2)
-        throw InputError(file, "fracture '" + spec.name + "' at " + fmtPoint(mesh.points[v]) +
+        throw InputError(file, "fracture '" + spec.name + "' at " + formatPoint(mesh.points[v]) +
                                    ": the fracture cuts the triangles around this node into " +
                                    std::to_string(groups.size()) +
                                    " groups (2 expected); the mesh is not a manifold here");
@@ -345,7 +334,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
         ++gi;
       }
       if (sideOf[0] == 0 || sideOf[1] == 0 || sideOf[0] == sideOf[1])
-        throw InputError(file, "fracture '" + spec.name + "' at " + fmtPoint(mesh.points[v]) +
+        throw InputError(file, "fracture '" + spec.name + "' at " + formatPoint(mesh.points[v]) +
                                    ": cannot tell the two sides of the fracture apart (folded "
                                    "or inverted triangles next to it?)");
 
@@ -369,11 +358,12 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
   // 5. Boundary patches follow the copies their triangle uses.
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
     const auto [a, b] = mesh.edges[e];
-    if (fractureOfEdge.count(edgeKey(a, b))) continue;
-    auto side = sides.find(edgeKey(a, b));
+    if (fractureOfEdge.count(sideKey(a, b))) continue;
+    auto side = sides.find(sideKey(a, b));
     if (side == sides.end())
-      throw InputError(file, "edge " + fmtPoint(mesh.points[a]) + "-" + fmtPoint(mesh.points[b]) +
-                                 " with label " + std::to_string(mesh.edgeLabel[e]) +
+      throw InputError(file, "edge " + formatPoint(mesh.points[a]) + "-" +
+                                 formatPoint(mesh.points[b]) + " with label " +
+                                 std::to_string(mesh.edgeLabel[e]) +
                                  " is not a side of any triangle");
     const auto& orig = mesh.triangles[side->second.tri[0]];
     const auto& split = out.mesh.triangles[side->second.tri[0]];

@@ -26,12 +26,6 @@ std::vector<int> toInts(const std::vector<T>& v) {
   return std::vector<int>(v.begin(), v.end());
 }
 
-std::uint64_t sideKey(Index a, Index b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
 // Appended to every consistency error: the file is the utility's output, so the repair is
 // to make it again.
 const char* const resplit =

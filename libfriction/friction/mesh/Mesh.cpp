@@ -2,6 +2,8 @@
 #include "friction/mesh/Mesh.hpp"
 
 #include <cmath>
+#include <sstream>
+#include <utility>
 
 #include "friction/core/Assert.hpp"
 
@@ -21,6 +23,19 @@ double Mesh::totalArea() const {
   double sum = 0;
   for (Index t = 0; t < numTriangles(); ++t) sum += std::abs(signedArea(t));
   return sum;
+}
+
+std::string formatPoint(const Vector2& p) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(" << p.x() << " " << p.y() << ")";
+  return s.str();
+}
+
+std::uint64_t sideKey(Index a, Index b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+         static_cast<std::uint32_t>(b);
 }
 
 }  // namespace friction

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -51,5 +52,11 @@ struct Mesh {
   /// Sum of triangle areas.
   double totalArea() const;
 };
+
+/// "(x y)" with 6 significant digits: how messages and summaries name a point.
+std::string formatPoint(const Vector2& p);
+
+/// One key per side {a, b} of the mesh, whatever its orientation (for hashing sides).
+std::uint64_t sideKey(Index a, Index b);
 
 }  // namespace friction

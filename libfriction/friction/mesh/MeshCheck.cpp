@@ -9,16 +9,6 @@
 
 namespace friction {
 
-namespace {
-
-std::uint64_t sideKey(Index a, Index b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
-}  // namespace
-
 std::vector<std::pair<Index, Index>> coincidentPoints(const Mesh& mesh) {
   const Index n = mesh.numPoints();
   // Shortest triangle side at each vertex (infinite for a vertex no triangle uses: such a

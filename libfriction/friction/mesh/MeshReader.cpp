@@ -124,26 +124,9 @@ void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, con
                "): expected an edge between two different vertices");
 }
 
-namespace {
-
-std::string pointText(const Vector2& p) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "(" << p.x() << ", " << p.y() << ")";
-  return s.str();
-}
-
-std::uint64_t sideKey(Index a, Index b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
-}  // namespace
-
 void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& numbering) {
   const auto vertexText = [&](Index v) {
-    return std::to_string(numbering.point[v]) + " " + pointText(mesh.points[v]);
+    return std::to_string(numbering.point[v]) + " " + formatPoint(mesh.points[v]);
   };
 
   // Vertex -> its triangles (compressed rows): the side checks below walk one vertex's fan,

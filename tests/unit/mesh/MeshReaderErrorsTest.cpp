@@ -502,7 +502,7 @@ TEST_CASE("mesh: a labelled edge that is no side of any triangle is rejected", "
   TempDir dir;
   SECTION("FreeFEM: the diagonal the triangles do not have") {
     requireReadError(dir, "diag.msh", replaceLine(freeFem, 9, "2 4 2"), 9,
-                     {"the edge from vertex 2 (1, 0) to vertex 4 (0, 1) (label 2) is not a "
+                     {"the edge from vertex 2 (1 0) to vertex 4 (0 1) (label 2) is not a "
                       "side of any triangle"});
   }
   SECTION("gmsh 4.1: a line to a node no triangle uses") {
@@ -516,7 +516,7 @@ TEST_CASE("mesh: a labelled edge that is no side of any triangle is rejected", "
         "$Elements\n2 4 1 5\n1 1 1 2\n1 10 20\n4 10 50\n"  // lines 25-29
         "2 1 2 2\n2 10 20 30\n3 10 30 40\n$EndElements\n";
     requireReadError(dir, "stray41.msh", text, 29,
-                     {"the edge from vertex 10 (0, 0) to vertex 50 (2, 2) (label 7) is not a "
+                     {"the edge from vertex 10 (0 0) to vertex 50 (2 2) (label 7) is not a "
                       "side of any triangle",
                       "Curve{c} In Surface{s}"});
   }
