@@ -195,7 +195,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   system_ = std::make_unique<FractureSystem>(split_, order_, *material_);
   bcs_->fix(system_->dirichlet());
   findFloatingParts();
-  const FactorStatus status = system_->factor(linearSolver_);
+  const FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());
   const auto& nodes = system_->controlNodes();
   const Eigen::Index n = static_cast<Eigen::Index>(nodes.size());
 
@@ -252,6 +252,16 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       << (n == 0 ? " (no fracture: no split stiffness, no control loop)" : "") << "\n";
   log << "Factorisation: " << toString(status) << " (" << f.backend() << ", "
       << std::setprecision(3) << f.factorSeconds() << " s)\n";
+  // Condensed Newton's S: a by-product of the factorisation, or blocks of solves where the
+  // backend cannot deliver it.
+  if (status == FactorStatus::ok && f.schurComplement().size() > 0)
+    log << "Interface operator: " << f.schurComplement().rows() << " jump unknowns, "
+        << (f.schurSolves() == 0
+                ? std::string("from the factorisation")
+                : std::to_string(f.schurSolves()) + " back-substitutions in blocks (" +
+                      f.backend() + " cannot deliver it with the factorisation), " +
+                      formatNumber(f.schurSeconds()) + " s")
+        << "\n";
   printSettings(log);
   log << "\n";
   return status;

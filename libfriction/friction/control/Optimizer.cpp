@@ -61,11 +61,23 @@ const OptimizerEntry optimizerTable[] = {
      }},
     {"semismoothNewton",
      [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
+       const bool krylov =
+           d.getChoiceOr("variant", {"condensed", "krylov"}, "condensed") == "krylov";
+       // How the condensed variant forms S; the Krylov variant never forms it.
+       if (krylov && d.found("interfaceOperator"))
+         throw InputError(d.location("interfaceOperator"),
+                          "'interfaceOperator' applies to variant condensed only: the krylov "
+                          "variant does not form S");
+       const std::string how =
+           krylov ? "factorisation"
+                  : d.getChoiceOr("interfaceOperator",
+                                  {"factorisation", "blockSolves", "dualSolves"}, "factorisation");
        return std::make_unique<SemismoothNewton>(
            static_cast<int>(d.getIntOr("maxBacktracks", 30, {1, 200})),
-           d.getChoiceOr("variant", {"condensed", "krylov"}, "condensed") == "krylov"
-               ? SemismoothNewton::Variant::krylov
-               : SemismoothNewton::Variant::condensed);
+           krylov ? SemismoothNewton::Variant::krylov : SemismoothNewton::Variant::condensed,
+           how == "blockSolves"  ? InterfaceMethod::blockSolves
+           : how == "dualSolves" ? InterfaceMethod::dualSolves
+                                 : InterfaceMethod::factorisation);
      }},
 };
 
@@ -415,20 +427,12 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   const Eigen::VectorXd& mask = resp.freeMask();
   long setupSolves = 0;
   if (cachedFor_ != &resp || Stt_.rows() != n) {
-    // Column k: tractions caused by a unit tangential jump at node k (zero loads and data).
-    Stt_.setZero(n, n);
-    Snt_.setZero(n, n);
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(n), zero = Eigen::VectorXd::Zero(n), t, sn;
-    for (Eigen::Index k = 0; k < n; ++k) {
-      if (mask[k] == 0) continue;
-      throwIfStopNow();  // n solves: long on big fractures
-      e[k] = 1;
-      resp.dual(e, zero, t, &sn);
-      ++setupSolves;  // one dual solve: one back-substitution
-      e[k] = 0;
-      Stt_.col(k) = t;
-      Snt_.col(k) = sn;
-    }
+    // Once per run: S depends only on the mesh and the Dirichlet patches.
+    InterfaceOperator op = resp.interfaceOperator(interfaceMethod_);
+    Stt_ = std::move(op.Stt);
+    Snt_ = std::move(op.Snt);
+    setupSolves = op.solves;
+    formedBy_ = op.method;
     cachedFor_ = &resp;
   }
 

@@ -63,6 +63,10 @@ class Optimizer {
   /// Reads 'type' (and the type's own keys plus the StopRule keys) from dict.
   static std::unique_ptr<Optimizer> New(const Dictionary& dict);
 
+  /// True when the optimizer uses the interface operator S formed by the factorisation
+  /// (then the caller factors the bordered matrix: docs/method.md §4).
+  virtual bool wantsInterfaceOperator() const { return false; }
+
   /// Minimise from beta (in: start, out: result).
   virtual OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) = 0;
   virtual std::string name() const = 0;
@@ -143,18 +147,31 @@ class Lbfgs : public Optimizer {
 /// once. Globalised by backtracking on the merit ½‖D‖²_M. Solves D = 0, the minimiser of J
 /// when ζ = 0 (with ζ > 0 it still solves the friction law exactly).
 ///
+/// How S is formed (key interfaceOperator): `factorisation` (default) takes it from the one
+/// factorisation, as the Schur complement of the stiffness in the variables (free dofs,
+/// jumps) with the jumps ordered last — no back-substitution; `blockSolves` from blocks of
+/// right-hand sides (one per jump dof); `dualSolves` one dual solve per node (the reference).
+///
 /// Variant `krylov` (matrix-free): no S is assembled; each Newton system is solved by GMRES
 /// whose every product with S is one dual back-substitution, and each trial point is one
 /// primal solve — for fractures with many nodes, where n dual solves per run cost too much.
 class SemismoothNewton : public Optimizer {
  public:
   enum class Variant { condensed, krylov };
-  SemismoothNewton(int maxBacktracks, Variant variant = Variant::condensed)
-      : maxBacktracks_(maxBacktracks), variant_(variant) {}
+  SemismoothNewton(int maxBacktracks, Variant variant = Variant::condensed,
+                   InterfaceMethod interfaceMethod = InterfaceMethod::factorisation)
+      : maxBacktracks_(maxBacktracks), variant_(variant), interfaceMethod_(interfaceMethod) {}
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "semismoothNewton"; }
   /// Active-set changes over the last call's iterations (a cycling diagnostic).
   int activeSetChanges() const { return activeSetChanges_; }
+  bool wantsInterfaceOperator() const override {
+    return variant_ == Variant::condensed && interfaceMethod_ == InterfaceMethod::factorisation;
+  }
+  Variant variant() const { return variant_; }
+  InterfaceMethod interfaceMethod() const { return interfaceMethod_; }
+  /// How the S in use was formed (after the first minimize()).
+  InterfaceMethod formedBy() const { return formedBy_; }
 
  private:
   OptimizerReport minimizeKrylov(ControlProblem& problem, Eigen::VectorXd& beta);
@@ -166,6 +183,8 @@ class SemismoothNewton : public Optimizer {
 
   int maxBacktracks_;
   Variant variant_;
+  InterfaceMethod interfaceMethod_;
+  InterfaceMethod formedBy_ = InterfaceMethod::dualSolves;
   int activeSetChanges_ = 0;
   Eigen::MatrixXd Stt_, Snt_;  // cached for the run
   const SlipResponse* cachedFor_ = nullptr;

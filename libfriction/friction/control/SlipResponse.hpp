@@ -3,9 +3,28 @@
 // element implementation does each call with one back-substitution of the one factor.
 #pragma once
 
+#include <string>
+
 #include <Eigen/Core>
 
 namespace friction {
+
+/// How the interface operator S is formed (docs/method.md §4, "The interface operator").
+enum class InterfaceMethod {
+  factorisation,  ///< from the one factorisation (the bordered matrix's Schur complement)
+  blockSolves,    ///< from blocks of right-hand sides with the factor (one solve per jump dof)
+  dualSolves      ///< one dual solve per fracture node (the reference)
+};
+/// "factorisation", "blockSolves", "dualSolves".
+const char* toString(InterfaceMethod method);
+
+/// The interface operator in the fracture frames: column k holds τ and σ_n at every node
+/// caused by a unit tangential jump at node k, with zero loads and zero Dirichlet data.
+struct InterfaceOperator {
+  Eigen::MatrixXd Stt, Snt;  ///< n × n [Pa/m]; columns of held nodes (freeMask 0) are zero
+  long solves = 0;           ///< back-substitutions spent forming it
+  InterfaceMethod method = InterfaceMethod::dualSolves;  ///< how it was formed
+};
 
 class SlipResponse {
  public:
@@ -26,6 +45,10 @@ class SlipResponse {
   /// tangential traction τ(p) per node [Pa] (qt, qn in m), and σ_n(p) if sigmaNDual is given.
   virtual void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
                     Eigen::VectorXd* sigmaNDual = nullptr) = 0;
+
+  /// The interface operator, formed as `method` asks where the implementation can (the
+  /// result says how it was formed). This default makes one dual solve per free node.
+  virtual InterfaceOperator interfaceOperator(InterfaceMethod method);
 };
 
 }  // namespace friction

@@ -119,7 +119,7 @@ int FractureSystem::numHeldOnDirichlet() const {
   return c;
 }
 
-FactorStatus FractureSystem::factor(const std::string& backend) {
+FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfaceOperator) {
   const Index n = size();
   // Jumps are held where a copy's unsplit node carries a Dirichlet condition: a jump there
   // would move one side off its prescribed value.
@@ -160,6 +160,25 @@ FactorStatus FractureSystem::factor(const std::string& backend) {
     Tx_ = EK * P_;
     Tj_ = EK * L_;
     Tf_ = -E;
+    // The border of the stiffness in the variables (x, j): B = Pᵀ K_split L and
+    // C = Lᵀ K_split L, on the jump dofs of the nodes that have two sides. Then
+    // Σ = W⁻¹ (Bᵀ x + C j) (E = W⁻¹ Lᵀ), and with zero loads x_f = −K_ff⁻¹ B_f j, so
+    // M Σ = (C − B_fᵀ K_ff⁻¹ B_f) j: the Schur complement is M·S.
+    jumpDofs_.clear();
+    for (Index k = 0; k < n; ++k)
+      if (!nodes_[k].tip) jumpDofs_.insert(jumpDofs_.end(), {2 * k, 2 * k + 1});
+    Triplets st;
+    for (std::size_t a = 0; a < jumpDofs_.size(); ++a) st.emplace_back(jumpDofs_[a], a, 1.0);
+    const Eigen::SparseMatrix<double> select =
+        fromTriplets(2 * n, static_cast<Index>(jumpDofs_.size()), st);
+    const Eigen::SparseMatrix<double> Lj = L_ * select;
+    borderC_ = Lj.transpose() * (Ksplit * Lj);
+    const Eigen::SparseMatrix<double> Bj = B_ * select;
+    Triplets ft;
+    Index row = 0;
+    for (Index d = 0; d < unsplitSpace_->numDofs(); ++d)
+      if (!dirichlet_->isFixed(d)) ft.emplace_back(row++, d, 1.0);
+    borderB_ = fromTriplets(row, unsplitSpace_->numDofs(), ft) * Bj;
   } else {
     B_.resize(unsplitSpace_->numDofs(), 0);
     Tx_.resize(0, unsplitSpace_->numDofs());
@@ -171,6 +190,8 @@ FactorStatus FractureSystem::factor(const std::string& backend) {
   ++numAssemblies_;
   reduced_ = std::make_unique<ReducedSystem>(K, *dirichlet_);
   factor_ = std::make_unique<SparseFactor>(backend);
+  if (withInterfaceOperator && !jumpDofs_.empty())
+    return factor_->factorWithSchur(reduced_->matrix(), borderB_, borderC_);
   return factor_->factor(reduced_->matrix());
 }
 
@@ -240,6 +261,51 @@ void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
     sigmaNDual->resize(n);
     for (Index k = 0; k < n; ++k) (*sigmaNDual)[k] = sigma.segment<2>(2 * k).dot(nodes_[k].normal);
   }
+}
+
+InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
+  FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before the interface operator");
+  if (method == InterfaceMethod::dualSolves) return SlipResponse::interfaceOperator(method);
+  const Index n = size();
+  InterfaceOperator op;
+  op.Stt.setZero(n, n);
+  op.Snt.setZero(n, n);
+  if (jumpDofs_.empty()) {
+    op.method = method;
+    return op;
+  }
+  Eigen::MatrixXd blocked;
+  const bool fromFactor =
+      method == InterfaceMethod::factorisation &&
+      factor_->schurComplement().rows() == static_cast<Eigen::Index>(jumpDofs_.size());
+  if (!fromFactor) {
+    const long solves0 = factor_->numSolves();
+    blocked = factor_->schurBySolves(borderB_, borderC_);
+    op.solves = factor_->numSolves() - solves0;
+  }
+  const Eigen::MatrixXd& MS = fromFactor ? factor_->schurComplement() : blocked;
+  op.method = fromFactor && factor_->schurSolves() == 0 ? InterfaceMethod::factorisation
+                                                        : InterfaceMethod::blockSolves;
+  // Frame projection: S_tt(i, k) = t_iᵀ (M·S)_ik t_k / w_i, S_nt(i, k) = n_iᵀ (M·S)_ik t_k / w_i,
+  // over the nodes with two sides (jumpDofs_ holds their x and y entries in node order).
+  const Index m = static_cast<Index>(jumpDofs_.size()) / 2;
+  std::vector<Index> node(m);
+  for (Index a = 0; a < m; ++a) node[a] = jumpDofs_[2 * a] / 2;
+  Eigen::MatrixXd columns(2 * m, m);  // (M·S) t_k for each node k, zero where held
+  for (Index a = 0; a < m; ++a) {
+    const Vector2 t = nodes_[node[a]].tangent * mask_[node[a]];
+    columns.col(a) = MS.col(2 * a) * t.x() + MS.col(2 * a + 1) * t.y();
+  }
+  for (Index b = 0; b < m; ++b) {
+    const ControlNode& v = nodes_[node[b]];
+    const double w = weights_[node[b]];
+    for (Index a = 0; a < m; ++a) {
+      const Vector2 s = columns.block<2, 1>(2 * b, a) / w;
+      op.Stt(node[b], node[a]) = s.dot(v.tangent);
+      op.Snt(node[b], node[a]) = s.dot(v.normal);
+    }
+  }
+  return op;
 }
 
 double FractureSystem::equilibriumResidual() const {

@@ -53,8 +53,11 @@ class FractureSystem : public SlipResponse {
   const LagrangeSpace& unsplitSpace() const { return *unsplitSpace_; }
   const ElasticityAssembler& splitAssembler() const { return *splitAssembler_; }
 
-  /// Assemble the unsplit stiffness, eliminate the Dirichlet dofs and factor — once.
-  FactorStatus factor(const std::string& backend = "cholmod");
+  /// Assemble the unsplit stiffness, eliminate the Dirichlet dofs and factor — once. With
+  /// withInterfaceOperator, the factorisation also delivers the interface operator M·S
+  /// (docs/method.md §4): the stiffness in the variables (free dofs, jumps) is factored
+  /// with the jumps last, and the Schur complement on the jumps is M·S.
+  FactorStatus factor(const std::string& backend = "cholmod", bool withInterfaceOperator = false);
   const SparseFactor& factorization() const { return *factor_; }
 
   /// This step's data: the load vector on the SPLIT space (tractions, body force) [N], and
@@ -81,6 +84,14 @@ class FractureSystem : public SlipResponse {
   void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau, Eigen::VectorXd& sigmaN) override;
   void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
             Eigen::VectorXd* sigmaNDual = nullptr) override;
+  /// factorisation: the complement the factorisation delivered (factor() with
+  /// withInterfaceOperator), else as blockSolves; blockSolves: C − Bᵀ K⁻¹ B by blocks of
+  /// right-hand sides; dualSolves: one dual solve per node (SlipResponse's default).
+  InterfaceOperator interfaceOperator(InterfaceMethod method) override;
+  /// M·S on the jump dofs (2 per node that is not a tip, x and y components, node order),
+  /// with the dofs of jumpDofs(): symmetric [N/m]. Empty unless factor() formed it.
+  const Eigen::MatrixXd& jumpOperator() const { return factor_->schurComplement(); }
+  const std::vector<Index>& jumpDofs() const { return jumpDofs_; }
 
   /// ‖K_ff x_f − b‖ / ‖b‖ of the last primal solve: how well the discrete equilibrium holds
   /// (round-off of the factorisation; large values flag an ill-conditioned problem).
@@ -112,6 +123,9 @@ class FractureSystem : public SlipResponse {
   Eigen::SparseMatrix<double> Tx_;  ///< Σ from x: W⁻¹ (R⁺ − R⁻)/2 P
   Eigen::SparseMatrix<double> Tj_;  ///< Σ from j: W⁻¹ (R⁺ − R⁻)/2 L
   Eigen::SparseMatrix<double> Tf_;  ///< Σ from f_split: −W⁻¹ (E⁺ − E⁻)/2 (row selection)
+  std::vector<Index> jumpDofs_;     ///< entries 2k + c of j for the nodes that are not tips
+  Eigen::SparseMatrix<double> borderB_;  ///< Pᵀ K_split L: free rows × jumpDofs_
+  Eigen::SparseMatrix<double> borderC_;  ///< Lᵀ K_split L on jumpDofs_
 
   Eigen::VectorXd loadUnsplit_, sigmaLoad_, slip_;
   Eigen::VectorXd x_, lastJump_, lastRhs_, lastFree_;

@@ -73,6 +73,31 @@ class SparseFactor {
   /// NaN): tells overflow and bad scaling (E in Pa near 1e300) apart from singularity.
   double maxAbsEntry() const { return maxAbsEntry_; }
 
+  /// Factor A as factor(A) does, and with it the Schur complement of the bordered matrix
+  ///     [ A   B ]
+  ///     [ Bᵀ  C ]        (A: n×n, B: n×m sparse, C: m×m symmetric, lower triangle read),
+  /// i.e. the dense m×m matrix C − Bᵀ A⁻¹ B (docs/method.md §4: with B the lifting of the
+  /// jumps and C their split stiffness this is M·S, the interface operator). The cholmod
+  /// backend factors the bordered matrix once, with the border ordered last, so that the
+  /// complement is a by-product of the factorisation: no back-substitution is spent on it.
+  /// Other backends (and CHOLMOD when it cannot keep the border last) factor A alone and
+  /// form the complement from blocks of right-hand sides (m back-substitutions, counted in
+  /// numSolves()); schurSolves() says which happened. solve() solves with A either way.
+  FactorStatus factorWithSchur(const Eigen::SparseMatrix<double>& A,
+                               const Eigen::SparseMatrix<double>& B,
+                               const Eigen::SparseMatrix<double>& C);
+  /// The complement of the last factorWithSchur() (empty after factor()).
+  const Eigen::MatrixXd& schurComplement() const { return schur_; }
+  /// Back-substitutions the last complement cost (0 when it came from the factorisation).
+  long schurSolves() const { return schurSolves_; }
+  /// Wall time [s] of the blocked solves of the last complement (0 when it came from the
+  /// factorisation: its cost is then part of factorSeconds()).
+  double schurSeconds() const { return schurSeconds_; }
+  /// C − Bᵀ A⁻¹ B from the current factor by blocks of right-hand sides (m
+  /// back-substitutions): the generic way, and the cross-check of the bordered one.
+  Eigen::MatrixXd schurBySolves(const Eigen::SparseMatrix<double>& B,
+                                const Eigen::SparseMatrix<double>& C);
+
   /// x = A⁻¹ b (one back-substitution). Requires ok() (debug assert). An Eigen expression
   /// must be evaluated first (VectorXd(expr)): both overloads would accept it.
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
@@ -105,6 +130,12 @@ class SparseFactor {
   long numSolves_ = 0;
   double factorSeconds_ = 0.0;
   double solveSeconds_ = 0.0;
+  Eigen::MatrixXd schur_;
+  long schurSolves_ = 0;
+  double schurSeconds_ = 0.0;
+
+  // Shared by factor() and factorWithSchur(): the pivot test on the first rows_ rows.
+  FactorStatus judgePivots(const Eigen::SparseMatrix<double>& A);
 };
 
 }  // namespace friction

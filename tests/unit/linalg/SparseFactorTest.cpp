@@ -110,3 +110,110 @@ TEST_CASE("linalg SparseFactor rejects an unknown backend with the valid names",
                                   Catch::Contains("cholmod, simplicialLDLT"));
   }
 }
+
+namespace {
+
+/// A border for spdMatrix(): m columns, each coupling a few rows (as a jump couples the dofs
+/// next to a fracture), and a diagonally dominant C, so that [A B; Bᵀ C] is SPD.
+void border(Eigen::Index n, Eigen::Index m, Eigen::SparseMatrix<double>& B,
+            Eigen::SparseMatrix<double>& C) {
+  std::vector<Eigen::Triplet<double>> tb, tc;
+  for (Eigen::Index a = 0; a < m; ++a) {
+    for (int k = 0; k < 4; ++k)
+      tb.emplace_back((7 * a + 13 * k) % n, a, 1e9 * std::cos(1.0 + a + k));
+    tc.emplace_back(a, a, 1e11);
+    if (a > 0) tc.emplace_back(a, a - 1, -2e9), tc.emplace_back(a - 1, a, -2e9);
+  }
+  B.resize(n, m);
+  B.setFromTriplets(tb.begin(), tb.end());
+  C.resize(m, m);
+  C.setFromTriplets(tc.begin(), tc.end());
+}
+
+}  // namespace
+
+TEST_CASE("linalg SparseFactor forms the Schur complement C - B^T A^-1 B with the factorisation",
+          "[linalg]") {
+  const std::string backend = GENERATE(as<std::string>{}, "cholmod", "simplicialLDLT");
+  CAPTURE(backend);
+  const Eigen::SparseMatrix<double> A = spdMatrix();
+  const Eigen::Index n = A.rows(), m = 40;
+  Eigen::SparseMatrix<double> B, C;
+  border(n, m, B, C);
+
+  // Reference: dense A⁻¹ B by a dense Cholesky (independent of SparseFactor).
+  const Eigen::MatrixXd Ad(A);
+  const Eigen::MatrixXd reference =
+      Eigen::MatrixXd(C) - Eigen::MatrixXd(B).transpose() * Ad.llt().solve(Eigen::MatrixXd(B));
+
+  SparseFactor factor(backend);
+  REQUIRE(factor.factorWithSchur(A, B, C) == FactorStatus::ok);
+  REQUIRE(factor.ok());
+  REQUIRE(factor.numFactorizations() == 1);
+  const Eigen::MatrixXd& S = factor.schurComplement();
+  REQUIRE(S.rows() == m);
+  REQUIRE(S.cols() == m);
+  // Both are round-off of cond(A) ≈ 1e4 times eps on entries of size ‖C‖ = 1e11: 1e-9
+  // relative is a wide margin that a wrong sign or a missing block would not meet.
+  const double scale = reference.cwiseAbs().maxCoeff();
+  REQUIRE(scale > 0);
+  CHECK((S - reference).cwiseAbs().maxCoeff() <= 1e-9 * scale);
+  CHECK((S - S.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale);
+  // cholmod delivers it from the bordered factorisation, with no back-substitution; the
+  // other backend spends one per border column.
+  if (backend == "cholmod")
+    CHECK(factor.schurSolves() == 0);
+  else
+    CHECK(factor.schurSolves() == m);
+  CHECK(factor.numSolves() == factor.schurSolves());
+
+  // After the bordered factorisation, solve() still solves with A (not with the bordered
+  // matrix): one and several right-hand sides.
+  Eigen::MatrixXd X(n, 2);
+  for (Eigen::Index i = 0; i < n; ++i) X(i, 0) = std::sin(0.1 * i), X(i, 1) = (i % 5) - 2.0;
+  const Eigen::MatrixXd Y = factor.solve(Eigen::MatrixXd(A * X));
+  CHECK((Y - X).cwiseAbs().maxCoeff() <= 1e-10);
+  const Eigen::VectorXd y = factor.solve(Eigen::VectorXd(A * X.col(0)));
+  CHECK((y - X.col(0)).cwiseAbs().maxCoeff() <= 1e-10);
+  CHECK(factor.minPivotRatio() > factor.pivotTolerance());
+
+  // The complement by blocks of solves, from the same factor, agrees.
+  const long before = factor.numSolves();
+  const Eigen::MatrixXd byBlocks = factor.schurBySolves(B, C);
+  CHECK(factor.numSolves() - before == m);
+  CHECK((byBlocks - reference).cwiseAbs().maxCoeff() <= 1e-9 * scale);
+
+  // A plain factor() afterwards forgets the complement.
+  REQUIRE(factor.factor(A) == FactorStatus::ok);
+  CHECK(factor.schurComplement().size() == 0);
+}
+
+TEST_CASE("linalg SparseFactor: a semi-definite complement is formed, a singular A is reported",
+          "[linalg]") {
+  const std::string backend = GENERATE(as<std::string>{}, "cholmod", "simplicialLDLT");
+  CAPTURE(backend);
+  const Eigen::SparseMatrix<double> A = spdMatrix();
+  const Eigen::Index n = A.rows();
+  // C = Bᵀ A⁻¹ B exactly for B = A E (E two unit columns): the complement is zero, so the
+  // bordered matrix is only semi-definite (as when a part of the body is held by a
+  // fracture alone). The complement must still come out, as zero to round-off.
+  Eigen::SparseMatrix<double> E(n, 2);
+  E.insert(3, 0) = 1.0;
+  E.insert(n / 2, 1) = 1.0;
+  const Eigen::SparseMatrix<double> B = A * E;
+  const Eigen::SparseMatrix<double> C = E.transpose() * B;
+  SparseFactor factor(backend);
+  REQUIRE(factor.factorWithSchur(A, B, C) == FactorStatus::ok);
+  const double scale = Eigen::MatrixXd(C).cwiseAbs().maxCoeff();
+  REQUIRE(scale > 0);
+  CHECK(factor.schurComplement().cwiseAbs().maxCoeff() <= 1e-10 * scale);
+
+  // A singular A is A's failure, reported as factor() reports it.
+  Eigen::SparseMatrix<double> K;
+  spdMatrix(&K);
+  Eigen::SparseMatrix<double> BK(K.rows(), 1), CK(1, 1);
+  BK.insert(0, 0) = 1.0;
+  CK.insert(0, 0) = 1.0;
+  CHECK(factor.factorWithSchur(K, BK, CK) == FactorStatus::notPositiveDefinite);
+  CHECK_FALSE(factor.ok());
+}
