@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# What the interface operator costs (issue: speed at scale, part 1). The inclined crack with
+# 2N+1 crack nodes (h = a/N, a band of 8h at size h, graded to 0.02 m), for each N: one
+# linear elastic solve of the same mesh without the crack, then the frictional solve with
+# semismoothNewton condensed, S formed
+#   factorisation  from the one factorisation (Schur complement of the bordered matrix),
+#   blockSolves    from blocks of 64 right-hand sides with the factor,
+#   dualSolves     one dual solve per crack node (the way before; skipped above 2 100 nodes,
+#                  where it takes many minutes),
+# and with the krylov variant. All runs of one N follow each other on the same machine
+# state; the ratios to the linear solve are printed as measured (wall time of the whole
+# frictionSolver run, reading the split mesh included).
+# Usage: interfaceBenchmark.sh [BIN_DIR] [WORK_DIR] [N ...]     (default N: 64 256 1024)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+bin=${1:-$root/build/bin}
+work=${2:-$root/build/interfaceBenchmark}
+shift $(($# < 2 ? $# : 2))
+sizes=("$@")
+((${#sizes[@]})) || sizes=(64 256 1024)
+mkdir -p "$work"
+
+wall() {  # wall CASE: seconds of frictionSolver on CASE (its log in CASE/log.frictionSolver)
+  local t0 t1
+  rm -rf "$1"/[1-9]* "$1/postProcessing" "$1/VTK"
+  t0=$(date +%s.%N)
+  "$bin/frictionSolver" -case "$1" >"$1/log.frictionSolver" 2>&1 || true
+  t1=$(date +%s.%N)
+  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f", b - a }'
+}
+field() {  # field LOG KEY: the number after KEY on the step line
+  sed -n "s/^Time = .*  $2 \([0-9.e+-]*\).*/\1/p" "$1" | head -n 1
+}
+
+table="| crack nodes | unknowns | linear solve | S formed by | Newton iterations | back-subst. (step + S) | frictional solve | ratio to linear |
+|---:|---:|---:|---|---:|---:|---:|---:|"
+for N in "${sizes[@]}"; do
+  h=$(awk -v n="$N" 'BEGIN { printf "%.12g", 0.05 / n }')
+  dmin=$(awk -v h="$h" 'BEGIN { printf "%.12g", 8 * h }')
+  c=$work/N$N
+  rm -rf "$c" && mkdir -p "$c"
+  cp -r "$root/cases/inclinedCrack" "$c/friction"
+  rm -f "$c/friction"/log.*
+  echo "N = $N: meshing (h = $h m) ..." >&2
+  (cd "$c/friction/constant/mesh" &&
+    gmsh -2 -format msh41 -setnumber h "$h" -setnumber dMin "$dmin" -setnumber hFar 0.02 \
+      inclinedCrack.geo -o inclinedCrack.msh >"$c/gmsh.log" 2>&1)
+  sed -i 's/^writeVTK.*//; $a writeVTK no;' "$c/friction/system/controlDict"
+  cp -r "$c/friction" "$c/linear"
+  sed -i 's/^fractures .*/fractures ();/' "$c/linear/system/meshDict"
+  sed -i '/^crack/,$d' "$c/linear/constant/fractureProperties"
+  "$bin/splitFractureNodes" -case "$c/friction" >"$c/friction/log.splitFractureNodes"
+  "$bin/splitFractureNodes" -case "$c/linear" >"$c/linear/log.splitFractureNodes"
+
+  tl=$(wall "$c/linear")
+  nodes=$(sed -n 's/.* \([0-9]*\) fracture control nodes.*/\1/p' "$c/friction/log.frictionSolver" 2>/dev/null || true)
+  for how in factorisation blockSolves dualSolves krylov; do
+    f=$c/friction/system/frictionSolution
+    if [[ $how == krylov ]]; then
+      sed -i "s/^\( *type *\)semismoothNewton;.*/\1semismoothNewton; variant krylov;/" "$f"
+    else
+      sed -i "s/^\( *type *\)semismoothNewton;.*/\1semismoothNewton; interfaceOperator $how;/" "$f"
+    fi
+    if [[ $how == dualSolves ]] && ((2 * N + 1 > 2100)); then
+      table+=$'\n'"| $((2 * N + 1)) | | | dualSolves | | | skipped | |"
+      continue
+    fi
+    tf=$(wall "$c/friction")
+    log=$c/friction/log.frictionSolver
+    cp "$log" "$c/log.$how"
+    dofs=$(sed -n 's/.* \([0-9]*\) dofs (P1).*/\1/p' "$log")
+    nodes=$(sed -n 's/.* \([0-9]*\) fracture control nodes.*/\1/p' "$log")
+    it=$(field "$log" iterations)
+    bs=$(field "$log" backSubstitutions)
+    setup=$(sed -n 's/^Time = .*(+\([0-9]*\) building S.*/\1/p' "$log" | head -n 1)
+    status=$(grep -o -E '(converged|maxIterations|stalled|diverged|inaccurate)  ' "$log" | head -n 1 | tr -d ' ')
+    label=$how
+    [[ $how == krylov ]] && label="— (krylov variant)"
+    table+=$'\n'"| $nodes | $dofs | $tl s | $label | $it | $bs + ${setup:-0} | $tf s ($status) | $(awk -v a="$tf" -v b="$tl" 'BEGIN { printf "%.2f", a / b }') |"
+  done
+  sed -i "s/^\( *type *\)semismoothNewton;.*/\1semismoothNewton;/" "$c/friction/system/frictionSolution"
+done
+echo
+echo "$table"
