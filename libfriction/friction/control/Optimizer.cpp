@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
-#include <Eigen/LU>
+#include <Eigen/Core>
 
 #include "friction/core/StopRequest.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
+#include "friction/linalg/DenseSolve.hpp"
 
 namespace friction {
 
@@ -483,8 +485,10 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
           if (dir[j] != 0) known += (Stt_(i, j) + cs * Snt_(i, j)) * dir[j];
         rhs[a] = -s.D[i] - known;
       }
-      const Eigen::VectorXd delta = G.partialPivLu().solve(rhs);
-      for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta[a];
+      // LAPACK's LU: at thousands of slipping nodes this is the iteration's whole cost.
+      const bool solved = luSolveInPlace(G, rhs);
+      for (Eigen::Index a = 0; a < m; ++a)
+        dir[active[a]] = solved ? rhs[a] : std::numeric_limits<double>::quiet_NaN();
     }
     if (!dir.allFinite()) {
       r.status = OptimizerStatus::stalled;
