@@ -91,6 +91,11 @@ class MeshTopology {
   const std::vector<Index>& overSharedFacets() const { return overShared_; }
 
  private:
+  template <int dim>
+  void build();
+  /// findFacet for a sorted key (key[0] in range).
+  Index findFacetKey(const Index* key) const;
+
   std::size_t at(Index cell, int k) const {
     return static_cast<std::size_t>(cell) * (dim_ + 1) + k;
   }
