@@ -94,7 +94,7 @@ class LagrangeSpace {
   /// Local-to-global node map, nodesPerCell() entries per cell.
   std::vector<Index> cellNodes_;
   /// The mesh's topology; edge k is its facet k (ordered by (a, b), a < b) and has midpoint
-  /// node numPoints + k.
+  /// node numPoints + k. Edges are facets in 2D only: P2 on tetrahedra needs an edge table.
   std::shared_ptr<const MeshTopology> topology_;
 };
 

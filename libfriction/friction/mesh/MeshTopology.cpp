@@ -149,7 +149,8 @@ void MeshTopology::build() {
         facetVertices_.push_back(static_cast<Index>((it->restKey() >> (32 * j)) & 0xffffffffu));
       for (Entry<dim>* e = it; e != end; ++e) {
         // Entries are in facet order, so facet f's cells sit at the same positions.
-        facetCells_[static_cast<std::size_t>(e - entries.data())] = {e->cell(), e->local()};
+        facetCells_[static_cast<std::size_t>(e - entries.data())] =
+            (static_cast<std::uint32_t>(e->cell()) << 2) | static_cast<unsigned>(e->local());
         cellFacets_[at(e->cell(), e->local())] = f;
       }
       facetCellStart_.push_back(static_cast<Index>(end - entries.data()));

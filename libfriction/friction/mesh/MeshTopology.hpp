@@ -18,6 +18,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -79,7 +80,10 @@ class MeshTopology {
     return static_cast<int>(facetCellStart_[facet + 1] - facetCellStart_[facet]);
   }
   /// The i-th cell of a facet (ascending cell order) and the facet's local number there.
-  CellFacet cellOf(Index facet, int i) const { return facetCells_[facetCellStart_[facet] + i]; }
+  CellFacet cellOf(Index facet, int i) const {
+    const std::uint32_t cl = facetCells_[facetCellStart_[facet] + i];
+    return {static_cast<Index>(cl >> 2), static_cast<int>(cl & 3u)};
+  }
   /// A facet of exactly one cell: on the boundary of the body (outer boundary or a lip).
   bool isBoundary(Index facet) const { return numCellsOf(facet) == 1; }
 
@@ -102,11 +106,11 @@ class MeshTopology {
 
   int dim_ = 2;
   Index numVertices_ = 0;
-  std::vector<Index> cells_;           ///< d + 1 vertices per cell
-  std::vector<Index> cellFacets_;      ///< d + 1 facets per cell (facet k opposite vertex k)
-  std::vector<Index> facetVertices_;   ///< d ascending vertices per facet
-  std::vector<Index> facetCellStart_;  ///< facet f's cells: facetCells_[start[f], start[f+1])
-  std::vector<CellFacet> facetCells_;
+  std::vector<Index> cells_;               ///< d + 1 vertices per cell
+  std::vector<Index> cellFacets_;          ///< d + 1 facets per cell (facet k opposite vertex k)
+  std::vector<Index> facetVertices_;       ///< d ascending vertices per facet
+  std::vector<Index> facetCellStart_;      ///< facet f's cells: facetCells_[start[f], start[f+1])
+  std::vector<std::uint32_t> facetCells_;  ///< cell · 4 + local (half the memory of CellFacet)
   /// Facets whose smallest vertex is v: [firstFacet_[v], firstFacet_[v + 1]).
   std::vector<Index> firstFacet_;
   std::vector<Index> overShared_;
