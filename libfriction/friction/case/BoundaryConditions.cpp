@@ -7,6 +7,7 @@
 
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
+#include "friction/mesh/MeshTopology.hpp"
 
 namespace friction {
 
@@ -54,17 +55,21 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
       } else if (type == "pressure") {
         patch.type = Type::pressure;
         patch.value = TimeFunction::read(p, "pressure", 1);
-        // Outward normal of each edge: away from the third vertex of the triangle it bounds.
-        std::map<std::pair<Index, Index>, Index> thirdVertex;
-        for (const auto& t : mesh.triangles)
-          for (int k = 0; k < 3; ++k)
-            thirdVertex[std::minmax(t[k], t[(k + 1) % 3])] = t[(k + 2) % 3];
+        // Outward normal of each edge: away from the third vertex of the triangle it bounds
+        // (of the last triangle, in mesh order, if two have it).
+        const auto topology = mesh.topology();
         for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
           if (mesh.edgeLabel[e] != patch.label) continue;
           const auto [a, b] = mesh.edges[e];
           const Vector2 d = mesh.points[b] - mesh.points[a];
           Vector2 n = Vector2(d.y(), -d.x()).normalized();
-          const Index c = thirdVertex.at(std::minmax(a, b));
+          const Index f = topology->findFacet({a, b});
+          if (f < 0)
+            throw InputError(mesh.source, "the edge " + formatPoint(mesh.points[a]) + "-" +
+                                              formatPoint(mesh.points[b]) + " of patch '" + name +
+                                              "' is not a side of any triangle");
+          const auto last = topology->cellOf(f, topology->numCellsOf(f) - 1);
+          const Index c = topology->oppositeVertex(last.cell, last.local);
           if ((mesh.points[c] - mesh.points[a]).dot(n) > 0) n = -n;
           patch.outwardNormal.push_back(n);
         }
@@ -78,13 +83,12 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
   }
   // Labelled lines inside the body (sides of two triangles) carry no boundary condition
   // unless one is given: only patches on the outer boundary must be listed.
-  std::map<std::pair<Index, Index>, int> sideCount;
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++sideCount[std::minmax(t[k], t[(k + 1) % 3])];
+  const auto topology = mesh.topology();
   std::set<int> onBoundary;
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e)
-    if (sideCount[std::minmax(mesh.edges[e][0], mesh.edges[e][1])] == 1)
-      onBoundary.insert(mesh.edgeLabel[e]);
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    const Index f = topology->findFacet({mesh.edges[e][0], mesh.edges[e][1]});
+    if (f >= 0 && topology->isBoundary(f)) onBoundary.insert(mesh.edgeLabel[e]);
+  }
   for (const auto& [name, label] : labelOf) {
     if (!onBoundary.count(label)) continue;
     bool listed = false;

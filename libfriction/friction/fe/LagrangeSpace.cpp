@@ -7,51 +7,25 @@
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/InputError.hpp"
+#include "friction/mesh/MeshTopology.hpp"
 
 namespace friction {
-
-namespace {
-// Local vertex pairs of the three P2 midpoints, in local order 3, 4, 5.
-constexpr int kEdgeVertex[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-}  // namespace
 
 LagrangeSpace::LagrangeSpace(const Mesh& mesh, int degree) : mesh_(&mesh), degree_(degree) {
   FRICTION_ASSERT(degree == 1 || degree == 2, "Lagrange degree must be 1 or 2");
   const Index np = mesh.numPoints();
   const Index nt = mesh.numTriangles();
 
-  // Edge table without hashing or sorting of all edges: bucket every triangle side by its
-  // smaller node, then sort and deduplicate each (short) bucket. Linear in the mesh size.
-  std::vector<Index> count(static_cast<std::size_t>(np) + 1, 0);
-  for (const auto& t : mesh.triangles)
-    for (const auto& e : kEdgeVertex) ++count[std::min(t[e[0]], t[e[1]]) + 1];
-  for (Index a = 0; a < np; ++a) count[a + 1] += count[a];
-  std::vector<Index> other(static_cast<std::size_t>(3) * nt);
-  {
-    std::vector<Index> fill(count.begin(), count.end() - 1);
-    for (const auto& t : mesh.triangles)
-      for (const auto& e : kEdgeVertex) {
-        const Index a = t[e[0]], b = t[e[1]];
-        other[fill[std::min(a, b)]++] = std::max(a, b);
-      }
-  }
-  edgeStart_.assign(static_cast<std::size_t>(np) + 1, 0);
-  edgeOther_.reserve(static_cast<std::size_t>(3) * nt / 2 + np);
-  for (Index a = 0; a < np; ++a) {
-    const auto first = other.begin() + count[a], last = other.begin() + count[a + 1];
-    std::sort(first, last);
-    edgeOther_.insert(edgeOther_.end(), first, std::unique(first, last));
-    edgeStart_[a + 1] = static_cast<Index>(edgeOther_.size());
-  }
-  edgeOther_.shrink_to_fit();
+  // Edges are the facets of the mesh's (shared) topology, numbered in key order (a, b), a < b.
+  topology_ = mesh.topology();
 
-  // Node coordinates: mesh points, then edge midpoints in edge-table order.
+  // Node coordinates: mesh points, then edge midpoints in edge order.
   coordinates_ = mesh.points;
   if (degree_ == 2) {
-    coordinates_.reserve(coordinates_.size() + edgeOther_.size());
-    for (Index a = 0; a < np; ++a)
-      for (Index k = edgeStart_[a]; k < edgeStart_[a + 1]; ++k)
-        coordinates_.push_back(0.5 * (mesh.points[a] + mesh.points[edgeOther_[k]]));
+    coordinates_.reserve(coordinates_.size() + topology_->numFacets());
+    for (Index f = 0; f < topology_->numFacets(); ++f)
+      coordinates_.push_back(0.5 * (mesh.points[topology_->facetVertex(f, 0)] +
+                                    mesh.points[topology_->facetVertex(f, 1)]));
   }
 
   const int npc = nodesPerCell();
@@ -62,9 +36,9 @@ LagrangeSpace::LagrangeSpace(const Mesh& mesh, int degree) : mesh_(&mesh), degre
     out[0] = t[0];
     out[1] = t[1];
     out[2] = t[2];
+    // Midpoint of local edge (v_e, v_e+1): the facet opposite vertex e + 2.
     if (degree_ == 2)
-      for (int e = 0; e < 3; ++e)
-        out[3 + e] = np + findEdge(t[kEdgeVertex[e][0]], t[kEdgeVertex[e][1]]);
+      for (int e = 0; e < 3; ++e) out[3 + e] = np + topology_->cellFacet(c, (e + 2) % 3);
   }
 
   // A labelled edge that no triangle has would get no midpoint and no stiffness: the mesh is
@@ -80,14 +54,9 @@ LagrangeSpace::LagrangeSpace(const Mesh& mesh, int degree) : mesh_(&mesh), degre
   }
 }
 
-Index LagrangeSpace::findEdge(Index a, Index b) const {
-  if (a > b) std::swap(a, b);
-  if (a < 0 || a + 1 >= static_cast<Index>(edgeStart_.size())) return -1;
-  const auto first = edgeOther_.begin() + edgeStart_[a];
-  const auto last = edgeOther_.begin() + edgeStart_[a + 1];
-  const auto it = std::lower_bound(first, last, b);
-  return (it != last && *it == b) ? static_cast<Index>(it - edgeOther_.begin()) : -1;
-}
+Index LagrangeSpace::numEdges() const { return topology_->numFacets(); }
+
+Index LagrangeSpace::findEdge(Index a, Index b) const { return topology_->findFacet({a, b}); }
 
 NodeList LagrangeSpace::cellNodes(Index cell) const {
   NodeList list;

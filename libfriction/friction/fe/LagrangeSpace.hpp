@@ -13,12 +13,15 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "friction/core/Types.hpp"
 #include "friction/mesh/Mesh.hpp"
 
 namespace friction {
+
+class MeshTopology;
 
 /// Up to six node numbers (a cell's or an edge's), by value: no heap allocation.
 struct NodeList {
@@ -49,7 +52,7 @@ class LagrangeSpace {
   /// Nodes per edge: 2 (P1) or 3 (P2).
   int nodesPerEdge() const { return degree_ + 1; }
   /// Number of distinct triangle edges of the mesh.
-  Index numEdges() const { return static_cast<Index>(edgeOther_.size()); }
+  Index numEdges() const;
 
   /// Global dof of component `component` (0 = x, 1 = y) of `node`.
   static Index dof(Index node, int component) { return 2 * node + component; }
@@ -90,11 +93,9 @@ class LagrangeSpace {
   std::vector<Vector2> coordinates_;
   /// Local-to-global node map, nodesPerCell() entries per cell.
   std::vector<Index> cellNodes_;
-  /// Edge table in compressed rows: edges {a, b} with a < b are edgeOther_[k] = b for
-  /// k in [edgeStart_[a], edgeStart_[a+1]), sorted by b. Edge k has midpoint node
-  /// numPoints + k.
-  std::vector<Index> edgeStart_;
-  std::vector<Index> edgeOther_;
+  /// The mesh's topology; edge k is its facet k (ordered by (a, b), a < b) and has midpoint
+  /// node numPoints + k. Edges are facets in 2D only: P2 on tetrahedra needs an edge table.
+  std::shared_ptr<const MeshTopology> topology_;
 };
 
 }  // namespace friction

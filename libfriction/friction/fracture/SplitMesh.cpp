@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "friction/fracture/SignConventions.hpp"
+#include "friction/mesh/MeshTopology.hpp"
 
 namespace friction {
 
@@ -25,11 +26,6 @@ struct UnionFind {
     return i;
   }
   void unite(int a, int b) { parent[find(a)] = find(b); }
-};
-
-struct EdgeTriangles {
-  Index tri[2] = {-1, -1};
-  int count = 0;
 };
 
 }  // namespace
@@ -67,24 +63,15 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
   const Index nPoints = mesh.numPoints();
 
   // Triangle sides -> the (at most two) triangles they bound.
-  std::unordered_map<std::uint64_t, EdgeTriangles> sides;
-  sides.reserve(mesh.triangles.size() * 2);
-  for (Index t = 0; t < mesh.numTriangles(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      EdgeTriangles& e = sides[sideKey(tri[k], tri[(k + 1) % 3])];
-      if (e.count < 2) e.tri[e.count] = t;
-      ++e.count;
-    }
-  }
-  for (const auto& [key, e] : sides) {
-    if (e.count > 2) {
-      const Index a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
-      throw InputError(file, "the mesh is not a valid 2D triangulation: the edge " +
-                                 formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
-                                 " is a side of " + std::to_string(e.count) +
-                                 " triangles (at most 2 expected)");
-    }
+  const auto topology = mesh.topology();
+  const MeshTopology& topo = *topology;
+  if (!topo.overSharedFacets().empty()) {
+    const Index f = topo.overSharedFacets().front();
+    const Index a = topo.facetVertex(f, 0), b = topo.facetVertex(f, 1);
+    throw InputError(file, "the mesh is not a valid 2D triangulation: the edge " +
+                               formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
+                               " is a side of " + std::to_string(topo.numCellsOf(f)) +
+                               " triangles (at most 2 expected)");
   }
 
   // Points that coincide with another point (only a split mesh has them).
@@ -97,28 +84,27 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
 
   // 1. Collect each fracture's edges and check each is an interior side of the triangulation.
   std::vector<std::vector<std::array<Index, 2>>> fracEdges(specs.size());
-  std::unordered_map<std::uint64_t, int> fractureOfEdge;  // edge key -> fracture index
+  std::vector<int> fractureOfEdge(static_cast<std::size_t>(topo.numFacets()),
+                                  -1);  // side -> fracture
   for (std::size_t f = 0; f < specs.size(); ++f) {
     const FractureSpec& spec = specs[f];
     for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
       if (mesh.edgeLabel[e] != spec.label) continue;
       const auto [a, b] = mesh.edges[e];
-      const std::uint64_t key = sideKey(a, b);
-      auto it = fractureOfEdge.find(key);
-      if (it != fractureOfEdge.end()) {
-        if (it->second == static_cast<int>(f)) continue;  // listed twice in one patch
-        throw InputError(spec.where, "fractures '" + specs[it->second].name + "' and '" +
+      const Index side = topo.findFacet({a, b});
+      if (side >= 0 && fractureOfEdge[side] >= 0) {
+        if (fractureOfEdge[side] == static_cast<int>(f)) continue;  // listed twice in one patch
+        throw InputError(spec.where, "fractures '" + specs[fractureOfEdge[side]].name + "' and '" +
                                          spec.name + "' share the edge " +
                                          formatPoint(mesh.points[a]) + "-" +
                                          formatPoint(mesh.points[b]) + " of " + file +
                                          ": a fracture patch must be listed once");
       }
-      auto side = sides.find(key);
-      if (side == sides.end())
+      if (side < 0)
         throw InputError(file, "fracture '" + spec.name + "': its edge " +
                                    formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
                                    " is not a side of any triangle");
-      if (side->second.count == 1) {
+      if (topo.isBoundary(side)) {
         if (hasTwin(a) || hasTwin(b))
           throw InputError(file, "fracture '" + spec.name + "' is already split in this mesh " +
                                      "(its edge " + formatPoint(mesh.points[a]) + "-" +
@@ -130,7 +116,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
                                    " lies on the outer boundary of the mesh; a fracture must be "
                                    "inside the body (a side of two triangles)");
       }
-      fractureOfEdge.emplace(key, static_cast<int>(f));
+      fractureOfEdge[side] = static_cast<int>(f);
       fracEdges[f].push_back({a, b});
     }
     if (fracEdges[f].empty())
@@ -279,11 +265,10 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       for (std::size_t p = 0; p < tris.size(); ++p)
         for (Index w : mesh.triangles[tris[p]]) {
           if (w == v) continue;
-          const std::uint64_t key = sideKey(v, w);
-          if (fractureOfEdge.count(key)) continue;
-          const EdgeTriangles& e = sides.at(key);
-          if (e.count != 2) continue;
-          const Index other = e.tri[0] == tris[p] ? e.tri[1] : e.tri[0];
+          const Index side = topo.findFacet({v, w});
+          if (fractureOfEdge[side] >= 0 || topo.numCellsOf(side) != 2) continue;
+          const Index t0 = topo.cellOf(side, 0).cell, t1 = topo.cellOf(side, 1).cell;
+          const Index other = t0 == tris[p] ? t1 : t0;
           const auto q = std::find(tris.begin(), tris.end(), other) - tris.begin();
           uf.unite(static_cast<int>(p), static_cast<int>(q));
         }
@@ -358,15 +343,16 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
   // 5. Boundary patches follow the copies their triangle uses.
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
     const auto [a, b] = mesh.edges[e];
-    if (fractureOfEdge.count(sideKey(a, b))) continue;
-    auto side = sides.find(sideKey(a, b));
-    if (side == sides.end())
+    const Index side = topo.findFacet({a, b});
+    if (side >= 0 && fractureOfEdge[side] >= 0) continue;
+    if (side < 0)
       throw InputError(file, "edge " + formatPoint(mesh.points[a]) + "-" +
                                  formatPoint(mesh.points[b]) + " with label " +
                                  std::to_string(mesh.edgeLabel[e]) +
                                  " is not a side of any triangle");
-    const auto& orig = mesh.triangles[side->second.tri[0]];
-    const auto& split = out.mesh.triangles[side->second.tri[0]];
+    const Index t = topo.cellOf(side, 0).cell;
+    const auto& orig = mesh.triangles[t];
+    const auto& split = out.mesh.triangles[t];
     std::array<Index, 2> ne{a, b};
     for (Index& x : ne)
       for (int k = 0; k < 3; ++k)

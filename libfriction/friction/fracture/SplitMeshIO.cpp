@@ -9,11 +9,11 @@
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <unordered_map>
 
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 #include "friction/fracture/SignConventions.hpp"
+#include "friction/mesh/MeshTopology.hpp"
 
 namespace friction {
 
@@ -154,19 +154,17 @@ SplitMesh readSplitMesh(const std::string& path) {
   // A point no triangle uses would be a node without stiffness (and no row in the
   // split-to-unsplit map the solver builds cell by cell).
   std::vector<char> used(nPoints, 0);
-  std::unordered_map<std::uint64_t, int> sides;
   for (const auto& t : m.triangles)
-    for (int k = 0; k < 3; ++k) {
-      used[t[k]] = 1;
-      ++sides[sideKey(t[k], t[(k + 1) % 3])];
-    }
+    for (Index v : t) used[v] = 1;
   for (Index i = 0; i < nPoints; ++i)
     if (!used[i])
       dict.fail("points", "key 'points': point " + std::to_string(i) +
                               " is used by no triangle (expected every point to be a vertex of "
                               "a triangle)" +
                               resplit);
-  const auto isSide = [&](Index a, Index b) { return sides.count(sideKey(a, b)) > 0; };
+  // Built here once, kept by the mesh for the solver (boundary conditions, FE spaces).
+  const auto topology = m.topology();
+  const auto isSide = [&](Index a, Index b) { return topology->findFacet({a, b}) >= 0; };
   for (long r : dict.getIntList("regions")) m.triangleRegion.push_back(static_cast<int>(r));
   if (m.triangleRegion.size() != m.triangles.size())
     dict.fail("regions", "key 'regions': " + std::to_string(m.triangleRegion.size()) +

@@ -1,4 +1,4 @@
-// Mesh: triangle areas.
+// Mesh: triangle areas, the shared topology.
 #include "friction/mesh/Mesh.hpp"
 
 #include <cmath>
@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "friction/core/Assert.hpp"
+#include "friction/mesh/MeshTopology.hpp"
 
 namespace friction {
 
@@ -23,6 +24,12 @@ double Mesh::totalArea() const {
   double sum = 0;
   for (Index t = 0; t < numTriangles(); ++t) sum += std::abs(signedArea(t));
   return sum;
+}
+
+std::shared_ptr<const MeshTopology> Mesh::topology() const {
+  if (!topology_ || !topology_->describes(*this))
+    topology_ = std::make_shared<const MeshTopology>(*this);
+  return topology_;
 }
 
 std::string formatPoint(const Vector2& p) {

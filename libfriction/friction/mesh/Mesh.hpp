@@ -5,12 +5,15 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "friction/core/Types.hpp"
 
 namespace friction {
+
+class MeshTopology;
 
 struct Mesh {
   /// File the mesh was read from, and its format ("FreeFEM .msh", "gmsh .msh 2.2",
@@ -51,6 +54,15 @@ struct Mesh {
   double signedArea(Index t) const;
   /// Sum of triangle areas.
   double totalArea() const;
+
+  /// The adjacency of the triangles (MeshTopology.hpp), built on the first call and kept, so
+  /// that every user of this mesh shares one. Rebuilt if the triangles or the number of
+  /// points changed since (checked on each call, O(number of triangles)): keep the pointer
+  /// rather than calling this per lookup. Not thread-safe.
+  std::shared_ptr<const MeshTopology> topology() const;
+
+ private:
+  mutable std::shared_ptr<const MeshTopology> topology_;
 };
 
 /// "(x y)" with 6 significant digits: how messages and summaries name a point.

@@ -5,7 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_set>
+
+#include "friction/mesh/MeshTopology.hpp"
 
 namespace friction {
 
@@ -62,17 +63,10 @@ std::vector<std::pair<Index, Index>> coincidentPoints(const Mesh& mesh) {
   // Vertices joined by a triangle side are a side length apart and so never within the
   // tolerance of each other; a side of (near) zero length is a degenerate triangle, which the
   // readers refuse. Kept as a guard for meshes built in code.
-  std::unordered_set<std::uint64_t> candidates;
-  for (const auto& [v, w] : pairs) candidates.insert(sideKey(v, w));
-  std::unordered_set<std::uint64_t> joined;
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const std::uint64_t key = sideKey(t[k], t[(k + 1) % 3]);
-      if (candidates.count(key)) joined.insert(key);
-    }
+  const auto topology = mesh.topology();
   pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
                              [&](const std::pair<Index, Index>& p) {
-                               return joined.count(sideKey(p.first, p.second)) > 0;
+                               return topology->findFacet({p.first, p.second}) >= 0;
                              }),
               pairs.end());
   std::sort(pairs.begin(), pairs.end());
@@ -80,29 +74,20 @@ std::vector<std::pair<Index, Index>> coincidentPoints(const Mesh& mesh) {
 }
 
 std::vector<std::array<Index, 2>> unlabelledBoundaryEdges(const Mesh& mesh) {
-  // Sorting beats hashing here: one allocation for all sides.
-  struct Side {
-    std::uint64_t key;
-    std::array<Index, 2> edge;
-    bool operator<(const Side& o) const { return key < o.key; }
-  };
-  std::vector<Side> sides;
-  sides.reserve(mesh.triangles.size() * 3);
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      sides.push_back({sideKey(t[k], t[(k + 1) % 3]), {t[k], t[(k + 1) % 3]}});
-  std::sort(sides.begin(), sides.end());
-  std::vector<std::uint64_t> labelled;
-  labelled.reserve(mesh.edges.size());
-  for (const auto& e : mesh.edges) labelled.push_back(sideKey(e[0], e[1]));
-  std::sort(labelled.begin(), labelled.end());
+  const auto topology = mesh.topology();
+  std::vector<char> labelled(static_cast<std::size_t>(topology->numFacets()), 0);
+  for (const auto& e : mesh.edges) {
+    const Index f = topology->findFacet({e[0], e[1]});
+    if (f >= 0) labelled[f] = 1;
+  }
   std::vector<std::array<Index, 2>> out;
-  for (std::size_t i = 0; i < sides.size();) {
-    std::size_t j = i + 1;
-    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
-    if (j == i + 1 && !std::binary_search(labelled.begin(), labelled.end(), sides[i].key))
-      out.push_back(sides[i].edge);
-    i = j;
+  for (Index f = 0; f < topology->numFacets(); ++f) {
+    if (!topology->isBoundary(f) || labelled[f]) continue;
+    // Local side k is opposite vertex k: the side from vertex k + 1 to k + 2, as the
+    // (counter-clockwise) triangle runs.
+    const auto [cell, k] = topology->cellOf(f, 0);
+    out.push_back(
+        {topology->cellVertex(cell, (k + 1) % 3), topology->cellVertex(cell, (k + 2) % 3)});
   }
   std::sort(out.begin(), out.end());
   return out;
