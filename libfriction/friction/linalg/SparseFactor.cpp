@@ -197,22 +197,36 @@ class CholmodBackend : public SparseFactor::Backend {
     double sigma = 0;
     for (int a = 0; a < m; ++a) sigma = std::max(sigma, C.coeff(a, a));
     if (!(sigma > 0)) sigma = 1;
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(static_cast<std::size_t>(A.nonZeros() + B.nonZeros() + C.nonZeros() + m));
-    for (int j = 0; j < n; ++j)
-      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
-        if (it.row() >= j) t.emplace_back(static_cast<int>(it.row()), j, it.value());
-    for (int a = 0; a < m; ++a)
-      for (SparseMatrix::InnerIterator it(B, a); it; ++it)
-        t.emplace_back(n + a, static_cast<int>(it.row()), it.value());
-    for (int a = 0; a < m; ++a) {
-      t.emplace_back(n + a, n + a, sigma);
-      for (SparseMatrix::InnerIterator it(C, a); it; ++it)
-        if (it.row() >= a) t.emplace_back(n + static_cast<int>(it.row()), n + a, it.value());
-    }
+    // Written column by column in compressed form (no triplet sort: at 10⁶ unknowns the
+    // sort alone took seconds): column j < n holds A's entries on and below the diagonal,
+    // then row n + a for every B(j, a); column n + a holds C's lower part plus σ.
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> Brows = B;  // row j: the a with B(j, a)
+    Eigen::SparseMatrix<double> Clower = C.triangularView<Eigen::Lower>();
+    for (int a = 0; a < m; ++a) Clower.coeffRef(a, a) += sigma;
+    Clower.makeCompressed();
     SparseMatrix Ab(n + m, n + m);
-    Ab.setFromTriplets(t.begin(), t.end());
-    Ab.makeCompressed();
+    Eigen::Index nnz = Brows.nonZeros() + Clower.nonZeros();
+    for (int j = 0; j < n; ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it) nnz += it.row() >= j;
+    Ab.resizeNonZeros(nnz);
+    int* outer = Ab.outerIndexPtr();
+    int* inner = Ab.innerIndexPtr();
+    double* value = Ab.valuePtr();
+    int pos = 0;
+    for (int j = 0; j < n; ++j) {
+      outer[j] = pos;
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        if (it.row() >= j) inner[pos] = static_cast<int>(it.row()), value[pos++] = it.value();
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Brows, j); it; ++it)
+        inner[pos] = n + static_cast<int>(it.col()), value[pos++] = it.value();
+    }
+    for (int a = 0; a < m; ++a) {
+      outer[n + a] = pos;
+      for (SparseMatrix::InnerIterator it(Clower, a); it; ++it)
+        inner[pos] = n + static_cast<int>(it.row()), value[pos++] = it.value();
+    }
+    outer[n + m] = pos;
+    FRICTION_ASSERT(pos == nnz, "bordered matrix: entry count");
     cholmod_sparse view = viewLower(Ab);
 
     // 3. Symbolic analysis with that ordering, not postordered (a postorder could move a
