@@ -68,13 +68,18 @@ def fail(msg, code=1):
     sys.exit(code)
 
 
-def read_value(path, key):
-    """The number after `key` in an OpenFOAM-style dictionary (first occurrence)."""
+def read_text(path):
+    """A dictionary's text without // comments."""
     try:
         with open(path) as f:
-            text = re.sub(r"//.*", "", f.read())
+            return re.sub(r"//.*", "", f.read())
     except OSError as e:
         fail("cannot read %s: %s" % (path, e.strerror))
+
+
+def read_value(path, key):
+    """The number after `key` in an OpenFOAM-style dictionary (first occurrence)."""
+    text = read_text(path)
     m = re.search(r"(?m)^\s*%s\s+([-+0-9.eE]+)\s*;" % re.escape(key), text)
     if not m:
         fail("%s: no numeric entry '%s'" % (path, key))
@@ -83,15 +88,13 @@ def read_value(path, key):
 
 def read_case(case):
     mech = os.path.join(case, "constant", "mechanicalProperties")
-    with open(mech) as f:
-        if re.search(r"(?m)^\s*planeStress\s+(yes|true|on)\s*;", re.sub(r"//.*", "", f.read())):
-            fail("%s: planeStress yes is not supported (the benchmark is plane strain)" % mech)
+    if re.search(r"(?m)^\s*planeStress\s+(yes|true|on)\s*;", read_text(mech)):
+        fail("%s: planeStress yes is not supported (the benchmark is plane strain)" % mech)
     lam, mu = read_value(mech, "lambda"), read_value(mech, "mu")
     fric = read_value(os.path.join(case, "constant", "fractureProperties"),
                       "frictionCoefficient")
     dpath = os.path.join(case, "0", "D")
-    with open(dpath) as f:
-        text = re.sub(r"//.*", "", f.read())
+    text = read_text(dpath)
     m = re.search(r"top\s*\{[^}]*\}", text)
     pairs = re.findall(r"\(\s*([-+0-9.eE]+)\s*\(\s*([-+0-9.eE]+)\s+([-+0-9.eE]+)\s*\)\s*\)",
                        m.group(0)) if m else []
