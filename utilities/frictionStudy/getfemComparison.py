@@ -147,14 +147,14 @@ def main():
           "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lf, g = r["lf"], r["gf"]
-        md.append("| n = %d | P%d | %d / %d | %.2f (%.2f) | %d / %d | %.3f (%.3f) | %.1f× (%.1f×) "
-                  "| %.2e | %.2e | %.1e | %s |" % (
+        eq = ("n = %d, %.3f s, **%.1f×**" % (r["eq"][1], r["eq"][0], g["total"] / r["eq"][0])
+              if r["eq"] else "not reached in the sweep")
+        md.append("| n = %d | P%d | %d / %d | %.2f (%.2f) | %d / %d | %.3f (%.3f) "
+                  "| %.1f× (%.1f×) | %.2e | %.2e | %.1e | %s |" % (
                       r["n"], r["k"], lf["dofs"], g["dofs"], g["total"], g["solve"],
                       g["iterations"], lf["iterations"], lf["wallSeconds"], lf["stepSeconds"],
                       g["total"] / lf["wallSeconds"], g["solve"] / lf["stepSeconds"], r["elf"],
-                      r["egf"], r["diff"],
-                      "n = %d, %.3f s, **%.1f×**" % (r["eq"][1], r["eq"][0], g["total"] / r["eq"][0])
-                      if r["eq"] else "not reached in the sweep"))
+                      r["egf"], r["diff"], eq))
     md += ["", "Reference: libfriction P2, n = %d, semismoothNewton at 1e-12 (%d dofs, %.1f s). "
            "Slip error: relative L²(Γ) against it. GetFEM wall: read + setup + solve inside "
            "getfemPaperBenchmark.py (no interpreter start-up), solve = Model.solve (assembly, "
@@ -162,10 +162,11 @@ def main():
            "process (reading, assembly, factorisation, Newton, writing), solve = its "
            "factorisation plus its step time (Newton). Last column: libfriction's cheapest "
            "measured run of the same order (meshes %s) whose slip error is at most GetFEM's, "
-           "and GetFEM's wall over its wall. Best of %d. Machine: %s cores, %s, %s; total %.0f s."
+           "and GetFEM's wall over its wall. Best of %d. Machine: %s cores, %s, %s; "
+           "total %.0f s."
            % (a.ref, refres["dofs"], refres["wallSeconds"],
-              ", ".join(str(n) for n in sorted(set(a.sweep) | set(a.meshes))), a.repeat, nproc, cpu, mem,
-              time.perf_counter() - t0)]
+              ", ".join(str(n) for n in sorted(set(a.sweep) | set(a.meshes))), a.repeat,
+              nproc, cpu, mem, time.perf_counter() - t0)]
     text = "\n".join(md) + "\n"
     with open(os.path.join(work, "getfemComparison.md"), "w") as f:
         f.write(text)

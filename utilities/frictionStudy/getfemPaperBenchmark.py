@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """getfemPaperBenchmark: the paper benchmark solved independently with GetFEM 5.4.
 
-Reads a cases/paperBenchmark case folder (its FreeFEM mesh constant/mesh/square.msh and
-the values in constant/mechanicalProperties, constant/fractureProperties and 0/D), solves
+Reads a cases/paperBenchmark case folder (the FreeFEM mesh and labels named in
+system/meshDict, regions 1 below and 2 above the fracture, and the values in
+constant/mechanicalProperties, constant/fractureProperties and 0/D), solves
 the frictional problem on the same triangles with GetFEM's assembly and Newton, and
 writes the slip at the fracture nodes with the wall times of each phase.
 
@@ -101,7 +102,20 @@ def read_case(case):
     if not pairs:
         fail("%s: top: expected 'value table ((t (ux uy)) ...)'" % dpath)
     t, ux, uy = (float(v) for v in max(pairs, key=lambda p: float(p[0])))
-    return dict(lam=lam, mu=mu, fric=fric, top=(ux, uy))
+    # the mesh and its labels as system/meshDict names them for libfriction
+    mdict = os.path.join(case, "system", "meshDict")
+    text = read_text(mdict)
+    m = re.search(r'(?m)^\s*mesh\s+"([^"]+)"\s*;', text)
+    if not m:
+        fail('%s: no entry mesh "FILE";' % mdict)
+    labels = {}
+    for patch in ("bottom", "top", "fracture"):
+        lab = re.search(r"(?m)^\s*%s\s+(\d+)\s*;" % patch, text)
+        if not lab:
+            fail("%s: patches: no numeric label for '%s'" % (mdict, patch))
+        labels[patch] = int(lab.group(1))
+    return dict(lam=lam, mu=mu, fric=fric, top=(ux, uy), mesh=os.path.join(case, m.group(1)),
+                labels=labels)
 
 
 def read_freefem_mesh(path):
@@ -165,12 +179,11 @@ def main():
     gf.util_trace_level(0)
     gf.util_warning_level(0)
     case = a.case
-    BOTTOM, RIGHT, TOP, LEFT, FRAC = 1, 2, 3, 4, 5
 
     t0 = time.perf_counter()
     par = read_case(case)
-    pts, tri, region, edges, elabel = read_freefem_mesh(
-        os.path.join(case, "constant", "mesh", "square.msh"))
+    BOTTOM, TOP, FRAC = (par["labels"][p] for p in ("bottom", "top", "fracture"))
+    pts, tri, region, edges, elabel = read_freefem_mesh(par["mesh"])
     t_read = time.perf_counter() - t0
 
     t0 = time.perf_counter()
@@ -238,9 +251,10 @@ def main():
     t_setup = time.perf_counter() - t0
 
     t0 = time.perf_counter()
-    nit, conv = md.solve("max_res", a.maxRes, "max_iter", a.maxIter, "lsolver", a.lsolver, *(["noisy"] if a.noisy else []))
+    nit, conv = md.solve("max_res", a.maxRes, "max_iter", a.maxIter, "lsolver", a.lsolver,
+                         *(["noisy"] if a.noisy else []))
     t_solve = time.perf_counter() - t0
-    res = np.linalg.norm(md.rhs())
+    res = np.linalg.norm(md.rhs())          # the last assembled residual
 
     # fracture nodes: the dof nodes of mf1 on the fracture (vertices and, P2, midpoints)
     dofs = mf1.basic_dof_on_region(FRAC)
