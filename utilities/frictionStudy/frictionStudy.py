@@ -260,14 +260,17 @@ def fmt(v, kind="g"):
 
 
 def getfem_note():
+    """The GetFEM comparison is its own benchmark (getfemComparison.py, a few minutes):
+    this study only says where it is and whether it can run here."""
     try:
         import getfem  # noqa: F401
-        return ("python3-getfem is importable, but the GetFEM frictional-contact comparison "
-                "is not implemented in this study yet.")
+        return ("The comparison with an independent GetFEM 5.4 solver (same mesh, same "
+                "orders, errors against a fine reference) is a separate benchmark: "
+                "`/usr/bin/python3 utilities/frictionStudy/getfemComparison.py`.")
     except ImportError:
-        return ("GetFEM comparison skipped: python3-getfem is not installed (Debian 12 has "
-                "5.4.2; with libgetfem5 and libqhull8.0 it is about 4.6 MB to download, "
-                "16 MB installed).")
+        return ("GetFEM comparison skipped: python3-getfem is not installed (optional; "
+                "Debian 12 has 5.4.2: apt-get install python3-getfem, about 16 MB); with it, "
+                "`utilities/frictionStudy/getfemComparison.py` runs the comparison.")
 
 
 def write_outputs(out, rows, ratio_lines, mode, total_seconds, refs):
