@@ -296,15 +296,13 @@ InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
     const Vector2 t = nodes_[node[a]].tangent * mask_[node[a]];
     columns.col(a) = MS.col(2 * a) * t.x() + MS.col(2 * a + 1) * t.y();
   }
-  for (Index b = 0; b < m; ++b) {
-    const ControlNode& v = nodes_[node[b]];
-    const double w = weights_[node[b]];
-    for (Index a = 0; a < m; ++a) {
-      const Vector2 s = columns.block<2, 1>(2 * b, a) / w;
+  for (Index a = 0; a < m; ++a)  // column by column: both matrices are column-major
+    for (Index b = 0; b < m; ++b) {
+      const ControlNode& v = nodes_[node[b]];
+      const Vector2 s = columns.block<2, 1>(2 * b, a) / weights_[node[b]];
       op.Stt(node[b], node[a]) = s.dot(v.tangent);
       op.Snt(node[b], node[a]) = s.dot(v.normal);
     }
-  }
   return op;
 }
 
