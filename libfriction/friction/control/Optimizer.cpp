@@ -434,7 +434,6 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
     Stt_ = std::move(op.Stt);
     Snt_ = std::move(op.Snt);
     setupSolves = op.solves;
-    formedBy_ = op.method;
     cachedFor_ = &resp;
   }
 

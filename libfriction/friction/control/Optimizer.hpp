@@ -168,10 +168,7 @@ class SemismoothNewton : public Optimizer {
   bool wantsInterfaceOperator() const override {
     return variant_ == Variant::condensed && interfaceMethod_ == InterfaceMethod::factorisation;
   }
-  Variant variant() const { return variant_; }
   InterfaceMethod interfaceMethod() const { return interfaceMethod_; }
-  /// How the S in use was formed (after the first minimize()).
-  InterfaceMethod formedBy() const { return formedBy_; }
 
  private:
   OptimizerReport minimizeKrylov(ControlProblem& problem, Eigen::VectorXd& beta);
@@ -184,7 +181,6 @@ class SemismoothNewton : public Optimizer {
   int maxBacktracks_;
   Variant variant_;
   InterfaceMethod interfaceMethod_;
-  InterfaceMethod formedBy_ = InterfaceMethod::dualSolves;
   int activeSetChanges_ = 0;
   Eigen::MatrixXd Stt_, Snt_;  // cached for the run
   const SlipResponse* cachedFor_ = nullptr;

@@ -426,11 +426,17 @@ SparseFactor::~SparseFactor() = default;
 SparseFactor::SparseFactor(SparseFactor&&) noexcept = default;
 SparseFactor& SparseFactor::operator=(SparseFactor&&) noexcept = default;
 
-FactorStatus SparseFactor::factor(const SparseMatrix& A) {
+FactorStatus SparseFactor::factor(const SparseMatrix& A) { return factorImpl(A, nullptr, nullptr); }
+
+FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix* B,
+                                      const SparseMatrix* C) {
   FRICTION_ASSERT(A.rows() == A.cols(), "factor: matrix must be square");
   const auto start = std::chrono::steady_clock::now();
   ++numFactorizations_;
   rows_ = A.rows();
+  schur_.resize(0, 0);
+  schurSolves_ = 0;
+  schurSeconds_ = 0;
   maxAbsEntry_ = 0.0;
   for (Eigen::Index k = 0; k < A.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(A, k); it; ++it)
@@ -444,12 +450,20 @@ FactorStatus SparseFactor::factor(const SparseMatrix& A) {
     factorSeconds_ += secondsSince(start);
     return status_;
   }
-  status_ = impl_->factor(A);
+  // The bordered factorisation where the backend has one (and the border is finite: a
+  // non-finite border is left to the blocked solves, whose results then say so).
+  bool bordered = false;
+  if (B && C) {
+    bool finite = true;
+    for (const SparseMatrix* M : {B, C})
+      for (Eigen::Index k = 0; k < M->outerSize(); ++k)
+        for (SparseMatrix::InnerIterator it(*M, k); it; ++it) finite &= std::isfinite(it.value());
+    bordered = finite && impl_->factorBordered(A, *B, *C, schur_, status_);
+  }
+  if (!bordered) status_ = impl_->factor(A);
   factored_ = true;
-  schur_.resize(0, 0);
-  schurSolves_ = 0;
-  schurSeconds_ = 0;
   status_ = judgePivots(A);
+  if (status_ != FactorStatus::ok) schur_.resize(0, 0);
   factorSeconds_ += secondsSince(start);
   return status_;
 }
@@ -477,39 +491,15 @@ FactorStatus SparseFactor::factorWithSchur(const SparseMatrix& A, const SparseMa
   FRICTION_ASSERT(B.rows() == A.rows() && C.rows() == B.cols() && C.cols() == B.cols(),
                   "factorWithSchur: the border does not fit the matrix");
   if (B.cols() == 0) return factor(A);
-  const auto start = std::chrono::steady_clock::now();
-  // Non-finite entries, and backends without a bordered factorisation: A alone, then the
-  // complement by blocks of solves.
-  bool finite = true;
-  for (const SparseMatrix* M : {&A, &B, &C})
-    for (Eigen::Index k = 0; k < M->outerSize(); ++k)
-      for (SparseMatrix::InnerIterator it(*M, k); it; ++it) finite &= std::isfinite(it.value());
-  FactorStatus status = FactorStatus::failed;
-  Eigen::MatrixXd schur;
-  if (finite && impl_->factorBordered(A, B, C, schur, status)) {
-    ++numFactorizations_;
-    rows_ = A.rows();
-    maxAbsEntry_ = 0.0;
-    for (Eigen::Index k = 0; k < A.outerSize(); ++k)
-      for (SparseMatrix::InnerIterator it(A, k); it; ++it)
-        maxAbsEntry_ = std::max(maxAbsEntry_, std::abs(it.value()));
-    status_ = status;
-    factored_ = true;
-    status_ = judgePivots(A);
-    const double total = secondsSince(start);
-    factorSeconds_ += total;
-    schurSolves_ = 0;
-    schur_ = status_ == FactorStatus::ok ? std::move(schur) : Eigen::MatrixXd();
-    schurSeconds_ = 0;  // part of the factorisation
-    return status_;
+  factorImpl(A, &B, &C);
+  // Backends without a bordered factorisation: the complement by blocks of solves.
+  if (status_ == FactorStatus::ok && schur_.size() == 0) {
+    const auto start = std::chrono::steady_clock::now();
+    const long solves0 = numSolves_;
+    schur_ = schurBySolves(B, C);
+    schurSolves_ = numSolves_ - solves0;
+    schurSeconds_ = secondsSince(start);
   }
-  factor(A);
-  if (status_ != FactorStatus::ok) return status_;
-  const auto schurStart = std::chrono::steady_clock::now();
-  const long solves0 = numSolves_;
-  schur_ = schurBySolves(B, C);
-  schurSolves_ = numSolves_ - solves0;
-  schurSeconds_ = secondsSince(schurStart);
   return status_;
 }
 

@@ -134,7 +134,11 @@ class SparseFactor {
   long schurSolves_ = 0;
   double schurSeconds_ = 0.0;
 
-  // Shared by factor() and factorWithSchur(): the pivot test on the first rows_ rows.
+  // factor() and factorWithSchur(): A alone, or bordered by B and C where the backend can.
+  FactorStatus factorImpl(const Eigen::SparseMatrix<double>& A,
+                          const Eigen::SparseMatrix<double>* B,
+                          const Eigen::SparseMatrix<double>* C);
+  // The pivot test on the first rows_ rows.
   FactorStatus judgePivots(const Eigen::SparseMatrix<double>& A);
 };
 

@@ -106,3 +106,31 @@ TEST_CASE("all optimizers agree on the solution", "[control][optimizer]") {
     CHECK((beta - reference).norm() <= 1e-4 * reference.norm());
   }
 }
+
+TEST_CASE("semismoothNewton reads interfaceOperator, and refuses it for the krylov variant",
+          "[control][optimizer]") {
+  // The key decides whether the case factors the bordered matrix (docs/method.md §4).
+  auto read = [](const std::string& text) {
+    Dictionary d = Dictionary::parse(text, "frictionSolution");
+    auto opt = Optimizer::New(d);
+    d.checkAllRead();
+    return opt;
+  };
+  CHECK(read("type semismoothNewton;")->wantsInterfaceOperator());
+  CHECK(read("type semismoothNewton; interfaceOperator factorisation;")->wantsInterfaceOperator());
+  for (const char* how : {"blockSolves", "dualSolves"}) {
+    auto opt = read(std::string("type semismoothNewton; interfaceOperator ") + how + ";");
+    CHECK_FALSE(opt->wantsInterfaceOperator());
+    const auto* newton = dynamic_cast<const SemismoothNewton*>(opt.get());
+    REQUIRE(newton != nullptr);
+    CHECK(toString(newton->interfaceMethod()) == std::string(how));
+  }
+  CHECK_FALSE(read("type semismoothNewton; variant krylov;")->wantsInterfaceOperator());
+  CHECK_FALSE(read("type lbfgs;")->wantsInterfaceOperator());
+  // With krylov the key has no meaning: refused, naming the key and the reason.
+  CHECK_THROWS_WITH(read("type semismoothNewton; variant krylov; interfaceOperator dualSolves;"),
+                    Catch::Contains("interfaceOperator") && Catch::Contains("condensed only"));
+  // A misspelt choice lists the valid ones.
+  CHECK_THROWS_WITH(read("type semismoothNewton; interfaceOperator factorization;"),
+                    Catch::Contains("factorisation") && Catch::Contains("blockSolves"));
+}
