@@ -1,8 +1,6 @@
-// ElasticityAssembler: P1 / P2 plane elasticity on affine triangles (docs/method.md §1, §4).
-//
-// Element geometry is carried by barycentric coordinates: on an affine triangle ∇λ_i is
-// constant, so every basis gradient is a polynomial in λ times the three ∇λ_i, and no
-// reference-element Jacobian inverse per quadrature point is needed.
+// ElasticityAssembler: P1 / P2 elasticity on affine simplices (docs/method.md §1, §4): the
+// global loops over the mesh; the element kernels (fe/Simplex.hpp) are templated on the
+// dimension and instantiated once per call for the mesh's dimension.
 #include "friction/fe/ElasticityAssembler.hpp"
 
 #include <algorithm>
@@ -10,94 +8,40 @@
 
 #include "friction/core/Assert.hpp"
 #include "friction/fe/Quadrature.hpp"
+#include "friction/fe/Simplex.hpp"
 
 namespace friction {
 
 namespace {
 
-constexpr int kMaxNodes = 6;
-constexpr int kEdgeVertex[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+constexpr int kMaxNodes = SimplexNodes<2>::max;
 
-/// Affine triangle: first vertex, area and the constant barycentric gradients.
-struct CellGeometry {
-  Vector2 p0;
-  double area = 0.0;
-  std::array<Vector2, 3> gradLambda;
-  std::array<Vector2, 3> vertex;
+/// The mesh's dimension: the element kernels are instantiated for it once per call.
+int meshDimension(const Mesh&) { return 2; }
 
-  /// Barycentric coordinates of x: λ_i(x) = λ_i(p0) + ∇λ_i · (x − p0).
-  std::array<double, 3> barycentric(const Vector2& x) const {
-    const Vector2 d = x - p0;
-    return {1.0 + gradLambda[0].dot(d), gradLambda[1].dot(d), gradLambda[2].dot(d)};
-  }
-  Vector2 point(const std::array<double, 3>& l) const {
-    return l[0] * vertex[0] + l[1] * vertex[1] + l[2] * vertex[2];
-  }
-};
+/// The cell's simplex from the mesh (the one place that reads cell vertices).
+template <int dim>
+Simplex<dim> cellGeometry(const Mesh& mesh, Index cell);
 
-CellGeometry cellGeometry(const Mesh& mesh, Index cell) {
+template <>
+Simplex<2> cellGeometry<2>(const Mesh& mesh, Index cell) {
   const auto& t = mesh.triangles[static_cast<std::size_t>(cell)];
-  CellGeometry g;
-  for (int i = 0; i < 3; ++i) g.vertex[i] = mesh.points[static_cast<std::size_t>(t[i])];
-  const Vector2& a = g.vertex[0];
-  const Vector2& b = g.vertex[1];
-  const Vector2& c = g.vertex[2];
-  g.p0 = a;
-  const double twiceArea = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
-  FRICTION_ASSERT(twiceArea > 0.0, "triangle is not counter-clockwise");
-  g.area = 0.5 * twiceArea;
-  // ∇λ_i is the inward normal of the opposite side scaled by 1/(2 area).
-  g.gradLambda[0] = Vector2(b.y() - c.y(), c.x() - b.x()) / twiceArea;
-  g.gradLambda[1] = Vector2(c.y() - a.y(), a.x() - c.x()) / twiceArea;
-  g.gradLambda[2] = Vector2(a.y() - b.y(), b.x() - a.x()) / twiceArea;
-  return g;
+  std::array<Vector2, 3> vertex;
+  for (int i = 0; i < 3; ++i) vertex[i] = mesh.points[static_cast<std::size_t>(t[i])];
+  return Simplex<2>(vertex);
 }
 
-/// Basis values at barycentric point l, in LagrangeSpace's local node order.
-void basisValues(int degree, const std::array<double, 3>& l, double* phi) {
-  if (degree == 1) {
-    phi[0] = l[0];
-    phi[1] = l[1];
-    phi[2] = l[2];
-    return;
-  }
-  for (int i = 0; i < 3; ++i) phi[i] = l[i] * (2.0 * l[i] - 1.0);
-  for (int e = 0; e < 3; ++e) phi[3 + e] = 4.0 * l[kEdgeVertex[e][0]] * l[kEdgeVertex[e][1]];
+/// λ of the element law: λ* (plane strain or stress) in 2D, the 3D material's λ in 3D.
+template <int dim>
+double lameLambda(const Material& material) {
+  if constexpr (dim == 2)
+    return material.lambdaStar();
+  else
+    return material.lambda();
 }
 
-/// Basis gradients [1/m] at barycentric point l.
-void basisGradients(int degree, const std::array<double, 3>& l, const CellGeometry& g,
-                    Vector2* grad) {
-  if (degree == 1) {
-    for (int i = 0; i < 3; ++i) grad[i] = g.gradLambda[i];
-    return;
-  }
-  for (int i = 0; i < 3; ++i) grad[i] = (4.0 * l[i] - 1.0) * g.gradLambda[i];
-  for (int e = 0; e < 3; ++e) {
-    const int a = kEdgeVertex[e][0], b = kEdgeVertex[e][1];
-    grad[3 + e] = 4.0 * (l[a] * g.gradLambda[b] + l[b] * g.gradLambda[a]);
-  }
-}
-
-/// Basis values on an edge at s ∈ [0, 1] from a to b, node order (a, [mid], b).
-void edgeBasisValues(int degree, double s, double* phi) {
-  if (degree == 1) {
-    phi[0] = 1.0 - s;
-    phi[1] = s;
-  } else {
-    phi[0] = (1.0 - s) * (1.0 - 2.0 * s);
-    phi[1] = 4.0 * s * (1.0 - s);
-    phi[2] = s * (2.0 * s - 1.0);
-  }
-}
-
-}  // namespace
-
-ElasticityAssembler::ElasticityAssembler(const LagrangeSpace& space, const Material& material)
-    : space_(&space), material_(&material) {}
-
-Eigen::SparseMatrix<double> ElasticityAssembler::stiffness() const {
-  const LagrangeSpace& V = *space_;
+template <int dim>
+Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V, const Material& material) {
   const Mesh& mesh = V.mesh();
   const Index nn = V.numNodes(), nc = V.numCells();
   const int npc = V.nodesPerCell();
@@ -127,55 +71,35 @@ Eigen::SparseMatrix<double> ElasticityAssembler::stiffness() const {
   }
   std::vector<Index>().swap(cellOf);
 
-  // Dof pattern: column 2n + c holds rows 2m, 2m + 1 for each neighbour m of n, so both
-  // columns of a node have 2 · deg(n) entries and rows are sorted because adj is.
+  // Dof pattern: column dim·n + c holds rows dim·m … dim·m + dim − 1 for each neighbour m of
+  // n, so every column of a node has dim · deg(n) entries and rows are sorted because adj is.
   Eigen::SparseMatrix<double> K(V.numDofs(), V.numDofs());
-  const Eigen::Index nnz = 4 * static_cast<Eigen::Index>(adj.size());
+  const Eigen::Index nnz = dim * dim * static_cast<Eigen::Index>(adj.size());
   K.resizeNonZeros(nnz);
   int* outer = K.outerIndexPtr();
   int* inner = K.innerIndexPtr();
   double* value = K.valuePtr();
   for (Index n = 0; n < nn; ++n) {
     const Index deg = adjStart[n + 1] - adjStart[n];
-    for (int c = 0; c < 2; ++c) {
-      const Index col = 2 * n + c;
-      outer[col] = 4 * adjStart[n] + 2 * c * deg;
-      for (Index k = 0; k < deg; ++k) {
-        inner[outer[col] + 2 * k] = 2 * adj[adjStart[n] + k];
-        inner[outer[col] + 2 * k + 1] = 2 * adj[adjStart[n] + k] + 1;
-      }
+    for (int c = 0; c < dim; ++c) {
+      const Index col = dim * n + c;
+      outer[col] = dim * dim * adjStart[n] + dim * c * deg;
+      for (Index k = 0; k < deg; ++k)
+        for (int r = 0; r < dim; ++r)
+          inner[outer[col] + dim * k + r] = dim * adj[adjStart[n] + k] + r;
     }
   }
-  outer[2 * nn] = static_cast<int>(nnz);
+  outer[dim * nn] = static_cast<int>(nnz);
   std::fill(value, value + nnz, 0.0);
 
   // Element loop. P1 gradients are constant (one point); for P2 the integrand ∇φ_i · ∇φ_j is
-  // quadratic, so the three-point degree-2 rule is exact.
-  const double lam = material_->lambdaStar(), mu = material_->mu();
-  const TriangleQuadrature rule = triangleQuadrature(V.degree() == 1 ? 0 : 2);
-  Vector2 grad[kMaxNodes];
-  double ke[2 * kMaxNodes][2 * kMaxNodes];
+  // quadratic, so the degree-2 rule is exact.
+  const double lam = lameLambda<dim>(material), mu = material.mu();
+  const SimplexQuadrature<dim> rule = simplexQuadrature<dim>(V.degree() == 1 ? 0 : 2);
+  ElementMatrix<dim> ke;
   for (Index c = 0; c < nc; ++c) {
-    const CellGeometry g = cellGeometry(mesh, c);
     const NodeList nodes = V.cellNodes(c);
-    for (int i = 0; i < 2 * npc; ++i)
-      for (int j = 0; j < 2 * npc; ++j) ke[i][j] = 0.0;
-    for (int q = 0; q < rule.size(); ++q) {
-      basisGradients(V.degree(), rule.barycentric[q], g, grad);
-      const double w = g.area * rule.weights[q];
-      // Row dof (i, r), column dof (j, c):
-      // λ* ∂_r φ_i ∂_c φ_j + μ ∂_c φ_i ∂_r φ_j + μ δ_rc ∇φ_i · ∇φ_j.
-      for (int i = 0; i < npc; ++i)
-        for (int j = 0; j < npc; ++j) {
-          const Vector2& gi = grad[i];
-          const Vector2& gj = grad[j];
-          const double dot = mu * gi.dot(gj);
-          for (int r = 0; r < 2; ++r)
-            for (int s = 0; s < 2; ++s)
-              ke[2 * i + r][2 * j + s] +=
-                  w * (lam * gi[r] * gj[s] + mu * gi[s] * gj[r] + (r == s ? dot : 0.0));
-        }
-    }
+    elementStiffness<dim>(V.degree(), cellGeometry<dim>(mesh, c), lam, mu, rule, ke);
     // Scatter: column node b, row node a at position k of adj(b).
     for (int j = 0; j < npc; ++j) {
       const Index b = nodes[j];
@@ -183,15 +107,29 @@ Eigen::SparseMatrix<double> ElasticityAssembler::stiffness() const {
       const Index* last = adj.data() + adjStart[b + 1];
       for (int i = 0; i < npc; ++i) {
         const Index k = static_cast<Index>(std::lower_bound(first, last, nodes[i]) - first);
-        for (int s = 0; s < 2; ++s) {
-          double* colValues = value + outer[2 * b + s] + 2 * k;
-          colValues[0] += ke[2 * i][2 * j + s];
-          colValues[1] += ke[2 * i + 1][2 * j + s];
+        for (int s = 0; s < dim; ++s) {
+          double* colValues = value + outer[dim * b + s] + dim * k;
+          for (int r = 0; r < dim; ++r) colValues[r] += ke(dim * i + r, dim * j + s);
         }
       }
     }
   }
   return K;
+}
+
+}  // namespace
+
+ElasticityAssembler::ElasticityAssembler(const LagrangeSpace& space, const Material& material)
+    : space_(&space), material_(&material) {}
+
+Eigen::SparseMatrix<double> ElasticityAssembler::stiffness() const {
+  switch (meshDimension(space_->mesh())) {
+    case 2:
+      return assembleStiffness<2>(*space_, *material_);
+    default:
+      FRICTION_ASSERT(false, "the mesh's dimension has no element kernels");
+      return {};
+  }
 }
 
 Eigen::VectorXd ElasticityAssembler::bodyForce(const Vector2& f) const {
@@ -200,21 +138,13 @@ Eigen::VectorXd ElasticityAssembler::bodyForce(const Vector2& f) const {
 
 Eigen::VectorXd ElasticityAssembler::bodyForce(const VectorField& f) const {
   const LagrangeSpace& V = *space_;
-  const int npc = V.nodesPerCell();
-  const TriangleQuadrature rule = triangleQuadrature(5);
+  FRICTION_ASSERT(meshDimension(V.mesh()) == 2, "a 2D body force on a 2D mesh");
+  const SimplexQuadrature<2> rule = simplexQuadrature<2>(5);
   Eigen::VectorXd F = Eigen::VectorXd::Zero(V.numDofs());
-  double phi[kMaxNodes];
   for (Index c = 0; c < V.numCells(); ++c) {
-    const CellGeometry g = cellGeometry(V.mesh(), c);
     const NodeList nodes = V.cellNodes(c);
-    for (int q = 0; q < rule.size(); ++q) {
-      basisValues(V.degree(), rule.barycentric[q], phi);
-      const Vector2 fq = g.area * rule.weights[q] * f(g.point(rule.barycentric[q]));
-      for (int i = 0; i < npc; ++i) {
-        F[2 * nodes[i]] += phi[i] * fq.x();
-        F[2 * nodes[i] + 1] += phi[i] * fq.y();
-      }
-    }
+    addBodyLoad<2>(V.degree(), cellGeometry<2>(V.mesh(), c), rule, f,
+                   [&](int i, const Vector2& load) { F.segment<2>(2 * nodes[i]) += load; });
   }
   return F;
 }
@@ -225,23 +155,14 @@ Eigen::VectorXd ElasticityAssembler::traction(int label, const Vector2& g) const
 
 Eigen::VectorXd ElasticityAssembler::traction(int label, const VectorField& g) const {
   const LagrangeSpace& V = *space_;
-  const SegmentQuadrature rule = gaussLegendre(4);
+  const SimplexQuadrature<1> rule = simplexQuadrature<1>(7);  // 4-point Gauss–Legendre
   Eigen::VectorXd F = Eigen::VectorXd::Zero(V.numDofs());
-  double phi[3];
   for (const auto& e : V.labelledEdges(label)) {
     const NodeList nodes = V.edgeNodes(e[0], e[1]);
     const Vector2& a = V.coordinate(e[0]);
     const Vector2& b = V.coordinate(e[1]);
-    const double length = (b - a).norm();
-    for (int q = 0; q < rule.size(); ++q) {
-      const double s = rule.points[q];
-      edgeBasisValues(V.degree(), s, phi);
-      const Vector2 gq = length * rule.weights[q] * g((1.0 - s) * a + s * b);
-      for (int i = 0; i < nodes.size; ++i) {
-        F[2 * nodes[i]] += phi[i] * gq.x();
-        F[2 * nodes[i] + 1] += phi[i] * gq.y();
-      }
-    }
+    addFacetLoad<2>(V.degree(), SimplexFacet<2>({a, b}), rule, g,
+                    [&](int i, const Vector2& load) { F.segment<2>(2 * nodes[i]) += load; });
   }
   return F;
 }
@@ -251,9 +172,7 @@ Eigen::VectorXd ElasticityAssembler::lumpedEdgeMass(
   const LagrangeSpace& V = *space_;
   // Trapezoid (P1) and Simpson (P2) weights: the row sums of the consistent mass, and the
   // nodal quadrature that keeps the friction law node by node (docs/method.md §4).
-  static constexpr double kP1[2] = {0.5, 0.5};
-  static constexpr double kP2[3] = {1.0 / 6, 4.0 / 6, 1.0 / 6};
-  const double* w = V.degree() == 1 ? kP1 : kP2;
+  const double* w = facetLumpedMass<2>(V.degree());
   Eigen::VectorXd m = Eigen::VectorXd::Zero(V.numNodes());
   for (const auto& e : edges) {
     const double length = (V.coordinate(e[1]) - V.coordinate(e[0])).norm();
@@ -266,11 +185,6 @@ Eigen::VectorXd ElasticityAssembler::lumpedEdgeMass(
 Eigen::SparseMatrix<double> ElasticityAssembler::consistentEdgeMass(
     const std::vector<std::array<Index, 2>>& edges) const {
   const LagrangeSpace& V = *space_;
-  // ∫_0^1 φ_i φ_j ds for the edge bases in order (a, [mid], b).
-  static constexpr double kP1[2][2] = {{2.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 6}};
-  static constexpr double kP2[3][3] = {{4.0 / 30, 2.0 / 30, -1.0 / 30},
-                                       {2.0 / 30, 16.0 / 30, 2.0 / 30},
-                                       {-1.0 / 30, 2.0 / 30, 4.0 / 30}};
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(edges.size() * static_cast<std::size_t>(V.nodesPerEdge() * V.nodesPerEdge()));
   for (const auto& e : edges) {
@@ -279,7 +193,7 @@ Eigen::SparseMatrix<double> ElasticityAssembler::consistentEdgeMass(
     for (int i = 0; i < nodes.size; ++i)
       for (int j = 0; j < nodes.size; ++j)
         triplets.emplace_back(nodes[i], nodes[j],
-                              length * (V.degree() == 1 ? kP1[i][j] : kP2[i][j]));
+                              length * facetConsistentMass<2>(V.degree(), i, j));
   }
   Eigen::SparseMatrix<double> M(V.numNodes(), V.numNodes());
   M.setFromTriplets(triplets.begin(), triplets.end());
@@ -289,10 +203,10 @@ Eigen::SparseMatrix<double> ElasticityAssembler::consistentEdgeMass(
 Vector2 ElasticityAssembler::displacement(const Eigen::VectorXd& u, Index cell,
                                           const Vector2& x) const {
   const LagrangeSpace& V = *space_;
-  const CellGeometry g = cellGeometry(V.mesh(), cell);
+  const Simplex<2> g = cellGeometry<2>(V.mesh(), cell);
   const NodeList nodes = V.cellNodes(cell);
   double phi[kMaxNodes];
-  basisValues(V.degree(), g.barycentric(x), phi);
+  basisValues<2>(V.degree(), g.barycentric(x), phi);
   Vector2 value = Vector2::Zero();
   for (int i = 0; i < nodes.size; ++i) value += phi[i] * u.segment<2>(2 * nodes[i]);
   return value;
@@ -301,10 +215,10 @@ Vector2 ElasticityAssembler::displacement(const Eigen::VectorXd& u, Index cell,
 Eigen::Matrix2d ElasticityAssembler::displacementGradient(const Eigen::VectorXd& u, Index cell,
                                                           const Vector2& x) const {
   const LagrangeSpace& V = *space_;
-  const CellGeometry g = cellGeometry(V.mesh(), cell);
+  const Simplex<2> g = cellGeometry<2>(V.mesh(), cell);
   const NodeList nodes = V.cellNodes(cell);
   Vector2 grad[kMaxNodes];
-  basisGradients(V.degree(), g.barycentric(x), g, grad);
+  basisGradients<2>(V.degree(), g.barycentric(x), g, grad);
   Eigen::Matrix2d G = Eigen::Matrix2d::Zero();
   for (int i = 0; i < nodes.size; ++i) G += u.segment<2>(2 * nodes[i]) * grad[i].transpose();
   return G;
@@ -324,17 +238,17 @@ Eigen::Matrix2d ElasticityAssembler::stress(const Eigen::VectorXd& u, Index cell
 ErrorNorms ElasticityAssembler::errorNorms(const Eigen::VectorXd& u, const VectorField& exact,
                                            const TensorField& exactGradient) const {
   const LagrangeSpace& V = *space_;
-  const TriangleQuadrature rule = triangleQuadrature(8);
+  const SimplexQuadrature<2> rule = simplexQuadrature<2>(8);
   double l2 = 0.0, h1 = 0.0;
   double phi[kMaxNodes];
   Vector2 grad[kMaxNodes];
   for (Index c = 0; c < V.numCells(); ++c) {
-    const CellGeometry g = cellGeometry(V.mesh(), c);
+    const Simplex<2> g = cellGeometry<2>(V.mesh(), c);
     const NodeList nodes = V.cellNodes(c);
     for (int q = 0; q < rule.size(); ++q) {
       const auto& l = rule.barycentric[q];
-      basisValues(V.degree(), l, phi);
-      basisGradients(V.degree(), l, g, grad);
+      basisValues<2>(V.degree(), l, phi);
+      basisGradients<2>(V.degree(), l, g, grad);
       Vector2 uh = Vector2::Zero();
       Eigen::Matrix2d Gh = Eigen::Matrix2d::Zero();
       for (int i = 0; i < nodes.size; ++i) {
@@ -343,7 +257,7 @@ ErrorNorms ElasticityAssembler::errorNorms(const Eigen::VectorXd& u, const Vecto
         Gh += ui * grad[i].transpose();
       }
       const Vector2 x = g.point(l);
-      const double w = g.area * rule.weights[q];
+      const double w = g.measure * rule.weights[q];
       l2 += w * (exact(x) - uh).squaredNorm();
       h1 += w * (exactGradient(x) - Gh).squaredNorm();
     }

@@ -1,4 +1,4 @@
-// Material: isotropic linear elasticity, plane strain / plane stress (docs/method.md §1).
+// Material: isotropic linear elasticity, 3D, plane strain or plane stress (docs/method.md §1).
 #include "friction/fe/Material.hpp"
 
 #include "friction/core/Assert.hpp"
@@ -7,7 +7,12 @@
 
 namespace friction {
 
-Material Material::read(const Dictionary& dict) {
+Material Material::read(const Dictionary& dict, int dim) {
+  FRICTION_ASSERT(dim == 2 || dim == 3, "the dimension is 2 or 3");
+  if (dim == 3 && dict.found("planeStress"))
+    dict.fail("planeStress",
+              "key 'planeStress' has no meaning in 3D (the mesh is 3D: every strain component is "
+              "resolved, there is no plane); remove it");
   const bool planeStress = dict.getBoolOr("planeStress", false);
   if (dict.alternative({{"E", "nu"}, {"lambda", "mu"}}) == 0) {
     const double E = dict.getScalar("E", Bounds::positive());
@@ -64,6 +69,23 @@ Eigen::Matrix3d Material::voigtMatrix() const {
   const double l = lambdaStar(), m = mu_;
   Eigen::Matrix3d d;
   d << l + 2 * m, l, 0, l, l + 2 * m, 0, 0, 0, m;
+  return d;
+}
+
+Eigen::Matrix3d Material::stress3d(const Eigen::Matrix3d& strain) const {
+  FRICTION_ASSERT(!planeStress_, "plane stress has no 3D stress");
+  return lambda_ * strain.trace() * Eigen::Matrix3d::Identity() + 2.0 * mu_ * strain;
+}
+
+Eigen::Matrix<double, 6, 6> Material::voigtMatrix3d() const {
+  FRICTION_ASSERT(!planeStress_, "plane stress has no 3D Voigt matrix");
+  const double l = lambda_, m = mu_;
+  Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
+  d.topLeftCorner<3, 3>().setConstant(l);
+  for (int i = 0; i < 3; ++i) {
+    d(i, i) = l + 2 * m;
+    d(3 + i, 3 + i) = m;
+  }
   return d;
 }
 

@@ -1,6 +1,7 @@
-// Material: isotropic linear elasticity in 2D, plane strain (the default, docs/method.md §1) or
-// plane stress. Hooke's law σ = λ* tr(ε) I + 2μ ε with λ* = λ in plane strain and
-// λ* = 2λμ/(λ + 2μ) in plane stress (σ_zz = 0 eliminates ε_zz).
+// Material: isotropic linear elasticity (docs/method.md §1). In 3D Hooke's law
+// σ = λ tr(ε) I + 2μ ε. In 2D plane strain (the default) or plane stress:
+// σ = λ* tr(ε) I + 2μ ε with λ* = λ in plane strain and λ* = 2λμ/(λ + 2μ) in plane stress
+// (σ_zz = 0 eliminates ε_zz). Plane stress has no meaning in 3D: read() refuses it there.
 //
 // Units: E, λ, μ and stresses in Pa; strains dimensionless. In 2D every force is per unit
 // thickness (N/m), so the stiffness matrix is in N/m² · m = N/m per unit thickness.
@@ -16,8 +17,9 @@ class Material {
  public:
   /// From constant/mechanicalProperties: 'E' and 'nu', or 'lambda' and 'mu' (alternatives:
   /// keys of both pairs are an error that says so), and 'planeStress' (default no). Range
-  /// checks are InputErrors naming file:line and key.
-  static Material read(const Dictionary& dict);
+  /// checks are InputErrors naming file:line and key. `dim` is the mesh's dimension (2 or 3):
+  /// in 3D the key 'planeStress' is refused (every strain component is resolved there).
+  static Material read(const Dictionary& dict, int dim = 2);
   /// From Young's modulus E [Pa] (> 0) and Poisson's ratio ν (−1 < ν < 1/2). Range checks
   /// with file and line belong to the dictionary layer; here they are debug asserts.
   static Material fromYoungPoisson(double youngModulus, double poissonRatio,
@@ -43,6 +45,12 @@ class Material {
 
   /// Voigt matrix D with (σxx, σyy, σxy) = D (εxx, εyy, 2εxy) [Pa].
   Eigen::Matrix3d voigtMatrix() const;
+
+  /// 3D stress [Pa] from a symmetric strain tensor: λ tr(ε) I + 2μ ε (not for plane stress).
+  Eigen::Matrix3d stress3d(const Eigen::Matrix3d& strain) const;
+  /// 3D Voigt matrix D with (σxx, σyy, σzz, σyz, σxz, σxy) = D (εxx, εyy, εzz, 2εyz, 2εxz,
+  /// 2εxy) [Pa] (engineering shear strains; not for plane stress).
+  Eigen::Matrix<double, 6, 6> voigtMatrix3d() const;
 
  private:
   Material(double lambda, double mu, bool planeStress);

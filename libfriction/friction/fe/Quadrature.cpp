@@ -1,6 +1,6 @@
-// Quadrature rules (see Quadrature.hpp). The low-degree triangle rules are the classical
-// closed-form ones; higher degrees use the conical (Duffy) product of Gauss–Legendre rules,
-// which needs no tabulated constants and is exact for any degree we ask.
+// Quadrature rules (see Quadrature.hpp). The low-degree triangle and tetrahedron rules are the
+// classical symmetric ones; higher degrees use the conical (Duffy) product of Gauss–Legendre
+// rules, which needs no tabulated constants and is exact for any degree we ask.
 #include "friction/fe/Quadrature.hpp"
 
 #include <cmath>
@@ -109,6 +109,99 @@ TriangleQuadrature triangleQuadrature(int degree) {
       }
   }
   return rule;
+}
+
+namespace {
+
+void addPoint(TetrahedronQuadrature& rule, double l0, double l1, double l2, double l3, double w) {
+  rule.barycentric.push_back({l0, l1, l2, l3});
+  rule.weights.push_back(w);
+}
+
+/// The four permutations of (a, b, b, b) with one weight.
+void addOrbit4(TetrahedronQuadrature& rule, double a, double b, double w) {
+  addPoint(rule, a, b, b, b, w);
+  addPoint(rule, b, a, b, b, w);
+  addPoint(rule, b, b, a, b, w);
+  addPoint(rule, b, b, b, a, w);
+}
+
+/// The six permutations of (a, a, b, b) with one weight.
+void addOrbit6(TetrahedronQuadrature& rule, double a, double b, double w) {
+  addPoint(rule, a, a, b, b, w);
+  addPoint(rule, a, b, a, b, w);
+  addPoint(rule, a, b, b, a, w);
+  addPoint(rule, b, a, a, b, w);
+  addPoint(rule, b, a, b, a, w);
+  addPoint(rule, b, b, a, a, w);
+}
+
+}  // namespace
+
+TetrahedronQuadrature tetrahedronQuadrature(int degree) {
+  FRICTION_ASSERT(degree >= 0, "quadrature degree must be non-negative");
+  TetrahedronQuadrature rule;
+  if (degree <= 1) {
+    rule.degree = 1;
+    addPoint(rule, 0.25, 0.25, 0.25, 0.25, 1.0);
+  } else if (degree == 2) {
+    // Four interior points on the medians: a = (5 + 3√5)/20, b = (5 − √5)/20.
+    rule.degree = 2;
+    const double s = std::sqrt(5.0);
+    addOrbit4(rule, (5.0 + 3.0 * s) / 20, (5.0 - s) / 20, 0.25);
+  } else if (degree <= 5) {
+    // Degree 5 with 14 points and positive weights (the classical degree-3 rule of 5 points
+    // has a negative centroid weight, so it serves degrees 3 and 4 as well): N. J. Walkington,
+    // "Quadrature on simplices of arbitrary dimension", Carnegie Mellon University, Center for
+    // Nonlinear Analysis report 00-CNA-023 (2000). Two orbits (a, a, a, 1 − 3a) and one orbit
+    // (c, c, 1/2 − c, 1/2 − c); weights as fractions of the volume.
+    rule.degree = 5;
+    const double a1 = 0.31088591926330060980, w1 = 0.11268792571801585080;
+    const double a2 = 0.092735250310891226402, w2 = 0.073493043116361949544;
+    const double c = 0.045503704125649649492, w3 = 0.042546020777081466438;
+    addOrbit4(rule, 1.0 - 3 * a1, a1, w1);
+    addOrbit4(rule, 1.0 - 3 * a2, a2, w2);
+    addOrbit6(rule, c, 0.5 - c, w3);
+  } else {
+    // Collapsed product: ξ = u, η = (1 − u) v, ζ = (1 − u)(1 − v) w on the reference
+    // tetrahedron, Jacobian (1 − u)² (1 − v). A polynomial of degree d becomes degree d + 2
+    // in u, d + 1 in v and d in w, so n Gauss points with 2n − 1 ≥ d + 2 are exact.
+    const int n = (degree + 4) / 2;
+    const SegmentQuadrature g = gaussLegendre(n);
+    rule.degree = 2 * n - 3;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        for (int k = 0; k < n; ++k) {
+          const double u = g.points[i], v = g.points[j], w = g.points[k];
+          const double xi = u, eta = (1.0 - u) * v, zeta = (1.0 - u) * (1.0 - v) * w;
+          // Reference volume is 1/6: the fraction of volume is 6 · w_u w_v w_w (1 − u)² (1 − v).
+          addPoint(
+              rule, 1.0 - xi - eta - zeta, xi, eta, zeta,
+              6.0 * g.weights[i] * g.weights[j] * g.weights[k] * (1.0 - u) * (1.0 - u) * (1.0 - v));
+        }
+  }
+  return rule;
+}
+
+template <>
+SimplexQuadrature<1> simplexQuadrature<1>(int degree) {
+  const SegmentQuadrature g = segmentQuadrature(degree);
+  SimplexQuadrature<1> rule;
+  rule.degree = g.degree;
+  rule.weights = g.weights;
+  // λ0 = 1 − s, λ1 = s: the segment's own parameter s from its first to its second vertex.
+  for (double s : g.points) rule.barycentric.push_back({1.0 - s, s});
+  return rule;
+}
+
+template <>
+SimplexQuadrature<2> simplexQuadrature<2>(int degree) {
+  return triangleQuadrature(degree);
+}
+
+template <>
+SimplexQuadrature<3> simplexQuadrature<3>(int degree) {
+  return tetrahedronQuadrature(degree);
 }
 
 }  // namespace friction

@@ -1,6 +1,6 @@
 // Quadrature rules for the finite-element layer (docs/method.md §4: mass, stiffness, loads and the
 // error norms of the manufactured-solution test): symmetric rules and collapsed Gauss products
-// on triangles, Gauss–Legendre on segments.
+// on triangles and tetrahedra, Gauss–Legendre on segments.
 #pragma once
 
 #include <array>
@@ -8,11 +8,13 @@
 
 namespace friction {
 
-/// A rule on a triangle T: ∫_T f ≈ |T| Σ_q weights[q] f(x_q), with x_q given by its barycentric
-/// coordinates (λ0, λ1, λ2) with respect to the triangle's vertices 0, 1, 2. The weights sum
-/// to 1 (they are fractions of the area), so the same rule serves every triangle.
-struct TriangleQuadrature {
-  std::vector<std::array<double, 3>> barycentric;
+/// A rule on a simplex S of dimension dim (a segment, a triangle, a tetrahedron):
+/// ∫_S f ≈ |S| Σ_q weights[q] f(x_q), with x_q given by its barycentric coordinates
+/// (λ0, …, λ_dim) with respect to the simplex's vertices. The weights sum to 1 (they are
+/// fractions of the length, area or volume), so the same rule serves every simplex.
+template <int dim>
+struct SimplexQuadrature {
+  std::vector<std::array<double, dim + 1>> barycentric;
   std::vector<double> weights;
   /// Polynomials of total degree ≤ degree are integrated exactly (up to round-off).
   int degree = 0;
@@ -20,10 +22,31 @@ struct TriangleQuadrature {
   int size() const { return static_cast<int>(weights.size()); }
 };
 
+using TriangleQuadrature = SimplexQuadrature<2>;
+using TetrahedronQuadrature = SimplexQuadrature<3>;
+
 /// The cheapest rule this library has that is exact to total degree ≥ degree (degree ≥ 0):
 /// centroid (1 point, degree 1), 3 interior points (degree 2), Radon's 7 points (degree 5),
 /// and above that a collapsed (Duffy) product of Gauss–Legendre rules, all weights positive.
+/// The same rules integrate over the triangular faces of tetrahedra.
 TriangleQuadrature triangleQuadrature(int degree);
+
+/// The same for tetrahedra: centroid (1 point, degree 1), 4 interior points (degree 2),
+/// Walkington's 14 points (degree 5, positive weights; also for degrees 3 and 4), and above
+/// that a collapsed product of Gauss–Legendre rules, all weights positive.
+TetrahedronQuadrature tetrahedronQuadrature(int degree);
+
+/// The rule of the dimension: gaussLegendre in barycentric form (1 − s, s) for dim = 1,
+/// triangleQuadrature for 2, tetrahedronQuadrature for 3. Facets of a dim-simplex use
+/// simplexQuadrature<dim − 1>.
+template <int dim>
+SimplexQuadrature<dim> simplexQuadrature(int degree);
+template <>
+SimplexQuadrature<1> simplexQuadrature<1>(int degree);
+template <>
+SimplexQuadrature<2> simplexQuadrature<2>(int degree);
+template <>
+SimplexQuadrature<3> simplexQuadrature<3>(int degree);
 
 /// Gauss–Legendre rule on the unit segment [0, 1]: ∫_0^1 f(s) ds ≈ Σ_q weights[q] f(points[q]).
 /// The weights sum to 1; points are increasing.
