@@ -71,15 +71,19 @@ inline NodeComplementarity complementarity(const Block& tau, const Block& beta, 
   }
   c.state = SlipState::slip;
   Block unit(k);
-  if (std::isfinite(normN)) {
+  if (normN > 0 && std::isfinite(normN)) {
     unit = N / normN;  // for k = 1 exactly ±1: D below is τ ∓ ρ, to the bit
-    c.dPdN = (rho / normN) * (BlockMatrix::Identity(k, k) - unit * unit.transpose());
   } else {
-    // Tractions that overflow double (the step is judged diverged): the component signs, the
-    // direction of N's limit for k = 1; ρ/|N| → 0 leaves ∂P/∂N = 0.
+    // Tractions that overflow double (non-finite N or ρ; the step is judged diverged): the
+    // component signs, as the scalar sign(N) of 2D did.
     for (Eigen::Index i = 0; i < k; ++i) unit[i] = N[i] > 0 ? 1.0 : -1.0;
     unit /= std::sqrt(static_cast<double>(k));
   }
+  // For k = 1, (ρ/|N|)(1 − 1) = 0. A non-finite ratio (overflowed ρ) leaves 0 as well, its
+  // limit when |N| grows without bound.
+  const double ratio = rho / normN;
+  if (std::isfinite(ratio))
+    c.dPdN = ratio * (BlockMatrix::Identity(k, k) - unit * unit.transpose());
   c.D = tau - rho * unit;
   c.dPdRho = unit;
   return c;

@@ -19,6 +19,8 @@
 #include <array>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "friction/core/Types.hpp"
 
 namespace friction {
