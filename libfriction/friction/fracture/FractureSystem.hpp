@@ -96,7 +96,8 @@ class FractureSystem : public SlipResponse {
             Eigen::VectorXd* sigmaNDual = nullptr) override;
   /// factorisation: the complement the factorisation delivered (factor() with
   /// withInterfaceOperator), else as blockSolves; blockSolves: C − Bᵀ K⁻¹ B by blocks of
-  /// right-hand sides; dualSolves: one dual solve per node (SlipResponse's default).
+  /// right-hand sides; dualSolves: one dual solve per node and tangential component
+  /// (SlipResponse's default).
   InterfaceOperator interfaceOperator(InterfaceMethod method) override;
   /// M·S on the jump dofs (d per node that is not a tip, x, y (, z) components, node order),
   /// with the dofs of jumpDofs(): symmetric [N/m]. Empty unless factor() formed it.
