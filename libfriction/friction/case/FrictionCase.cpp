@@ -15,6 +15,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "friction/core/Assert.hpp"
 #include "friction/core/OutputError.hpp"
 #include "friction/core/StopRequest.hpp"
 #include "friction/core/Suggest.hpp"
@@ -224,7 +225,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       if (system_->freeMask()[k] > 0) w = std::min(w, system_->weights()[k]);
     if (std::isfinite(w)) optimizer_->setStepScale(std::pow(w / material_->youngModulus(), 2));
   }
-  slip_ = Eigen::VectorXd::Zero(n);
+  slip_ = Eigen::VectorXd::Zero(system_->blockSize() * n);
 
   const auto& f = system_->factorization();
   log << "Split mesh: " << split_.mesh.numPoints() << " points, " << split_.mesh.numTriangles()
@@ -515,20 +516,24 @@ long FrictionCase::restart(std::ostream& log) {
   }
   const Dictionary st =
       Dictionary::read((fs::path(caseDir_) / folder / "uniform" / "frictionState").string());
+  // k values per fracture node (k = 1 in 2D), node-major as writeTimeFolder() writes them.
   const std::vector<double> slip = st.getScalarList("slip");
   const std::vector<double> beta = st.getScalarList("lastIncrement");
-  if (static_cast<Eigen::Index>(slip.size()) != system_->size() || beta.size() != slip.size())
-    st.fail("slip", "key 'slip': " + std::to_string(slip.size()) +
-                        " values, expected one per "
+  const int k = system_->blockSize();
+  const Eigen::Index expected = k * system_->size();
+  if (static_cast<Eigen::Index>(slip.size()) != expected || beta.size() != slip.size())
+    st.fail("slip", "key 'slip': " + std::to_string(slip.size()) + " values, expected " +
+                        (k == 1 ? std::string("one") : std::to_string(k)) +
+                        " per "
                         "fracture node (" +
-                        std::to_string(system_->size()) +
+                        std::to_string(expected) +
                         "): the mesh or element "
                         "order changed since this folder was written");
   const long step = st.getInt("step", Bounds::nonNegative());
   const double t0 = st.getScalar("time");
   st.checkAllRead();
-  slip_ = Eigen::Map<const Eigen::VectorXd>(slip.data(), system_->size());
-  lastBeta_ = Eigen::Map<const Eigen::VectorXd>(beta.data(), system_->size());
+  slip_ = Eigen::Map<const Eigen::VectorXd>(slip.data(), expected);
+  lastBeta_ = Eigen::Map<const Eigen::VectorXd>(beta.data(), expected);
 
   // What a killed run wrote after t0 goes: every time after it has a name that reads back
   // above both t0 and the value of t0's own name (names are distinct, TimeControl.hpp).
@@ -555,8 +560,9 @@ long FrictionCase::restart(std::ostream& log) {
 std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   std::vector<StepResult> results;
   FractureSystem& sys = *system_;
-  const Eigen::Index n = sys.size();
-  Eigen::VectorXd beta = Eigen::VectorXd::Zero(n);
+  // k tangential components per control node (SlipResponse.hpp): β, τ and the slip are k·n.
+  const Eigen::Index n = sys.size(), perNode = sys.blockSize();
+  Eigen::VectorXd beta = Eigen::VectorXd::Zero(perNode * n);
   lastBeta_ = beta;
   if (!outputPrepared_) prepareOutput(false, log);
   long first = 1;
@@ -593,7 +599,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       try {
         sys.setStep(load, slip_);
         if (n > 0) {
-          Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(n);
+          Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(perNode * n);
           for (const auto& e : effects_)
             e->addFractureTraction(sys.controlNodes(), r.time, sn0, tau0);
           sys.setTractionOffset(sn0, tau0);
@@ -601,7 +607,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         // ρ = c − μ(σ_n + p): the pressure lowers the cohesion term node by node.
         const Eigen::VectorXd cohesion = cohesion_ - mu_.cwiseProduct(pressure);
         ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_);
-        beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(n);
+        beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(perNode * n);
         if (n > 0)
           r.report = optimizer_->minimize(problem, beta);
         else
@@ -635,7 +641,9 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       const double effective = last_.sigmaN[i] + pressure[i];
       if (sys.freeMask()[i] > 0 && effective < 0)
         r.maxExcessST = std::max(
-            r.maxExcessST, (std::abs(last_.tau[i]) - std::max(last_.rho[i], 0.0)) / -effective);
+            r.maxExcessST,
+            (blockNorm(last_.tau.segment(perNode * i, perNode)) - std::max(last_.rho[i], 0.0)) /
+                -effective);
     }
     if (!r.reused) judgeStep(r);
     if (r.nonFinite) {
@@ -766,8 +774,11 @@ void FrictionCase::judgeStep(StepResult& r) const {
   }
   // 3. A slip larger than the body: nothing holds part of it.
   double maxSlip = 0;
+  const Eigen::Index k = sys.blockSize();
   for (Eigen::Index i = 0; i < sys.size(); ++i)
-    if (sys.freeMask()[i] > 0) maxSlip = std::max(maxSlip, std::abs(slip_[i] + last_.beta[i]));
+    if (sys.freeMask()[i] > 0)
+      maxSlip =
+          std::max(maxSlip, blockNorm(slip_.segment(k * i, k) + last_.beta.segment(k * i, k)));
   if (diameter_ > 0 && maxSlip > diameter_) {
     std::ostringstream s;
     s << std::setprecision(3) << "slip up to " << maxSlip << " m, larger than the body ("
@@ -803,6 +814,10 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
          << " backSubstitutions " << r.backSubstitutions << " J " << r.J << " relResidual "
          << r.relResidual << " maxExcessST " << r.maxExcessST << " equilibrium " << r.equilibrium;
   const auto& nodes = sys.controlNodes();
+  // The tables hold one tangential component per node (2D, k = 1). For k > 1 they will give
+  // the components on t₁ … t_k of slip, slip increment, τ and residual, and the magnitudes
+  // |slip| and |τ| (ST = |τ| / −σ'_n); the frame is written once per fracture.
+  FRICTION_ASSERT(sys.blockSize() == 1, "fracture tables of k > 1 components are not defined");
   std::vector<VtkSeries::Fracture> vtkFractures;
   for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
     std::vector<FractureRow> rows;
@@ -849,7 +864,9 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   st.entry("equilibriumResidual", r.equilibrium);
   st.writeAtomic(folder.file("solverStatus"));
 
-  // What a restart needs, at full precision (the tables above use writePrecision).
+  // What a restart needs, at full precision (the tables above use writePrecision). 'slip' and
+  // 'lastIncrement' hold k values per fracture node, node-major (k = 1 in 2D): node i's
+  // components on t₁ … t_k at k·i … k·i + k − 1, as restart() reads them.
   DictionaryWriter state("dictionary", "frictionState", "restart state of frictionSolver");
   state.entry("time", r.time);
   state.entry("step", static_cast<long>(step));

@@ -95,7 +95,7 @@ class FrictionCase {
   FractureSystem& system() { return *system_; }
   const SplitMesh& splitMesh() const { return split_; }
   const TimeControl& time() const { return *time_; }
-  /// Accumulated slip per control node [m].
+  /// Accumulated slip [m], k components per control node (SlipResponse.hpp).
   const Eigen::VectorXd& slip() const { return slip_; }
   const ControlState& lastState() const { return last_; }
 

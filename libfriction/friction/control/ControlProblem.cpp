@@ -1,9 +1,11 @@
 // Objective and exact gradient of the control problem (docs/method.md §4). Derivation, node by
-// node with P'_N = ∂P/∂N and P'_ρ = ∂P/∂ρ:
-//   dD/dβ = (1 − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt,   since N = τ − γβ and dρ = −μ dσ_n.
-// With M S self-adjoint (S is the Steklov–Poincaré map of the dual problem), the M-gradient
-// of ½ DᵀMD is the tangential traction of one dual solve with jump
-//   q = (1 − P'_N) D t_Γ + μ P'_ρ D n_Γ,  plus the local term γ P'_N D.
+// node with the k × k block P'_N = ∂P/∂N and the k-vector P'_ρ = ∂P/∂ρ:
+//   dD/dβ = (I − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt,   since N = τ − γβ and dρ = −μ dσ_n.
+// With M S self-adjoint (S is the Steklov–Poincaré map of the dual problem), and P'_N
+// symmetric, the M-gradient of ½ DᵀMD is the tangential traction of one dual solve with jump
+//   q = Σ_c ((I − P'_N) D)_c t_c + μ (P'_ρ·D) n_Γ,  plus the local term γ P'_N D.
+// The sums below keep the order of the scalar (k = 1) expressions, so that 2D is unchanged
+// to the bit.
 #include "friction/control/ControlProblem.hpp"
 
 #include <cmath>
@@ -24,24 +26,36 @@ ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen
   FRICTION_ASSERT(mu_.size() == response_.size(), "one μ per fracture node");
   FRICTION_ASSERT(cohesion_.size() == response_.size(), "one cohesion per fracture node");
   FRICTION_ASSERT(gamma_ > 0, "γ > 0");
+  const Eigen::Index n = response_.size(), k = response_.blockSize();
+  componentMask_.resize(k * n);
+  componentWeights_.resize(k * n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index c = 0; c < k; ++c) {
+      componentMask_[k * i + c] = response_.freeMask()[i];
+      componentWeights_[k * i + c] = response_.weights()[i];
+    }
 }
 
 double ControlProblem::relativeResidual(const ControlState& s) const {
   const double d = norm(s.D);
   if (d == 0) return 0;
-  const Eigen::VectorXd& m = response_.freeMask();
-  const double scale = std::sqrt(dot(s.tau.cwiseProduct(m), s.tau.cwiseProduct(m)) +
-                                 dot(s.sigmaN.cwiseProduct(m), s.sigmaN.cwiseProduct(m)));
+  const Eigen::VectorXd &m = response_.freeMask(), &mk = componentMask_;
+  const double scale = std::sqrt(dot(s.tau.cwiseProduct(mk), s.tau.cwiseProduct(mk)) +
+                                 nodeDot(s.sigmaN.cwiseProduct(m), s.sigmaN.cwiseProduct(m)));
   return scale > 0 ? d / scale : d;
 }
 
 double ControlProblem::dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
+  return (a.array() * b.array() * componentWeights_.array()).sum();
+}
+
+double ControlProblem::nodeDot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
   return (a.array() * b.array() * response_.weights().array()).sum();
 }
 
 ControlState ControlProblem::evaluate(const Eigen::VectorXd& beta) {
   throwIfStopNow();  // a second SIGINT/SIGTERM abandons the step between two solves
-  const Eigen::VectorXd b = beta.cwiseProduct(response_.freeMask());
+  const Eigen::VectorXd b = beta.cwiseProduct(componentMask_);
   Eigen::VectorXd tau, sigmaN;
   response_.primal(b, tau, sigmaN);
   ++numPrimal_;
@@ -53,38 +67,54 @@ ControlState ControlProblem::evaluate(const Eigen::VectorXd& beta) {
 ControlState ControlProblem::stateFrom(const Eigen::VectorXd& beta, Eigen::VectorXd tau,
                                        Eigen::VectorXd sigmaN) const {
   ControlState s;
-  s.beta = beta.cwiseProduct(response_.freeMask());
+  s.beta = beta.cwiseProduct(componentMask_);
   s.tau = std::move(tau);
   s.sigmaN = std::move(sigmaN);
-  const Eigen::Index n = size();
+  const Eigen::Index n = numNodes(), k = blockSize();
   s.rho = cohesion_ - mu_.cwiseProduct(s.sigmaN);
-  s.D.resize(n);
+  s.D.resize(k * n);
   s.node.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    s.node[i] = complementarity(s.tau[i], s.beta[i], s.rho[i], gamma_);
-    s.D[i] = s.node[i].D;
+    s.node[i] =
+        complementarity(s.tau.segment(k * i, k), s.beta.segment(k * i, k), s.rho[i], gamma_);
+    s.D.segment(k * i, k) = s.node[i].D;
   }
   // Where the jump is held (tips, Dirichlet), the friction law is not asked of the node.
-  s.D = s.D.cwiseProduct(response_.freeMask());
+  s.D = s.D.cwiseProduct(componentMask_);
   s.J = 0.5 * dot(s.D, s.D) + 0.5 * zeta_ * dot(s.beta, s.beta);
   return s;
 }
 
 Eigen::VectorXd ControlProblem::gradient(const ControlState& s) {
   throwIfStopNow();
-  const Eigen::Index n = size();
-  Eigen::VectorXd qt(n), qn(n), local(n);
+  const Eigen::Index n = numNodes(), k = blockSize();
+  Eigen::VectorXd qt(k * n), qn(n), local(k * n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const NodeComplementarity& c = s.node[i];
-    qt[i] = (1 - c.dPdN) * s.D[i];
-    qn[i] = gradientKind_ == GradientKind::exact ? mu_[i] * c.dPdRho * s.D[i] : 0.0;
-    local[i] = gamma_ * c.dPdN * s.D[i];
+    const double* D = s.D.data() + k * i;
+    for (Eigen::Index r = 0; r < k; ++r) {
+      // Row r of (I − P'_N) D and of γ P'_N D.
+      double q = ((r == 0 ? 1.0 : 0.0) - c.dPdN(r, 0)) * D[0];
+      double l = gamma_ * c.dPdN(r, 0) * D[0];
+      for (Eigen::Index j = 1; j < k; ++j) {
+        q += ((r == j ? 1.0 : 0.0) - c.dPdN(r, j)) * D[j];
+        l += gamma_ * c.dPdN(r, j) * D[j];
+      }
+      qt[k * i + r] = q;
+      local[k * i + r] = l;
+    }
+    double normal = 0.0;
+    if (gradientKind_ == GradientKind::exact) {
+      normal = mu_[i] * c.dPdRho[0] * D[0];
+      for (Eigen::Index j = 1; j < k; ++j) normal += mu_[i] * c.dPdRho[j] * D[j];
+    }
+    qn[i] = normal;
   }
   Eigen::VectorXd tauDual;
   response_.dual(qt, qn, tauDual);
   ++numDual_;
   Eigen::VectorXd g = tauDual + local + zeta_ * s.beta;
-  return g.cwiseProduct(response_.freeMask());
+  return g.cwiseProduct(componentMask_);
 }
 
 }  // namespace friction

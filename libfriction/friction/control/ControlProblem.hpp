@@ -2,7 +2,8 @@
 // gradient in the M inner product (docs/method.md §4), on top of a SlipResponse.
 //
 // Friction enters node by node through ρ = c − μ σ_n (Coulomb: c = 0, μ = μ_f; Tresca:
-// μ = 0, c = g; frictionless: μ = c = 0), so every law shares one code path.
+// μ = 0, c = g; frictionless: μ = c = 0), so every law shares one code path. β, τ, D and the
+// gradient have k components per node (SlipResponse.hpp); σ_n, ρ, μ, c one per node.
 #pragma once
 
 #include <vector>
@@ -21,8 +22,9 @@ enum class GradientKind {
 
 /// Everything known at one β.
 struct ControlState {
-  Eigen::VectorXd beta, tau, sigmaN, rho, D;
-  std::vector<NodeComplementarity> node;
+  Eigen::VectorXd beta, tau, D;           ///< k·n, node-major
+  Eigen::VectorXd sigmaN, rho;            ///< n
+  std::vector<NodeComplementarity> node;  ///< n
   double J = 0;
   long primalSolves = 0;  ///< running count, for the report
 };
@@ -42,17 +44,39 @@ class ControlProblem {
   /// Gradient of J at an evaluated state, in the M inner product (one back-substitution).
   Eigen::VectorXd gradient(const ControlState& s);
 
+  /// Entry (row, col) of the generalised Jacobian dD/dβ = (I − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt
+  /// at s (docs/method.md §4), rows and columns in the k·n layout (row: component r of node
+  /// i). Its sums keep the order of the scalar (k = 1) expression S_tt + μ P'_ρ S_nt, where
+  /// the rows that Newton solves have 1 − P'_N = 1 and P'_N = 0.
+  double jacobianEntry(const ControlState& s, const Eigen::MatrixXd& Stt,
+                       const Eigen::MatrixXd& Snt, Eigen::Index row, Eigen::Index col) const {
+    const Eigen::Index k = blockSize(), i = row / k, r = row % k;
+    const NodeComplementarity& c = s.node[i];
+    double g = ((r == 0 ? 1.0 : 0.0) - c.dPdN(r, 0)) * Stt(k * i, col);
+    for (Eigen::Index j = 1; j < k; ++j)
+      g += ((r == j ? 1.0 : 0.0) - c.dPdN(r, j)) * Stt(k * i + j, col);
+    g += mu_[i] * c.dPdRho[r] * Snt(i, col);
+    if (col / k == i && c.dPdN(r, col % k) != 0) g += gamma_ * c.dPdN(r, col % k);
+    return g;
+  }
+
   /// ‖D‖_M / ‖Σ‖_M on the free nodes, Σ = (τ, σ_n) the traction on Γ: the relative
   /// residual of the friction law. The scale is the whole traction, not ‖τ‖ alone, because
   /// the answer may be τ = 0 (frictionless, or open in tension), where ‖D‖/‖τ‖ stays 1.
   /// Zero when D = 0 (e.g. zero load).
   double relativeResidual(const ControlState& s) const;
-  /// ⟨a, b⟩_M
+  /// ⟨a, b⟩_M of two k·n vectors: every component of node i weighs weights[i].
   double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
   double norm(const Eigen::VectorXd& a) const { return std::sqrt(dot(a, a)); }
 
-  Eigen::Index size() const { return response_.size(); }
+  /// Length of β: k·n.
+  Eigen::Index size() const { return componentMask_.size(); }
+  Eigen::Index numNodes() const { return response_.size(); }
+  int blockSize() const { return response_.blockSize(); }
+  /// 1 where the node's jump is free, per node (n).
   const Eigen::VectorXd& freeMask() const { return response_.freeMask(); }
+  /// freeMask repeated over each node's k components (k·n).
+  const Eigen::VectorXd& componentMask() const { return componentMask_; }
   const Eigen::VectorXd& mu() const { return mu_; }
   double gamma() const { return gamma_; }
   double zeta() const { return zeta_; }
@@ -61,8 +85,12 @@ class ControlProblem {
   long numDual() const { return numDual_; }
 
  private:
+  /// ⟨a, b⟩ weighted per node (n-vectors).
+  double nodeDot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
+
   SlipResponse& response_;
   Eigen::VectorXd mu_, cohesion_;
+  Eigen::VectorXd componentMask_, componentWeights_;  ///< freeMask, weights repeated k times
   double gamma_, zeta_;
   GradientKind gradientKind_;
   long numPrimal_ = 0, numDual_ = 0;

@@ -425,10 +425,10 @@ OptimizerReport& SemismoothNewton::finish(ControlProblem& p, const ControlState&
 OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
   if (variant_ == Variant::krylov) return minimizeKrylov(p, beta);
   SlipResponse& resp = p.response();
-  const Eigen::Index n = p.size();
+  const Eigen::Index n = p.numNodes(), k = p.blockSize(), size = p.size();
   const Eigen::VectorXd& mask = resp.freeMask();
   long setupSolves = 0;
-  if (cachedFor_ != &resp || Stt_.rows() != n) {
+  if (cachedFor_ != &resp || Stt_.rows() != size) {
     // Once per run: S depends only on the mesh and the Dirichlet patches.
     InterfaceOperator op = resp.interfaceOperator(interfaceMethod_);
     Stt_ = std::move(op.Stt);
@@ -441,48 +441,47 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   r.setupSolves = setupSolves;
   activeSetChanges_ = 0;
   // One primal solve gives the affine maps' offsets; the rest is dense.
-  const ControlState s0 = p.evaluate(Eigen::VectorXd::Zero(n));
+  const ControlState s0 = p.evaluate(Eigen::VectorXd::Zero(size));
   const Eigen::VectorXd tau0 = s0.tau, sigma0 = s0.sigmaN;
   auto stateAt = [&](const Eigen::VectorXd& b) {
-    const Eigen::VectorXd bm = b.cwiseProduct(mask);
+    const Eigen::VectorXd bm = b.cwiseProduct(p.componentMask());
     return p.stateFrom(bm, tau0 + Stt_ * bm, sigma0 + Snt_ * bm);
   };
   ControlState s = stateAt(beta);
   r.history.push_back(record(p, s, 0, -1));
   double lastStep = -1;
   std::vector<SlipState> states;
-  for (int k = 1; k <= stop_.maxIterations; ++k) {
+  for (int it = 1; it <= stop_.maxIterations; ++it) {
     if (converged(p, s, lastStep)) {
       r.status = OptimizerStatus::converged;
       break;
     }
     // Generalised Jacobian on the free nodes. Stick rows read γ δ_i = −γ β_i: they give
-    // δ_i = −β_i exactly (β = 0 at once), so only the other nodes enter the linear solve.
-    std::vector<Eigen::Index> active;
-    Eigen::VectorXd dir = Eigen::VectorXd::Zero(n);
+    // δ_i = −β_i exactly (β = 0 at once), so only the other nodes' components enter the
+    // linear solve.
+    std::vector<Eigen::Index> active;  // components k·i + c of the slip and open nodes
+    Eigen::VectorXd dir = Eigen::VectorXd::Zero(size);
     for (Eigen::Index i = 0; i < n; ++i) {
       if (mask[i] == 0) continue;
-      if (s.node[i].state == SlipState::stick)
-        dir[i] = -s.beta[i];
-      else
-        active.push_back(i);
+      for (Eigen::Index c = 0; c < k; ++c) {
+        if (s.node[i].state == SlipState::stick)
+          dir[k * i + c] = -s.beta[k * i + c];
+        else
+          active.push_back(k * i + c);
+      }
     }
     const Eigen::Index m = static_cast<Eigen::Index>(active.size());
     if (m > 0) {
       Eigen::MatrixXd G(m, m);
       Eigen::VectorXd rhs(m);
       for (Eigen::Index a = 0; a < m; ++a) {
-        const Eigen::Index i = active[a];
-        const double cs = p.mu()[i] * s.node[i].dPdRho;  // 0 when open
-        for (Eigen::Index b = 0; b < m; ++b) {
-          const Eigen::Index j = active[b];
-          G(a, b) = Stt_(i, j) + cs * Snt_(i, j);
-        }
+        for (Eigen::Index b = 0; b < m; ++b)
+          G(a, b) = p.jacobianEntry(s, Stt_, Snt_, active[a], active[b]);
         // Move the known stick increments to the right-hand side.
         double known = 0;
-        for (Eigen::Index j = 0; j < n; ++j)
-          if (dir[j] != 0) known += (Stt_(i, j) + cs * Snt_(i, j)) * dir[j];
-        rhs[a] = -s.D[i] - known;
+        for (Eigen::Index j = 0; j < size; ++j)
+          if (dir[j] != 0) known += p.jacobianEntry(s, Stt_, Snt_, active[a], j) * dir[j];
+        rhs[a] = -s.D[active[a]] - known;
       }
       // LAPACK's LU: at thousands of slipping nodes this is the iteration's whole cost.
       const bool solved = luSolveInPlace(G, rhs);
@@ -494,8 +493,8 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
       break;
     }
     const bool accepted = lineSearch(p, s, dir, stateAt, lastStep, states);
-    r.iterations = k;
-    r.history.push_back(record(p, s, k, accepted ? lastStep : 0));
+    r.iterations = it;
+    r.history.push_back(record(p, s, it, accepted ? lastStep : 0));
     if (!accepted) {
       r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
       break;
@@ -506,7 +505,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
 
 OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::VectorXd& beta) {
   SlipResponse& resp = p.response();
-  const Eigen::Index n = p.size();
+  const Eigen::Index n = p.numNodes(), k = p.blockSize(), size = p.size();
   const Eigen::VectorXd& mask = resp.freeMask();
   OptimizerReport r;
   activeSetChanges_ = 0;
@@ -515,33 +514,47 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   double lastStep = -1;
   std::vector<SlipState> states;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
-  for (int k = 1; k <= stop_.maxIterations; ++k) {
+  for (int it = 1; it <= stop_.maxIterations; ++it) {
     if (converged(p, s, lastStep)) {
       r.status = OptimizerStatus::converged;
       break;
     }
-    // G v on the free nodes: one dual solve gives S_tt v and S_nt v.
+    // G v on the free nodes: one dual solve gives S_tt v and S_nt v. Row r of node i:
+    // ((I − P'_N) S_tt v)_r + μ P'_ρ,r (S_nt v)_i + γ (P'_N v)_r, summed in the order of the
+    // scalar expression.
     auto applyG = [&](const Eigen::VectorXd& v) {
       throwIfStopNow();
       Eigen::VectorXd t, sn;
       resp.dual(v, zero, t, &sn);
-      Eigen::VectorXd out(n);
+      Eigen::VectorXd out(size);
       for (Eigen::Index i = 0; i < n; ++i) {
         const NodeComplementarity& c = s.node[i];
-        out[i] = mask[i] == 0 ? 0.0
-                              : (1 - c.dPdN) * t[i] + p.mu()[i] * c.dPdRho * sn[i] +
-                                    p.gamma() * c.dPdN * v[i];
+        for (Eigen::Index row = 0; row < k; ++row) {
+          if (mask[i] == 0) {
+            out[k * i + row] = 0.0;
+            continue;
+          }
+          double a = ((row == 0 ? 1.0 : 0.0) - c.dPdN(row, 0)) * t[k * i];
+          double g = p.gamma() * c.dPdN(row, 0) * v[k * i];
+          for (Eigen::Index j = 1; j < k; ++j) {
+            a += ((row == j ? 1.0 : 0.0) - c.dPdN(row, j)) * t[k * i + j];
+            g += p.gamma() * c.dPdN(row, j) * v[k * i + j];
+          }
+          out[k * i + row] = a + p.mu()[i] * c.dPdRho[row] * sn[i] + g;
+        }
       }
       return out;
     };
-    Eigen::VectorXd dir = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd dir = Eigen::VectorXd::Zero(size);
     std::vector<Eigen::Index> active;
     for (Eigen::Index i = 0; i < n; ++i) {
       if (mask[i] == 0) continue;
-      if (s.node[i].state == SlipState::stick)
-        dir[i] = -s.beta[i];  // β = 0 at once on the stick nodes
-      else
-        active.push_back(i);
+      for (Eigen::Index c = 0; c < k; ++c) {
+        if (s.node[i].state == SlipState::stick)
+          dir[k * i + c] = -s.beta[k * i + c];  // β = 0 at once on the stick nodes
+        else
+          active.push_back(k * i + c);
+      }
     }
     const Eigen::Index m = static_cast<Eigen::Index>(active.size());
     if (m > 0) {
@@ -550,7 +563,7 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
       Eigen::VectorXd rhs(m);
       for (Eigen::Index a = 0; a < m; ++a) rhs[a] = rhsFull[active[a]];
       auto applyActive = [&](const Eigen::VectorXd& vA) {
-        Eigen::VectorXd v = Eigen::VectorXd::Zero(n);
+        Eigen::VectorXd v = Eigen::VectorXd::Zero(size);
         for (Eigen::Index a = 0; a < m; ++a) v[active[a]] = vA[a];
         const Eigen::VectorXd Gv = applyG(v);
         Eigen::VectorXd out(m);
@@ -565,8 +578,8 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
     }
     const auto evaluate = [&](const Eigen::VectorXd& b) { return p.evaluate(b); };
     const bool accepted = lineSearch(p, s, dir, evaluate, lastStep, states);
-    r.iterations = k;
-    r.history.push_back(record(p, s, k, accepted ? lastStep : 0));
+    r.iterations = it;
+    r.history.push_back(record(p, s, it, accepted ? lastStep : 0));
     if (!accepted) {
       r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
       break;

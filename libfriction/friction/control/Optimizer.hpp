@@ -141,11 +141,12 @@ class Lbfgs : public Optimizer {
 
 /// [beyond] Semismooth Newton on D(β) = 0 (docs/method.md §4), condensed variant: the interface
 /// operators S_tt and S_nt are assembled densely once per run (one dual solve per fracture
-/// node, reused by every step, since they depend only on the mesh and the Dirichlet
-/// patches); then every iteration is dense work on Γ alone. The generalised Jacobian has,
-/// row by node state, G = (1 − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt; stick nodes get β = 0 at
-/// once. Globalised by backtracking on the merit ½‖D‖²_M. Solves D = 0, the minimiser of J
-/// when ζ = 0 (with ζ > 0 it still solves the friction law exactly).
+/// node and tangential component, reused by every step, since they depend only on the mesh
+/// and the Dirichlet patches); then every iteration is dense work on Γ alone. The generalised
+/// Jacobian has, by node state, k × k blocks G = (I − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt; stick
+/// nodes get β = 0 at once, the other nodes' components form the linear system. Globalised by
+/// backtracking on the merit ½‖D‖²_M. Solves D = 0, the minimiser of J when ζ = 0 (with ζ > 0 it
+/// still solves the friction law exactly).
 ///
 /// How S is formed (key interfaceOperator): `factorisation` (default) takes it from the one
 /// factorisation, as the Schur complement of the stiffness in the variables (free dofs,

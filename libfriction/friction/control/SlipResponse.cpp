@@ -1,4 +1,5 @@
-// The reference way of forming the interface operator: one dual solve per fracture node.
+// The reference way of forming the interface operator: one dual solve per fracture node and
+// tangential component.
 #include "friction/control/SlipResponse.hpp"
 
 #include "friction/core/StopRequest.hpp"
@@ -18,22 +19,25 @@ const char* toString(InterfaceMethod method) {
 }
 
 InterfaceOperator SlipResponse::interfaceOperator(InterfaceMethod /*method*/) {
-  const Eigen::Index n = size();
+  const Eigen::Index n = size(), k = blockSize();
   const Eigen::VectorXd& mask = freeMask();
   InterfaceOperator op;
   op.method = InterfaceMethod::dualSolves;
-  op.Stt.setZero(n, n);
-  op.Snt.setZero(n, n);
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(n), zero = Eigen::VectorXd::Zero(n), t, sn;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    if (mask[k] == 0) continue;
-    throwIfStopNow();  // n solves: long on big fractures
-    e[k] = 1;
-    dual(e, zero, t, &sn);
-    ++op.solves;  // one dual solve: one back-substitution
-    e[k] = 0;
-    op.Stt.col(k) = t;
-    op.Snt.col(k) = sn;
+  op.Stt.setZero(k * n, k * n);
+  op.Snt.setZero(n, k * n);
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(k * n), zero = Eigen::VectorXd::Zero(n), t, sn;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (mask[i] == 0) continue;
+    for (Eigen::Index c = 0; c < k; ++c) {
+      throwIfStopNow();  // k·n solves: long on big fractures
+      const Eigen::Index col = k * i + c;
+      e[col] = 1;
+      dual(e, zero, t, &sn);
+      ++op.solves;  // one dual solve: one back-substitution
+      e[col] = 0;
+      op.Stt.col(col) = t;
+      op.Snt.col(col) = sn;
+    }
   }
   return op;
 }

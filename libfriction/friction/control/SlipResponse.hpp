@@ -1,6 +1,11 @@
 // SlipResponse: what the control problem needs from the elastic body in one time step — the
 // affine maps from a slip increment to the fracture tractions (docs/method.md §4). The finite
 // element implementation does each call with one back-substitution of the one factor.
+//
+// Layout: each of the n fracture nodes carries a block of k tangential components (k = d − 1:
+// 1 in 2D, 2 in 3D), on the node's tangent basis t₁ … t_k. Vectors of tangential quantities
+// (β, τ, qt, a dual solve's τ) have k·n entries, node-major: node i's components at k·i …
+// k·i + k − 1. Per-node scalars (σ_n, qn, weights, freeMask) have n entries.
 #pragma once
 
 #include <string>
@@ -18,11 +23,13 @@ enum class InterfaceMethod {
 /// "factorisation", "blockSolves", "dualSolves".
 const char* toString(InterfaceMethod method);
 
-/// The interface operator in the fracture frames: column k holds τ and σ_n at every node
-/// caused by a unit tangential jump at node k, with zero loads and zero Dirichlet data.
+/// The interface operator in the fracture frames: column k·i + c holds τ (k·n entries) and
+/// σ_n (n entries) caused by a unit jump along t_c at node i, with zero loads and zero
+/// Dirichlet data.
 struct InterfaceOperator {
-  Eigen::MatrixXd Stt, Snt;  ///< n × n [Pa/m]; columns of held nodes (freeMask 0) are zero
-  long solves = 0;           ///< back-substitutions spent forming it
+  Eigen::MatrixXd Stt;  ///< k·n × k·n [Pa/m]; columns of held nodes (freeMask 0) are zero
+  Eigen::MatrixXd Snt;  ///< n × k·n [Pa/m]; likewise
+  long solves = 0;      ///< back-substitutions spent forming it
   InterfaceMethod method = InterfaceMethod::dualSolves;  ///< how it was formed
 };
 
@@ -30,24 +37,29 @@ class SlipResponse {
  public:
   virtual ~SlipResponse() = default;
 
-  /// Number of fracture nodes (all fractures, concatenated in arclength order).
+  /// Number of fracture nodes n (all fractures, concatenated in arclength order).
   virtual Eigen::Index size() const = 0;
+  /// Tangential components per node k (d − 1).
+  virtual int blockSize() const = 0;
   /// Lumped mass of Γ per node [m]: the M of docs/method.md (J and norms are in this inner
   /// product).
   virtual const Eigen::VectorXd& weights() const = 0;
   /// 1 where β is an unknown, 0 where the jump is held (tips, nodes on Dirichlet patches).
   virtual const Eigen::VectorXd& freeMask() const = 0;
 
-  /// Primal solve: this step's loads, jump (s_n + β) t_Γ. Returns τ and σ_n per node [Pa].
+  /// Primal solve: this step's loads, jump Σ_c (s_n + β)_c t_c. Returns τ (k·n) and σ_n (n)
+  /// [Pa].
   virtual void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
                       Eigen::VectorXd& sigmaN) = 0;
-  /// Dual solve: no loads, zero Dirichlet data, jump qt t_Γ + qn n_Γ. Returns the
-  /// tangential traction τ(p) per node [Pa] (qt, qn in m), and σ_n(p) if sigmaNDual is given.
+  /// Dual solve: no loads, zero Dirichlet data, jump Σ_c qt_c t_c + qn n_Γ (qt: k·n, qn: n,
+  /// in m). Returns the tangential traction τ(p) (k·n) [Pa], and σ_n(p) (n) if sigmaNDual is
+  /// given.
   virtual void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
                     Eigen::VectorXd* sigmaNDual = nullptr) = 0;
 
   /// The interface operator, formed as `method` asks where the implementation can (the
-  /// result says how it was formed). This default makes one dual solve per free node.
+  /// result says how it was formed). This default makes one dual solve per tangential
+  /// component of each free node (k per node).
   virtual InterfaceOperator interfaceOperator(InterfaceMethod method);
 };
 

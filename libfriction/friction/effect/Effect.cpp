@@ -78,10 +78,14 @@ class InitialStress : public Effect {
   }
   void addFractureTraction(const std::vector<ControlNode>& nodes, double, Eigen::VectorXd& sigmaN,
                            Eigen::VectorXd& tau) const override {
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-      const Vector2 t = initialStress(nodes[k].x) * nodes[k].normal;
-      sigmaN[k] += t.dot(nodes[k].normal);
-      tau[k] += t.dot(nodes[k].tangent);
+    // τ has k components per node, on the node's tangent basis (SignConventions.hpp).
+    const Eigen::Index n = sigmaN.size(), k = n > 0 ? tau.size() / n : 1;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Vector2 normal = nodes[i].normal.head<2>();
+      const Vector2 t = initialStress(nodes[i].x) * normal;
+      sigmaN[i] += t.dot(normal);
+      for (Eigen::Index c = 0; c < k; ++c)
+        tau[k * i + c] += t.dot(Vector2(nodes[i].tangent[c].head<2>()));
     }
   }
 

@@ -54,7 +54,8 @@ class Effect {
   /// Add this effect's nodal forces at time t (split space) [N per m].
   virtual void addLoad(const ElasticityAssembler& /*split*/, double /*t*/,
                        Eigen::VectorXd& /*F*/) const {}
-  /// Add to the fracture tractions at the control nodes at time t [Pa].
+  /// Add to the fracture tractions at the control nodes at time t [Pa]: σ_n one per node,
+  /// τ k per node (SlipResponse.hpp).
   virtual void addFractureTraction(const std::vector<ControlNode>& /*nodes*/, double /*t*/,
                                    Eigen::VectorXd& /*sigmaN*/, Eigen::VectorXd& /*tau*/) const {}
   /// Add the fluid pressure p at the control nodes at time t [Pa].

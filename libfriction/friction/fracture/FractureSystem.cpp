@@ -3,12 +3,21 @@
 #include "friction/fracture/FractureSystem.hpp"
 
 #include "friction/core/Assert.hpp"
+#include "friction/fracture/SignConventions.hpp"
 
 namespace friction {
 
 namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
+
+// A frame vector as a 3-vector: z = 0 for a 2D one.
+template <class V>
+Eigen::Vector3d frameVector(const V& v) {
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  for (Eigen::Index c = 0; c < v.size(); ++c) w[c] = v[c];
+  return w;
+}
 
 Eigen::SparseMatrix<double> fromTriplets(Index rows, Index cols, const Triplets& t) {
   Eigen::SparseMatrix<double> m(rows, cols);
@@ -56,7 +65,7 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   Triplets pt;
   for (Index i = 0; i < splitSpace_->numNodes(); ++i) {
     FRICTION_ASSERT(toUnsplit[i] >= 0, "every split node belongs to a cell");
-    for (int c = 0; c < 2; ++c)
+    for (int c = 0; c < dim_; ++c)
       pt.emplace_back(LagrangeSpace::dof(i, c), LagrangeSpace::dof(toUnsplit[i], c), 1.0);
   }
   P_ = fromTriplets(splitSpace_->numDofs(), unsplitSpace_->numDofs(), pt);
@@ -71,8 +80,8 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
       v.plus = g.plus[i];
       v.minus = g.minus[i];
       v.x = split_.mesh.points[g.plus[i]];
-      v.normal = g.normal[i];
-      v.tangent = g.tangent[i];
+      v.normal = frameVector(g.normal[i]);
+      v.tangent[0] = frameVector(g.tangent[i]);
       v.arclength = g.arclength[i];
       v.tip = g.kind[i] == FractureNodeKind::tip;
       nodes_.push_back(v);
@@ -85,8 +94,9 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
         m.minus = splitSpace_->midpointNode(g.minus[i], g.minus[i + 1]);
         m.x = splitSpace_->coordinate(m.plus);
         const Vector2 e = (split_.mesh.points[g.plus[i + 1]] - split_.mesh.points[g.plus[i]]);
-        m.tangent = e.normalized();
-        m.normal = Vector2(m.tangent.y(), -m.tangent.x());  // SignConventions.hpp
+        const Vector2 t = e.normalized();
+        m.tangent[0] = frameVector(t);
+        m.normal = frameVector(normalFromTangent(t));
         m.arclength = 0.5 * (g.arclength[i] + g.arclength[i + 1]);
         nodes_.push_back(m);
       }
@@ -102,15 +112,15 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   Triplets lt;
   for (Index k = 0; k < n; ++k) {
     if (nodes_[k].tip) continue;
-    for (int c = 0; c < 2; ++c) {
-      lt.emplace_back(LagrangeSpace::dof(nodes_[k].plus, c), 2 * k + c, 0.5);
-      lt.emplace_back(LagrangeSpace::dof(nodes_[k].minus, c), 2 * k + c, -0.5);
+    for (int c = 0; c < dim_; ++c) {
+      lt.emplace_back(LagrangeSpace::dof(nodes_[k].plus, c), dim_ * k + c, 0.5);
+      lt.emplace_back(LagrangeSpace::dof(nodes_[k].minus, c), dim_ * k + c, -0.5);
     }
   }
-  L_ = fromTriplets(splitSpace_->numDofs(), 2 * n, lt);
-  slip_ = Eigen::VectorXd::Zero(n);
+  L_ = fromTriplets(splitSpace_->numDofs(), dim_ * n, lt);
+  slip_ = Eigen::VectorXd::Zero(blockSize() * n);
   loadUnsplit_ = Eigen::VectorXd::Zero(unsplitSpace_->numDofs());
-  sigmaLoad_ = Eigen::VectorXd::Zero(2 * n);
+  sigmaLoad_ = Eigen::VectorXd::Zero(dim_ * n);
 }
 
 int FractureSystem::numHeldOnDirichlet() const {
@@ -130,7 +140,7 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
     for (Index k = 0; k < n; ++k) {
       ControlNode& v = nodes_[k];
       v.onDirichlet = false;
-      for (int c = 0; c < 2; ++c) {
+      for (int c = 0; c < dim_; ++c) {
         Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(
             Pr, LagrangeSpace::dof(v.plus, c));
         if (it && dirichlet_->isFixed(static_cast<Index>(it.col()))) v.onDirichlet = true;
@@ -150,12 +160,12 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
     for (Index k = 0; k < n; ++k) {
       if (nodes_[k].tip) continue;  // a single node has no two sides to compare
       const double s = 0.5 / weights_[k];
-      for (int c = 0; c < 2; ++c) {
-        et.emplace_back(2 * k + c, LagrangeSpace::dof(nodes_[k].plus, c), s);
-        et.emplace_back(2 * k + c, LagrangeSpace::dof(nodes_[k].minus, c), -s);
+      for (int c = 0; c < dim_; ++c) {
+        et.emplace_back(dim_ * k + c, LagrangeSpace::dof(nodes_[k].plus, c), s);
+        et.emplace_back(dim_ * k + c, LagrangeSpace::dof(nodes_[k].minus, c), -s);
       }
     }
-    const Eigen::SparseMatrix<double> E = fromTriplets(2 * n, splitSpace_->numDofs(), et);
+    const Eigen::SparseMatrix<double> E = fromTriplets(dim_ * n, splitSpace_->numDofs(), et);
     const Eigen::SparseMatrix<double> EK = E * Ksplit;
     Tx_ = EK * P_;
     Tj_ = EK * L_;
@@ -166,11 +176,12 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
     // M Σ = (C − B_fᵀ K_ff⁻¹ B_f) j: the Schur complement is M·S.
     jumpDofs_.clear();
     for (Index k = 0; k < n; ++k)
-      if (!nodes_[k].tip) jumpDofs_.insert(jumpDofs_.end(), {2 * k, 2 * k + 1});
+      if (!nodes_[k].tip)
+        for (int c = 0; c < dim_; ++c) jumpDofs_.push_back(dim_ * k + c);
     Triplets st;
     for (std::size_t a = 0; a < jumpDofs_.size(); ++a) st.emplace_back(jumpDofs_[a], a, 1.0);
     const Eigen::SparseMatrix<double> select =
-        fromTriplets(2 * n, static_cast<Index>(jumpDofs_.size()), st);
+        fromTriplets(dim_ * n, static_cast<Index>(jumpDofs_.size()), st);
     const Eigen::SparseMatrix<double> Lj = L_ * select;
     borderC_ = Lj.transpose() * (Ksplit * Lj);
     const Eigen::SparseMatrix<double> Bj = B_ * select;
@@ -226,20 +237,27 @@ void FractureSystem::solve(const Eigen::VectorXd& j, bool withLoads, Eigen::Vect
 
 void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
                             Eigen::VectorXd& sigmaN) {
-  const Index n = size();
-  Eigen::VectorXd j(2 * n);
-  for (Index k = 0; k < n; ++k) {
-    const double s = mask_[k] * (slip_[k] + beta[k]);
-    j.segment<2>(2 * k) = s * nodes_[k].tangent;
+  const Index n = size(), k = blockSize(), d = dim_;
+  FRICTION_ASSERT(beta.size() == k * n && slip_.size() == k * n, "k slip components per node");
+  // Each sum over a frame runs in component order, term by term: in 2D (k = 1) exactly the
+  // arithmetic of s t_Γ and Σ·t_Γ = Σ_x t_x + Σ_y t_y.
+  Eigen::VectorXd j(d * n);
+  for (Index i = 0; i < n; ++i) {
+    const ControlNode& v = nodes_[i];
+    for (int a = 0; a < d; ++a) {
+      double ja = mask_[i] * (slip_[k * i] + beta[k * i]) * v.tangent[0][a];
+      for (int c = 1; c < k; ++c)
+        ja += mask_[i] * (slip_[k * i + c] + beta[k * i + c]) * v.tangent[c][a];
+      j[d * i + a] = ja;
+    }
   }
   Eigen::VectorXd sigma;
   solve(j, true, sigma);
-  tau.resize(n);
+  tau.resize(k * n);
   sigmaN.resize(n);
-  for (Index k = 0; k < n; ++k) {
-    const Vector2 S = sigma.segment<2>(2 * k);
-    tau[k] = S.dot(nodes_[k].tangent);
-    sigmaN[k] = S.dot(nodes_[k].normal);
+  for (Index i = 0; i < n; ++i) {
+    for (int c = 0; c < k; ++c) tau[k * i + c] = project(sigma, i, nodes_[i].tangent[c]);
+    sigmaN[i] = project(sigma, i, nodes_[i].normal);
   }
   if (offsetSigmaN_.size() == n) {
     sigmaN += offsetSigmaN_;
@@ -247,29 +265,45 @@ void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
   }
 }
 
+double FractureSystem::project(const Eigen::VectorXd& sigma, Index node,
+                               const Eigen::Vector3d& direction) const {
+  const double* S = sigma.data() + dim_ * node;
+  double p = S[0] * direction[0];
+  for (int a = 1; a < dim_; ++a) p += S[a] * direction[a];
+  return p;
+}
+
 void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
                           Eigen::VectorXd& tauDual, Eigen::VectorXd* sigmaNDual) {
-  const Index n = size();
-  Eigen::VectorXd j(2 * n);
-  for (Index k = 0; k < n; ++k)
-    j.segment<2>(2 * k) = mask_[k] * (qt[k] * nodes_[k].tangent + qn[k] * nodes_[k].normal);
+  const Index n = size(), k = blockSize(), d = dim_;
+  FRICTION_ASSERT(qt.size() == k * n && qn.size() == n, "k tangential + 1 normal per node");
+  Eigen::VectorXd j(d * n);
+  for (Index i = 0; i < n; ++i) {
+    const ControlNode& v = nodes_[i];
+    for (int a = 0; a < d; ++a) {
+      double ja = qt[k * i] * v.tangent[0][a];
+      for (int c = 1; c < k; ++c) ja += qt[k * i + c] * v.tangent[c][a];
+      j[d * i + a] = mask_[i] * (ja + qn[i] * v.normal[a]);
+    }
+  }
   Eigen::VectorXd sigma;
   solve(j, false, sigma);
-  tauDual.resize(n);
-  for (Index k = 0; k < n; ++k) tauDual[k] = sigma.segment<2>(2 * k).dot(nodes_[k].tangent);
+  tauDual.resize(k * n);
+  for (Index i = 0; i < n; ++i)
+    for (int c = 0; c < k; ++c) tauDual[k * i + c] = project(sigma, i, nodes_[i].tangent[c]);
   if (sigmaNDual) {
     sigmaNDual->resize(n);
-    for (Index k = 0; k < n; ++k) (*sigmaNDual)[k] = sigma.segment<2>(2 * k).dot(nodes_[k].normal);
+    for (Index i = 0; i < n; ++i) (*sigmaNDual)[i] = project(sigma, i, nodes_[i].normal);
   }
 }
 
 InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
   FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before the interface operator");
   if (method == InterfaceMethod::dualSolves) return SlipResponse::interfaceOperator(method);
-  const Index n = size();
+  const Index n = size(), k = blockSize(), d = dim_;
   InterfaceOperator op;
-  op.Stt.setZero(n, n);
-  op.Snt.setZero(n, n);
+  op.Stt.setZero(k * n, k * n);
+  op.Snt.setZero(n, k * n);
   if (jumpDofs_.empty()) {
     op.method = method;
     return op;
@@ -286,22 +320,28 @@ InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
   const Eigen::MatrixXd& MS = fromFactor ? factor_->schurComplement() : blocked;
   op.method = fromFactor && factor_->schurSolves() == 0 ? InterfaceMethod::factorisation
                                                         : InterfaceMethod::blockSolves;
-  // Frame projection: S_tt(i, k) = t_iᵀ (M·S)_ik t_k / w_i, S_nt(i, k) = n_iᵀ (M·S)_ik t_k / w_i,
-  // over the nodes with two sides (jumpDofs_ holds their x and y entries in node order).
-  const Index m = static_cast<Index>(jumpDofs_.size()) / 2;
+  // Frame projection: S_tt(k·i + r, k·j + c) = t_r,iᵀ (M·S)_ij t_c,j / w_i and
+  // S_nt(i, k·j + c) = n_iᵀ (M·S)_ij t_c,j / w_i, over the nodes with two sides (jumpDofs_
+  // holds their d entries in node order).
+  const Index m = static_cast<Index>(jumpDofs_.size()) / d;
   std::vector<Index> node(m);
-  for (Index a = 0; a < m; ++a) node[a] = jumpDofs_[2 * a] / 2;
-  Eigen::MatrixXd columns(2 * m, m);  // (M·S) t_k for each node k, zero where held
-  for (Index a = 0; a < m; ++a) {
-    const Vector2 t = nodes_[node[a]].tangent * mask_[node[a]];
-    columns.col(a) = MS.col(2 * a) * t.x() + MS.col(2 * a + 1) * t.y();
-  }
-  for (Index a = 0; a < m; ++a)  // column by column: both matrices are column-major
+  for (Index a = 0; a < m; ++a) node[a] = jumpDofs_[d * a] / d;
+  Eigen::MatrixXd columns(d * m, k * m);  // (M·S) t_c,j for each node j, zero where held
+  for (Index a = 0; a < m; ++a)
+    for (int c = 0; c < k; ++c) {
+      const Eigen::Vector3d t = nodes_[node[a]].tangent[c] * mask_[node[a]];
+      Eigen::VectorXd col = MS.col(d * a) * t[0];
+      for (int e = 1; e < d; ++e) col += MS.col(d * a + e) * t[e];
+      columns.col(k * a + c) = col;
+    }
+  Eigen::VectorXd s(d);
+  for (Index a = 0; a < k * m; ++a)  // column by column: both matrices are column-major
     for (Index b = 0; b < m; ++b) {
       const ControlNode& v = nodes_[node[b]];
-      const Vector2 s = columns.block<2, 1>(2 * b, a) / weights_[node[b]];
-      op.Stt(node[b], node[a]) = s.dot(v.tangent);
-      op.Snt(node[b], node[a]) = s.dot(v.normal);
+      const Index col = k * node[a / k] + a % k;
+      for (int e = 0; e < d; ++e) s[e] = columns(d * b + e, a) / weights_[node[b]];
+      for (int r = 0; r < k; ++r) op.Stt(k * node[b] + r, col) = project(s, 0, v.tangent[r]);
+      op.Snt(node[b], col) = project(s, 0, v.normal);
     }
   return op;
 }

@@ -7,12 +7,16 @@
 //    it is assembled and factored once per run; every primal and dual solve is one
 //    back-substitution.
 //  * Traction recovery (53): with r = K_split u_split − f_split, Σ = M⁻¹(r⁺ − r⁻)/2 at the
-//    control nodes (M the lumped mass of Γ), σ_n = Σ·n_Γ, τ = Σ·t_Γ.
+//    control nodes (M the lumped mass of Γ), σ_n = Σ·n_Γ, τ_c = Σ·t_c on the node's tangent
+//    basis t₁ … t_k (k = d − 1; 2D: t₁ = t_Γ).
+//  * The imposed jump at a node is Σ_c (s + β)_c t_c (primal) or Σ_c qt_c t_c + qn n_Γ (dual):
+//    d jump dofs per node, from k tangential components and one normal.
 // Control nodes are the fracture vertices (P1) and, for P2, also the midpoints of the
 // fracture edges, in arclength order. The jump is held at zero at tips (single nodes) and at
 // nodes on Dirichlet patches. Signs: SignConventions.hpp.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,7 +39,10 @@ struct ControlNode {
   Index plus = 0;    ///< node of the split space on the Ω⁺ side
   Index minus = 0;   ///< node on the Ω⁻ side (== plus at a tip)
   Vector2 x = Vector2::Zero();
-  Vector2 normal = Vector2::Zero(), tangent = Vector2::Zero();
+  /// The node's frame (SignConventions.hpp) as 3-vectors, z = 0 in 2D: n_Γ and the tangent
+  /// basis t₁ … t_k (k = d − 1; in 2D tangent[0] = t_Γ and tangent[1] is unused).
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  std::array<Eigen::Vector3d, 2> tangent{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   double arclength = 0;      ///< [m]
   double weight = 0;         ///< lumped mass of Γ [m]
   bool tip = false;          ///< single node: no jump
@@ -61,12 +68,12 @@ class FractureSystem : public SlipResponse {
   const SparseFactor& factorization() const { return *factor_; }
 
   /// This step's data: the load vector on the SPLIT space (tractions, body force) [N], and
-  /// the accumulated slip s_n per control node [m]. Dirichlet values: set them on
-  /// dirichlet() before the solves.
+  /// the accumulated slip s_n per control node [m] (k per node, SlipResponse.hpp). Dirichlet
+  /// values: set them on dirichlet() before the solves.
   void setStep(const Eigen::VectorXd& loadSplit, const Eigen::VectorXd& accumulatedSlip);
 
-  /// Tractions added to every primal solve's σ_n and τ at the control nodes [Pa] (an
-  /// in-situ stress); zero by default.
+  /// Tractions added to every primal solve's σ_n (n) and τ (k·n) at the control nodes [Pa]
+  /// (an in-situ stress); zero by default.
   void setTractionOffset(const Eigen::VectorXd& sigmaN, const Eigen::VectorXd& tau);
 
   /// Stiffness matrices assembled so far (the unsplit one, plus the split one when there is
@@ -79,6 +86,9 @@ class FractureSystem : public SlipResponse {
 
   // SlipResponse
   Eigen::Index size() const override { return static_cast<Eigen::Index>(nodes_.size()); }
+  int blockSize() const override { return dim_ - 1; }
+  /// Dimension d of the body: jump and traction dofs per node.
+  int dimension() const { return dim_; }
   const Eigen::VectorXd& weights() const override { return weights_; }
   const Eigen::VectorXd& freeMask() const override { return mask_; }
   void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau, Eigen::VectorXd& sigmaN) override;
@@ -86,9 +96,10 @@ class FractureSystem : public SlipResponse {
             Eigen::VectorXd* sigmaNDual = nullptr) override;
   /// factorisation: the complement the factorisation delivered (factor() with
   /// withInterfaceOperator), else as blockSolves; blockSolves: C − Bᵀ K⁻¹ B by blocks of
-  /// right-hand sides; dualSolves: one dual solve per node (SlipResponse's default).
+  /// right-hand sides; dualSolves: one dual solve per node and tangential component
+  /// (SlipResponse's default).
   InterfaceOperator interfaceOperator(InterfaceMethod method) override;
-  /// M·S on the jump dofs (2 per node that is not a tip, x and y components, node order),
+  /// M·S on the jump dofs (d per node that is not a tip, x, y (, z) components, node order),
   /// with the dofs of jumpDofs(): symmetric [N/m]. Empty unless factor() formed it.
   const Eigen::MatrixXd& jumpOperator() const { return factor_->schurComplement(); }
   const std::vector<Index>& jumpDofs() const { return jumpDofs_; }
@@ -103,11 +114,14 @@ class FractureSystem : public SlipResponse {
   const Eigen::VectorXd& lastUnsplitSolution() const { return x_; }
 
  private:
-  // x and Σ (2 per control node, interleaved) for jump vector j (2 per control node).
+  // x and Σ (d per control node, interleaved) for jump vector j (d per control node).
   void solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma);
+  // Σ·direction at a node of sigma (d entries per node), summed in component order.
+  double project(const Eigen::VectorXd& sigma, Index node, const Eigen::Vector3d& direction) const;
 
   const SplitMesh& split_;
   const Material& material_;
+  int dim_ = 2;  ///< the dimension of the split mesh (triangles)
   Mesh unsplitMesh_;
   std::unique_ptr<LagrangeSpace> splitSpace_, unsplitSpace_;
   std::unique_ptr<ElasticityAssembler> splitAssembler_, unsplitAssembler_;
@@ -118,12 +132,12 @@ class FractureSystem : public SlipResponse {
   std::vector<ControlNode> nodes_;
   Eigen::VectorXd weights_, mask_;
   Eigen::SparseMatrix<double> P_;   ///< split dofs × unsplit dofs
-  Eigen::SparseMatrix<double> L_;   ///< split dofs × 2·control nodes
+  Eigen::SparseMatrix<double> L_;   ///< split dofs × d·control nodes
   Eigen::SparseMatrix<double> B_;   ///< Pᵀ K_split L
   Eigen::SparseMatrix<double> Tx_;  ///< Σ from x: W⁻¹ (R⁺ − R⁻)/2 P
   Eigen::SparseMatrix<double> Tj_;  ///< Σ from j: W⁻¹ (R⁺ − R⁻)/2 L
   Eigen::SparseMatrix<double> Tf_;  ///< Σ from f_split: −W⁻¹ (E⁺ − E⁻)/2 (row selection)
-  std::vector<Index> jumpDofs_;     ///< entries 2k + c of j for the nodes that are not tips
+  std::vector<Index> jumpDofs_;     ///< entries d·k + c of j for the nodes that are not tips
   Eigen::SparseMatrix<double> borderB_;  ///< Pᵀ K_split L: free rows × jumpDofs_
   Eigen::SparseMatrix<double> borderC_;  ///< Lᵀ K_split L on jumpDofs_
 

@@ -26,6 +26,11 @@ double kinkMargin(const ControlState& s, double gamma) {
   return m;
 }
 
+// The complementarity of one k = 1 node.
+NodeComplementarity complementarity(double tau, double beta, double rho, double gamma) {
+  return friction::complementarity(Block::Constant(1, tau), Block::Constant(1, beta), rho, gamma);
+}
+
 struct FdCheck {
   double analytic, numeric;
   int slipping;
@@ -117,19 +122,19 @@ TEST_CASE("D vanishes exactly on the Coulomb conditions, slip opposite to tau",
           "[control][complementarity]") {
   const double gamma = 2.0, rho = 1.0;
   // Stick: |τ| < ρ and β = 0.
-  CHECK(complementarity(0.5, 0.0, rho, gamma).D == 0.0);
+  CHECK(complementarity(0.5, 0.0, rho, gamma).D[0] == 0.0);
   CHECK(complementarity(0.5, 0.0, rho, gamma).state == SlipState::stick);
   // Stick with slip is not a solution.
-  CHECK(complementarity(0.5, 0.1, rho, gamma).D != 0.0);
+  CHECK(complementarity(0.5, 0.1, rho, gamma).D[0] != 0.0);
   // Slip: |τ| = ρ and β opposite to τ.
-  CHECK(complementarity(1.0, -0.3, rho, gamma).D == 0.0);
-  CHECK(complementarity(-1.0, 0.3, rho, gamma).D == 0.0);
+  CHECK(complementarity(1.0, -0.3, rho, gamma).D[0] == 0.0);
+  CHECK(complementarity(-1.0, 0.3, rho, gamma).D[0] == 0.0);
   CHECK(complementarity(1.0, -0.3, rho, gamma).state == SlipState::slip);
   // Slip along τ is not a solution.
-  CHECK(complementarity(1.0, 0.3, rho, gamma).D != 0.0);
+  CHECK(complementarity(1.0, 0.3, rho, gamma).D[0] != 0.0);
   // Over the bound is not a solution.
-  CHECK(complementarity(1.5, 0.0, rho, gamma).D != 0.0);
+  CHECK(complementarity(1.5, 0.0, rho, gamma).D[0] != 0.0);
   // Open (ρ ≤ 0): only τ = 0 is a solution, whatever β.
-  CHECK(complementarity(0.0, 0.7, -0.1, gamma).D == 0.0);
-  CHECK(complementarity(0.2, 0.7, 0.0, gamma).D == 0.2);
+  CHECK(complementarity(0.0, 0.7, -0.1, gamma).D[0] == 0.0);
+  CHECK(complementarity(0.2, 0.7, 0.0, gamma).D[0] == 0.2);
 }
