@@ -36,9 +36,8 @@ struct CellGeometry {
 };
 
 CellGeometry cellGeometry(const Mesh& mesh, Index cell) {
-  const auto& t = mesh.triangles[static_cast<std::size_t>(cell)];
   CellGeometry g;
-  for (int i = 0; i < 3; ++i) g.vertex[i] = mesh.points[static_cast<std::size_t>(t[i])];
+  for (int i = 0; i < 3; ++i) g.vertex[i] = mesh.points[mesh.cellVertex(cell, i)].head<2>();
   const Vector2& a = g.vertex[0];
   const Vector2& b = g.vertex[1];
   const Vector2& c = g.vertex[2];
