@@ -135,7 +135,7 @@ bool split(const std::string& dir) {
   SplitMeshRecord madeFrom{settings.meshEntry, fileHash(settings.meshFile),
                            fileHash(settings.dictPath)};
   Mesh mesh = readMesh(settings.meshFile);
-  if (mesh.numPoints() > maxPoints || mesh.numTriangles() > maxTriangles) return false;
+  if (mesh.numPoints() > maxPoints || mesh.numCells() > maxTriangles) return false;
   settings.nameLabels(mesh);
   const std::vector<FractureSpec> specs = settings.fractureSpecs(mesh);
   settings.checkMesh(mesh);
@@ -149,8 +149,8 @@ bool split(const std::string& dir) {
 void solve(const std::string& dir) {
   std::ostream log(nullptr);  // discards (badbit: nothing is even formatted)
   FrictionCase c(dir);
-  if (c.splitMesh().mesh.numPoints() > maxPoints ||
-      c.splitMesh().mesh.numTriangles() > maxTriangles || c.time().numSteps() > maxSteps)
+  if (c.splitMesh().mesh.numPoints() > maxPoints || c.splitMesh().mesh.numCells() > maxTriangles ||
+      c.time().numSteps() > maxSteps)
     return;
   if (c.setup(log) != FactorStatus::ok) return;
   c.run(log);

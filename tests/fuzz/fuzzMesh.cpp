@@ -40,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const friction::InputError&) {
     return 0;
   }
-  const std::set<int> labels(mesh.edgeLabel.begin(), mesh.edgeLabel.end());
+  const std::set<int> labels(mesh.facetLabel.begin(), mesh.facetLabel.end());
   for (const int label : labels) {
     try {
       friction::splitFractures(mesh,

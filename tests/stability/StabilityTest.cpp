@@ -31,13 +31,13 @@ namespace {
 void writeFreeFem(const fs::path& path, const Mesh& m) {
   std::ofstream out(path);
   out.precision(17);
-  out << m.points.size() << " " << m.triangles.size() << " " << m.edges.size() << "\n";
+  out << m.points.size() << " " << m.cellRegion.size() << " " << m.facetLabel.size() << "\n";
   for (const auto& p : m.points) out << p.x() << " " << p.y() << " 0\n";
-  for (std::size_t t = 0; t < m.triangles.size(); ++t)
-    out << m.triangles[t][0] + 1 << " " << m.triangles[t][1] + 1 << " " << m.triangles[t][2] + 1
-        << " " << m.triangleRegion[t] << "\n";
-  for (std::size_t e = 0; e < m.edges.size(); ++e)
-    out << m.edges[e][0] + 1 << " " << m.edges[e][1] + 1 << " " << m.edgeLabel[e] << "\n";
+  for (std::size_t t = 0; t < m.cellRegion.size(); ++t)
+    out << m.cell(t)[0] + 1 << " " << m.cell(t)[1] + 1 << " " << m.cell(t)[2] + 1 << " "
+        << m.cellRegion[t] << "\n";
+  for (std::size_t e = 0; e < m.facetLabel.size(); ++e)
+    out << m.facet(e)[0] + 1 << " " << m.facet(e)[1] + 1 << " " << m.facetLabel[e] << "\n";
 }
 
 // Structured triangulation of [0,1]² on the given grid lines (xs, ys increasing from 0 to 1);
@@ -52,36 +52,36 @@ Mesh gridMesh(const std::vector<double>& xs, const std::vector<double>& ys,
   const int nx = static_cast<int>(xs.size()) - 1, ny = static_cast<int>(ys.size()) - 1;
   auto id = [&](int i, int j) { return j * (nx + 1) + i; };
   for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) m.points.emplace_back(xs[i], ys[j]);
+    for (int i = 0; i <= nx; ++i) m.points.emplace_back(xs[i], ys[j], 0.0);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       // Alternate the diagonal so that no triangle has three vertices on a fracture row.
       const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
       if ((i + j) % 2 == 0) {
-        m.triangles.push_back({a, b, c});
-        m.triangles.push_back({a, c, d});
+        m.cellVertices.insert(m.cellVertices.end(), {a, b, c});
+        m.cellVertices.insert(m.cellVertices.end(), {a, c, d});
       } else {
-        m.triangles.push_back({a, b, d});
-        m.triangles.push_back({b, c, d});
+        m.cellVertices.insert(m.cellVertices.end(), {a, b, d});
+        m.cellVertices.insert(m.cellVertices.end(), {b, c, d});
       }
-      m.triangleRegion.insert(m.triangleRegion.end(), {1, 1});
+      m.cellRegion.insert(m.cellRegion.end(), {1, 1});
     }
   for (int i = 0; i < nx; ++i) {
-    m.edges.push_back({id(i, 0), id(i + 1, 0)});
-    m.edgeLabel.push_back(1);
-    m.edges.push_back({id(i + 1, ny), id(i, ny)});
-    m.edgeLabel.push_back(splitTop && 0.5 * (xs[i] + xs[i + 1]) > 0.5 ? 6 : 3);
+    m.facetVertices.insert(m.facetVertices.end(), {id(i, 0), id(i + 1, 0)});
+    m.facetLabel.push_back(1);
+    m.facetVertices.insert(m.facetVertices.end(), {id(i + 1, ny), id(i, ny)});
+    m.facetLabel.push_back(splitTop && 0.5 * (xs[i] + xs[i + 1]) > 0.5 ? 6 : 3);
   }
   for (int j = 0; j < ny; ++j) {
-    m.edges.push_back({id(nx, j), id(nx, j + 1)});
-    m.edgeLabel.push_back(2);
-    m.edges.push_back({id(0, j + 1), id(0, j)});
-    m.edgeLabel.push_back(4);
+    m.facetVertices.insert(m.facetVertices.end(), {id(nx, j), id(nx, j + 1)});
+    m.facetLabel.push_back(2);
+    m.facetVertices.insert(m.facetVertices.end(), {id(0, j + 1), id(0, j)});
+    m.facetLabel.push_back(4);
   }
   for (const auto& f : fractures)
     for (int i = f.i0; i < f.i1; ++i) {
-      m.edges.push_back({id(i, f.j), id(i + 1, f.j)});
-      m.edgeLabel.push_back(f.label);
+      m.facetVertices.insert(m.facetVertices.end(), {id(i, f.j), id(i + 1, f.j)});
+      m.facetLabel.push_back(f.label);
     }
   return m;
 }
@@ -451,12 +451,14 @@ TEST_CASE("stability: renumbering the mesh nodes does not change the slip", "[st
   std::shuffle(perm.begin(), perm.end(), std::mt19937(42));
   Mesh r = m;
   for (std::size_t i = 0; i < perm.size(); ++i) r.points[perm[i]] = m.points[i];
-  for (auto& t : r.triangles)
-    for (auto& v : t) v = perm[v];
-  for (auto& e : r.edges)
-    for (auto& v : e) v = perm[v];
-  std::reverse(r.triangles.begin(), r.triangles.end());
-  std::reverse(r.triangleRegion.begin(), r.triangleRegion.end());
+  for (auto& v : r.cellVertices) v = perm[v];
+  for (auto& v : r.facetVertices) v = perm[v];
+  // The cells in reverse order, each with its vertices in the same order.
+  std::vector<friction::Index> reversed;
+  for (friction::Index c = r.numCells() - 1; c >= 0; --c)
+    reversed.insert(reversed.end(), r.cell(c).begin(), r.cell(c).end());
+  r.cellVertices = reversed;
+  std::reverse(r.cellRegion.begin(), r.cellRegion.end());
   Case b("paperBenchmark", "stab-numbering-b");
   REQUIRE(runWithMesh(b, r) == 0);
   checkRun(b, {"fracture"}, 0);
@@ -478,8 +480,8 @@ TEST_CASE("stability: a mirror-symmetric set-up gives a mirror-symmetric slip", 
   // right patches swapped) and the horizontal load.
   Mesh m = friction::readMesh((a.dir() / "constant" / "mesh" / "square.msh").string());
   for (auto& p : m.points) p.x() = 1 - p.x();
-  for (auto& t : m.triangles) std::swap(t[1], t[2]);
-  for (auto& l : m.edgeLabel) l = l == 2 ? 4 : l == 4 ? 2 : l;
+  for (friction::Index c = 0; c < m.numCells(); ++c) std::swap(m.cell(c)[1], m.cell(c)[2]);
+  for (auto& l : m.facetLabel) l = l == 2 ? 4 : l == 4 ? 2 : l;
   Case b("paperBenchmark", "stab-mirror-b");
   b.edit("0/D", "\\(1 \\(-0.02 -0.025\\)\\)", "(1 (0.02 -0.025))");
   REQUIRE(runWithMesh(b, m) == 0);

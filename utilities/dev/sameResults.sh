@@ -8,7 +8,7 @@
 # it was made from, and two builds live in different folders), except
 #   * logs (log.*, *.log): compared after removing what measures time or memory (seconds,
 #     "~… left", peak memory, dates), which differs from run to run of the same binary;
-#     and after writing every absolute path into the build tree as <build>/ (two builds
+#     and after writing every absolute path into the work folders or a build tree as <work>, <build>/ (two builds
 #     live in different folders);
 #   * gmsh's own log (it stamps the date);
 #   * the runs that a signal or a kill stops at a moment the test does not fix (where the
@@ -22,9 +22,9 @@ a=$1 b=$2
 [ -d "$a" ] && [ -d "$b" ] || { echo "$0: both arguments must be folders" >&2; exit 2; }
 normalise() {
   sed -E -e 's/[0-9.]+(e[-+]?[0-9]+)? ?(s|ms|MB|GB|MiB|GiB)\b/<t>/g' \
-    -e 's/~[^]]*left/~<t> left/g' -e "s#/[^ :'\"]*/build/#<build>/#g" -e 's/[0-9]{4}-[0-9]{2}-[0-9]{2}[ T][0-9:.]+/<date>/g' "$1"
+    -e 's/~[^]]*left/~<t> left/g' -e "s#/[^ :'\"]*/tests/(regression|stability)/work#<work>#g" -e "s#/[^ :'\"]*/build/#<build>/#g" -e 's/[0-9]{4}-[0-9]{2}-[0-9]{2}[ T][0-9:.]+/<date>/g' "$1"
 }
-onlyPaths() { sed -e "s#/[^ :'\"]*/build/#<build>/#g" "$1"; }
+onlyPaths() { sed -E -e "s#/[^ :'\"]*/tests/(regression|stability)/work#<work>#g" -e "s#/[^ :'\"]*/build/#<build>/#g" "$1"; }
 status=0
 n=0
 while IFS= read -r -d '' f; do

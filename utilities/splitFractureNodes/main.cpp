@@ -37,10 +37,11 @@ std::string point(const Vector2& p) {
 // The boundary patches that contain a node (for the summary of fracture ends).
 std::string patchesAt(const Mesh& mesh, Index v, const std::set<int>& fractureLabels) {
   std::set<std::string> names;
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e)
-    if ((mesh.edges[e][0] == v || mesh.edges[e][1] == v) &&
-        !fractureLabels.count(mesh.edgeLabel[e]))
-      names.insert(mesh.labelNames.at(mesh.edgeLabel[e]));
+  for (Index e = 0; e < mesh.numFacets(); ++e) {
+    const auto f = mesh.facet(e);
+    if (std::find(f.begin(), f.end(), v) != f.end() && !fractureLabels.count(mesh.facetLabel[e]))
+      names.insert(mesh.labelNames.at(mesh.facetLabel[e]));
+  }
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
   return s.empty() ? "no patch" : "patch " + s;
@@ -58,20 +59,31 @@ void printChecks(const Mesh& mesh, const MeshSettings& settings,
                  const MeshSettings::MeshFindings& found) {
   std::cout << "Checks\n    unused vertices:           " << mesh.droppedPoints.size();
   if (!mesh.droppedPoints.empty())
-    std::cout << " dropped from " << mesh.source << " (used by no triangle, e.g. a gmsh "
-              << "Physical Point): " << few(mesh.droppedPoints, [](const Mesh::DroppedPoint& p) {
-                   return "vertex " + std::to_string(p.number) + " at " + point(p.x);
+    std::cout << " dropped from " << mesh.source << " (used by no " << cellName(mesh.dim)
+              << ", e.g. a gmsh "
+              << "Physical Point): " << few(mesh.droppedPoints, [&](const Mesh::DroppedPoint& p) {
+                   return "vertex " + std::to_string(p.number) + " at " +
+                          formatPoint(p.x, mesh.dim);
                  });
   std::cout << "\n    coincident nodes:          " << found.coincident.size();
   if (!found.coincident.empty())
     std::cout << " pairs, allowed by allowCoincidentNodes (a traction-free cut): "
-              << few(found.coincident,
-                     [&](const std::pair<Index, Index>& p) { return point(mesh.points[p.first]); });
-  std::cout << "\n    unlabelled boundary edges: " << found.unlabelled.size();
-  if (!found.unlabelled.empty())
+              << few(found.coincident, [&](const std::pair<Index, Index>& p) {
+                   return formatPoint(mesh.points[p.first], mesh.dim);
+                 });
+  // One entry per unlabelled facet, for few().
+  const int nf = mesh.verticesPerFacet();
+  std::vector<const Index*> unlabelled;
+  for (std::size_t i = 0; i < found.unlabelled.size(); i += nf)
+    unlabelled.push_back(&found.unlabelled[i]);
+  std::cout << "\n    unlabelled boundary " << facetName(mesh.dim) << "s: " << unlabelled.size();
+  if (!unlabelled.empty())
     std::cout << ", in patch " << settings.defaultPatch
-              << " (defaultPatch): " << few(found.unlabelled, [&](const std::array<Index, 2>& e) {
-                   return point(mesh.points[e[0]]) + "-" + point(mesh.points[e[1]]);
+              << " (defaultPatch): " << few(unlabelled, [&](const Index* f) {
+                   std::string s;
+                   for (int k = 0; k < nf; ++k)
+                     s += (k ? "-" : "") + formatPoint(mesh.points[f[k]], mesh.dim);
+                   return s;
                  });
   std::cout << "\n\n";
 }
@@ -80,8 +92,8 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
   std::cout << std::setprecision(6);
   std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ")\n"
             << "    points:    " << mesh.numPoints() << "\n"
-            << "    triangles: " << mesh.numTriangles() << "\n"
-            << "    area:      " << mesh.totalArea() << "\n\n";
+            << "    triangles: " << mesh.numCells() << "\n"
+            << "    area:      " << mesh.totalMeasure() << "\n\n";
 
   std::cout << "Patches\n    " << std::left << std::setw(16) << "name" << std::setw(8) << "label"
             << std::setw(8) << "edges" << std::setw(14) << "length"
@@ -89,10 +101,12 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
   for (const auto& [label, name] : mesh.labelNames) {
     int count = 0;
     double length = 0;
-    for (std::size_t e = 0; e < mesh.edges.size(); ++e)
-      if (mesh.edgeLabel[e] == label) {
+    for (Index e = 0; e < mesh.numFacets(); ++e)
+      if (mesh.facetLabel[e] == label) {
         ++count;
-        length += (mesh.points[mesh.edges[e][1]] - mesh.points[mesh.edges[e][0]]).norm();
+        length += (mesh.points[mesh.facetVertex(e, 1)].head<2>() -
+                   mesh.points[mesh.facetVertex(e, 0)].head<2>())
+                      .norm();
       }
     std::cout << "    " << std::setw(16) << name << std::setw(8) << label << std::setw(8) << count
               << std::setw(14) << length << (fractureLabels.count(label) ? "fracture" : "boundary")
@@ -108,8 +122,9 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
               << g.numTips() << ")\n"
               << "    length:       " << g.length() << "\n";
     for (Index i : {Index(0), n - 1}) {
-      const Vector2& p = mesh.points[g.node[i]];
-      std::cout << "    " << (i == 0 ? "start:        " : "end:          ") << point(p) << " "
+      const Point& p = mesh.points[g.node[i]];
+      std::cout << "    " << (i == 0 ? "start:        " : "end:          ")
+                << formatPoint(p, mesh.dim) << " "
                 << (g.kind[i] == FractureNodeKind::tip
                         ? "tip inside the body (single node)"
                         : "on the outer boundary, " + patchesAt(mesh, g.node[i], fractureLabels) +
@@ -124,8 +139,8 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
   std::cout << "Split mesh\n"
             << "    points:    " << s.mesh.numPoints() << " (+"
             << s.mesh.numPoints() - mesh.numPoints() << ")\n"
-            << "    triangles: " << s.mesh.numTriangles() << "\n"
-            << "    area:      " << s.mesh.totalArea() << "\n\n";
+            << "    triangles: " << s.mesh.numCells() << "\n"
+            << "    area:      " << s.mesh.totalMeasure() << "\n\n";
 }
 
 }  // namespace

@@ -58,19 +58,20 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
         // Outward normal of each edge: away from the third vertex of the triangle it bounds
         // (of the last triangle, in mesh order, if two have it).
         const auto topology = mesh.topology();
-        for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-          if (mesh.edgeLabel[e] != patch.label) continue;
-          const auto [a, b] = mesh.edges[e];
-          const Vector2 d = mesh.points[b] - mesh.points[a];
+        for (Index e = 0; e < mesh.numFacets(); ++e) {
+          if (mesh.facetLabel[e] != patch.label) continue;
+          const Index a = mesh.facetVertex(e, 0), b = mesh.facetVertex(e, 1);
+          const Vector2 d = mesh.points[b].head<2>() - mesh.points[a].head<2>();
           Vector2 n = Vector2(d.y(), -d.x()).normalized();
           const Index f = topology->findFacet({a, b});
           if (f < 0)
-            throw InputError(mesh.source, "the edge " + formatPoint(mesh.points[a]) + "-" +
-                                              formatPoint(mesh.points[b]) + " of patch '" + name +
+            throw InputError(mesh.source, "the edge " + formatPoint(mesh.points[a], mesh.dim) +
+                                              "-" + formatPoint(mesh.points[b], mesh.dim) +
+                                              " of patch '" + name +
                                               "' is not a side of any triangle");
           const auto last = topology->cellOf(f, topology->numCellsOf(f) - 1);
           const Index c = topology->oppositeVertex(last.cell, last.local);
-          if ((mesh.points[c] - mesh.points[a]).dot(n) > 0) n = -n;
+          if ((mesh.points[c].head<2>() - mesh.points[a].head<2>()).dot(n) > 0) n = -n;
           patch.outwardNormal.push_back(n);
         }
       }
@@ -85,9 +86,9 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
   // unless one is given: only patches on the outer boundary must be listed.
   const auto topology = mesh.topology();
   std::set<int> onBoundary;
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-    const Index f = topology->findFacet({mesh.edges[e][0], mesh.edges[e][1]});
-    if (f >= 0 && topology->isBoundary(f)) onBoundary.insert(mesh.edgeLabel[e]);
+  for (Index e = 0; e < mesh.numFacets(); ++e) {
+    const Index f = topology->findFacet({mesh.facetVertex(e, 0), mesh.facetVertex(e, 1)});
+    if (f >= 0 && topology->isBoundary(f)) onBoundary.insert(mesh.facetLabel[e]);
   }
   for (const auto& [name, label] : labelOf) {
     if (!onBoundary.count(label)) continue;
@@ -129,7 +130,7 @@ Eigen::VectorXd BoundaryConditions::neumannLoad(const LagrangeSpace& space, doub
     const auto edges = space.labelledEdges(p.label);
     for (std::size_t e = 0; e < edges.size(); ++e) {
       const auto [a, b] = edges[e];
-      const double length = (mesh.points[b] - mesh.points[a]).norm();
+      const double length = (mesh.points[b].head<2>() - mesh.points[a].head<2>()).norm();
       const Vector2 g =
           p.type == Type::traction ? Vector2(v[0], v[1]) : Vector2(-v[0] * p.outwardNormal[e]);
       // ∫ φ_i ds on a straight edge: L/2 at the ends (P1); L/6, 2L/3, L/6 (P2).

@@ -228,7 +228,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   slip_ = Eigen::VectorXd::Zero(system_->blockSize() * n);
 
   const auto& f = system_->factorization();
-  log << "Split mesh: " << split_.mesh.numPoints() << " points, " << split_.mesh.numTriangles()
+  log << "Split mesh: " << split_.mesh.numPoints() << " points, " << split_.mesh.numCells()
       << " triangles, " << system_->unsplitSpace().numDofs() << " dofs (P" << order_ << "), " << n
       << " fracture control nodes\n";
   // P1 triangles lock for nearly incompressible material (the discrete divergence-free
@@ -297,8 +297,9 @@ void FrictionCase::findFloatingParts() {
   const Mesh& m = split_.mesh;
   const std::size_t np = m.points.size();
   Parts split(np), whole(np);
-  for (const auto& tri : m.triangles)
-    for (int a = 1; a < 3; ++a) {
+  for (Index t = 0; t < m.numCells(); ++t)
+    for (int a = 1, n = m.verticesPerCell(); a < n; ++a) {
+      const auto tri = m.cell(t);
       split.join(tri[0], tri[a]);
       whole.join(split_.origin.empty() ? tri[0] : split_.origin[tri[0]],
                  split_.origin.empty() ? tri[a] : split_.origin[tri[a]]);
@@ -310,10 +311,10 @@ void FrictionCase::findFloatingParts() {
       fixedLabel[p.label] = 1;
     }
   std::vector<char> held(np, 0), wholeHeld(np, 0);
-  for (std::size_t e = 0; e < m.edges.size(); ++e) {
-    const int l = m.edgeLabel[e];
+  for (Index e = 0; e < m.numFacets(); ++e) {
+    const int l = m.facetLabel[e];
     if (l < 0 || l >= static_cast<int>(fixedLabel.size()) || !fixedLabel[l]) continue;
-    for (Index v : m.edges[e]) {
+    for (Index v : m.facet(e)) {
       held[split.root(v)] = 1;
       wholeHeld[whole.root(split_.origin.empty() ? v : split_.origin[v])] = 1;
     }
@@ -325,16 +326,18 @@ void FrictionCase::findFloatingParts() {
   };
   std::map<Index, Sum> sums;
   Vector2 lo = Vector2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const auto& x : m.points) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  for (const auto& x : m.points) lo = lo.cwiseMin(x.head<2>()), hi = hi.cwiseMax(x.head<2>());
   diameter_ = m.points.empty() ? 0.0 : (hi - lo).norm();
-  for (Index t = 0; t < m.numTriangles(); ++t) {
-    const auto& tri = m.triangles[t];
+  for (Index t = 0; t < m.numCells(); ++t) {
+    const auto tri = m.cell(t);
     const Index r = split.root(tri[0]);
     if (held[r]) continue;
     Sum& s = sums[r];
-    const double a = std::abs(m.signedArea(t));
+    const double a = std::abs(m.signedMeasure(t));
     ++s.triangles;
-    s.centre += a * (m.points[tri[0]] + m.points[tri[1]] + m.points[tri[2]]) / 3;
+    s.centre +=
+        a * (m.points[tri[0]].head<2>() + m.points[tri[1]].head<2>() + m.points[tri[2]].head<2>()) /
+        3;
     s.area += a;
   }
   floating_.clear();
@@ -344,10 +347,12 @@ void FrictionCase::findFloatingParts() {
     p.triangles = s.triangles;
     const Vector2 centre = s.area > 0 ? Vector2(s.centre / s.area) : Vector2::Zero();
     double best = std::numeric_limits<double>::infinity();
-    for (Index t = 0; t < m.numTriangles(); ++t) {
-      const auto& tri = m.triangles[t];
+    for (Index t = 0; t < m.numCells(); ++t) {
+      const auto tri = m.cell(t);
       if (split.root(tri[0]) != r) continue;
-      const Vector2 c = (m.points[tri[0]] + m.points[tri[1]] + m.points[tri[2]]) / 3;
+      const Vector2 c =
+          (m.points[tri[0]].head<2>() + m.points[tri[1]].head<2>() + m.points[tri[2]].head<2>()) /
+          3;
       if ((c - centre).norm() < best) best = (c - centre).norm(), p.point = c;
     }
     p.heldThroughFracture = wholeHeld[whole.root(split_.origin.empty() ? r : split_.origin[r])];
@@ -406,15 +411,19 @@ std::string FrictionCase::factorFailureDiagnosis() const {
   const Mesh& m = split_.mesh;
   double worst = 0;
   Vector2 where = Vector2::Zero();
-  for (Index t = 0; t < m.numTriangles(); ++t) {
-    const auto& tri = m.triangles[t];
+  for (Index t = 0; t < m.numCells(); ++t) {
+    const auto tri = m.cell(t);
     double longest = 0;
     for (int a = 0; a < 3; ++a)
-      longest = std::max(longest, (m.points[tri[a]] - m.points[tri[(a + 1) % 3]]).squaredNorm());
-    const double area = std::abs(m.signedArea(t));
+      longest = std::max(
+          longest,
+          (m.points[tri[a]].head<2>() - m.points[tri[(a + 1) % 3]].head<2>()).squaredNorm());
+    const double area = std::abs(m.signedMeasure(t));
     const double aspect = area > 0 ? longest / (2 * area) : std::numeric_limits<double>::infinity();
     if (aspect > worst)
-      worst = aspect, where = (m.points[tri[0]] + m.points[tri[1]] + m.points[tri[2]]) / 3;
+      worst = aspect, where = (m.points[tri[0]].head<2>() + m.points[tri[1]].head<2>() +
+                               m.points[tri[2]].head<2>()) /
+                              3;
   }
   s << "every part is held, so the matrix is singular to working precision through its "
        "conditioning (smallest pivot ratio "

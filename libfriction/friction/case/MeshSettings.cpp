@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 
+#include <Eigen/Geometry>
+
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/mesh/MeshCheck.hpp"
@@ -86,14 +88,15 @@ MeshSettings MeshSettings::read(const std::string& caseDir) {
 }
 
 void MeshSettings::nameLabels(Mesh& mesh) const {
-  const std::set<int> present(mesh.edgeLabel.begin(), mesh.edgeLabel.end());
+  const std::set<int> present(mesh.facetLabel.begin(), mesh.facetLabel.end());
   std::map<int, std::string> names;
   for (const PatchName& p : patches) {
     if (!present.count(p.label)) {
       std::string list;
       for (int l : present) list += " " + std::to_string(l);
       throw InputError(p.where, "patch '" + p.name + "': label " + std::to_string(p.label) +
-                                    " does not occur among the edges of " + mesh.source +
+                                    " does not occur among the " +
+                                    std::string(facetName(mesh.dim)) + "s of " + mesh.source +
                                     " (labels present:" + list + ")");
     }
     names[p.label] = p.name;
@@ -151,13 +154,13 @@ MeshSettings::MeshFindings MeshSettings::checkMesh(Mesh& mesh) const {
     std::string where;
     const std::size_t shown = std::min<std::size_t>(found.coincident.size(), 5);
     for (std::size_t i = 0; i < shown; ++i)
-      where += (i ? ", " : "") + formatPoint(mesh.points[found.coincident[i].first]);
+      where += (i ? ", " : "") + formatPoint(mesh.points[found.coincident[i].first], mesh.dim);
     if (shown < found.coincident.size()) where += ", ...";
     throw InputError(
         mesh.source,
         std::to_string(found.coincident.size()) +
-            " pairs of vertices lie at the same place without sharing a triangle side, at " +
-            where +
+            " pairs of vertices lie at the same place without sharing " +
+            (mesh.dim == 2 ? "a triangle side" : "a tetrahedron edge") + ", at " + where +
             ": a cut hidden in the mesh (e.g. two gmsh curves or points at one place that "
             "were not merged), which the solver would treat as a traction-free crack. Merge "
             "them (gmsh: Coherence, or embed the curve with Curve{c} In Surface{s}; for a "
@@ -166,26 +169,43 @@ MeshSettings::MeshFindings MeshSettings::checkMesh(Mesh& mesh) const {
             dictPath + " if the cut is meant");
   }
 
-  found.unlabelled = unlabelledBoundaryEdges(mesh);
+  found.unlabelled = unlabelledBoundaryFacets(mesh);
   if (found.unlabelled.empty()) return found;
+  const int nf = mesh.verticesPerFacet();
+  const std::size_t count = found.unlabelled.size() / nf;
   if (defaultPatch.empty()) {
-    double length = 0;
-    for (const auto& e : found.unlabelled) length += (mesh.points[e[1]] - mesh.points[e[0]]).norm();
+    // Total length (2D, x and y only as the 2D code always did) or area (3D).
+    double measure = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      const Index* v = &found.unlabelled[i * nf];
+      if (nf == 2)
+        measure += (mesh.points[v[1]].head<2>() - mesh.points[v[0]].head<2>()).norm();
+      else
+        measure += 0.5 * (mesh.points[v[1]] - mesh.points[v[0]])
+                             .cross(mesh.points[v[2]] - mesh.points[v[0]])
+                             .norm();
+    }
     std::string where;
-    const std::size_t shown = std::min<std::size_t>(found.unlabelled.size(), 3);
-    for (std::size_t i = 0; i < shown; ++i)
-      where += std::string(i ? ", " : "") + formatPoint(mesh.points[found.unlabelled[i][0]]) + "-" +
-               formatPoint(mesh.points[found.unlabelled[i][1]]);
-    if (shown < found.unlabelled.size()) where += ", ...";
+    const std::size_t shown = std::min<std::size_t>(count, 3);
+    for (std::size_t i = 0; i < shown; ++i) {
+      where += i ? ", " : "";
+      for (int k = 0; k < nf; ++k)
+        where += (k ? "-" : "") + formatPoint(mesh.points[found.unlabelled[i * nf + k]], mesh.dim);
+    }
+    if (shown < count) where += ", ...";
     std::ostringstream len;
     len.precision(6);
-    len << length;
+    len << measure;
     throw InputError(
         mesh.source,
-        std::to_string(found.unlabelled.size()) + " boundary edges (total length " + len.str() +
-            ") have no label: " + where +
+        std::to_string(count) +
+            (nf == 2 ? " boundary edges (total length " : " boundary triangles (total area ") +
+            len.str() + ") have no label: " + where +
             ". Without one the solver would leave them traction-free unasked. Label them in "
-            "the mesh (a gmsh Physical Curve, a FreeFEM border label), or set "
+            "the mesh (" +
+            (nf == 2 ? "a gmsh Physical Curve, a FreeFEM border label"
+                     : "a gmsh Physical Surface, a FreeFEM boundary label") +
+            "), or set "
             "'defaultPatch <name>;' in " +
             dictPath + " and give that patch a condition in 0/D (type free for traction-free)");
   }
@@ -201,10 +221,9 @@ MeshSettings::MeshFindings MeshSettings::checkMesh(Mesh& mesh) const {
     label = maxLabel + 1;
     mesh.labelNames[label] = defaultPatch;
   }
-  for (const auto& e : found.unlabelled) {
-    mesh.edges.push_back(e);
-    mesh.edgeLabel.push_back(label);
-  }
+  mesh.facetVertices.insert(mesh.facetVertices.end(), found.unlabelled.begin(),
+                            found.unlabelled.end());
+  mesh.facetLabel.insert(mesh.facetLabel.end(), count, label);
   found.defaultPatchLabel = label;
   return found;
 }

@@ -60,8 +60,8 @@ struct MeshSettings {
   /// What checkMesh found, for the split summary.
   struct MeshFindings {
     std::vector<std::pair<Index, Index>> coincident;  ///< see coincidentPoints
-    std::vector<std::array<Index, 2>> unlabelled;     ///< see unlabelledBoundaryEdges
-    int defaultPatchLabel = -1;  ///< label that took the unlabelled edges, -1 if none
+    std::vector<Index> unlabelled;  ///< mesh.dim vertices each: see unlabelledBoundaryFacets
+    int defaultPatchLabel = -1;     ///< label that took the unlabelled edges, -1 if none
   };
 
   /// After nameLabels: find coincident vertices and unlabelled boundary edges (MeshCheck.hpp)

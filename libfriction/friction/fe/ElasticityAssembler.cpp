@@ -25,9 +25,8 @@ Simplex<dim> cellGeometry(const Mesh& mesh, Index cell);
 
 template <>
 Simplex<2> cellGeometry<2>(const Mesh& mesh, Index cell) {
-  const auto& t = mesh.triangles[static_cast<std::size_t>(cell)];
   std::array<Vector2, 3> vertex;
-  for (int i = 0; i < 3; ++i) vertex[i] = mesh.points[static_cast<std::size_t>(t[i])];
+  for (int i = 0; i < 3; ++i) vertex[i] = mesh.points[mesh.cellVertex(cell, i)].head<2>();
   return Simplex<2>(vertex);
 }
 

@@ -13,25 +13,29 @@ namespace friction {
 
 LagrangeSpace::LagrangeSpace(const Mesh& mesh, int degree) : mesh_(&mesh), degree_(degree) {
   FRICTION_ASSERT(degree == 1 || degree == 2, "Lagrange degree must be 1 or 2");
+  if (mesh.dim != 2)
+    throw InputError(mesh.source,
+                     "the mesh is 3D (tetrahedra): finite elements on a 3D mesh "
+                     "are not supported yet; expected a 2D triangle mesh");
   const Index np = mesh.numPoints();
-  const Index nt = mesh.numTriangles();
+  const Index nt = mesh.numCells();
 
   // Edges are the facets of the mesh's (shared) topology, numbered in key order (a, b), a < b.
   topology_ = mesh.topology();
 
   // Node coordinates: mesh points, then edge midpoints in edge order.
-  coordinates_ = mesh.points;
+  coordinates_.reserve(np + (degree_ == 2 ? topology_->numFacets() : 0));
+  for (const Point& p : mesh.points) coordinates_.push_back(p.head<2>());
   if (degree_ == 2) {
-    coordinates_.reserve(coordinates_.size() + topology_->numFacets());
     for (Index f = 0; f < topology_->numFacets(); ++f)
-      coordinates_.push_back(0.5 * (mesh.points[topology_->facetVertex(f, 0)] +
-                                    mesh.points[topology_->facetVertex(f, 1)]));
+      coordinates_.push_back(0.5 * (mesh.points[topology_->facetVertex(f, 0)].head<2>() +
+                                    mesh.points[topology_->facetVertex(f, 1)].head<2>()));
   }
 
   const int npc = nodesPerCell();
   cellNodes_.resize(static_cast<std::size_t>(npc) * nt);
   for (Index c = 0; c < nt; ++c) {
-    const auto& t = mesh.triangles[c];
+    const auto t = mesh.cell(c);
     Index* out = &cellNodes_[static_cast<std::size_t>(npc) * c];
     out[0] = t[0];
     out[1] = t[1];
@@ -43,13 +47,13 @@ LagrangeSpace::LagrangeSpace(const Mesh& mesh, int degree) : mesh_(&mesh), degre
 
   // A labelled edge that no triangle has would get no midpoint and no stiffness: the mesh is
   // inconsistent, and the user must hear about it now rather than see a singular matrix.
-  for (std::size_t i = 0; i < mesh.edges.size(); ++i) {
-    const auto& e = mesh.edges[i];
+  for (Index i = 0; i < mesh.numFacets(); ++i) {
+    const auto e = mesh.facet(i);
     const bool inRange = e[0] >= 0 && e[0] < np && e[1] >= 0 && e[1] < np;
     if (!inRange || findEdge(e[0], e[1]) < 0)
       throw InputError(mesh.source, "labelled edge " + std::to_string(i) + " (nodes " +
                                         std::to_string(e[0]) + ", " + std::to_string(e[1]) +
-                                        ", label " + std::to_string(mesh.edgeLabel[i]) +
+                                        ", label " + std::to_string(mesh.facetLabel[i]) +
                                         ") is not a side of any triangle");
   }
 }
@@ -90,8 +94,9 @@ NodeList LagrangeSpace::edgeNodes(Index a, Index b) const {
 
 std::vector<std::array<Index, 2>> LagrangeSpace::labelledEdges(int label) const {
   std::vector<std::array<Index, 2>> out;
-  for (std::size_t i = 0; i < mesh_->edges.size(); ++i)
-    if (mesh_->edgeLabel[i] == label) out.push_back(mesh_->edges[i]);
+  for (Index i = 0; i < mesh_->numFacets(); ++i)
+    if (mesh_->facetLabel[i] == label)
+      out.push_back({mesh_->facetVertex(i, 0), mesh_->facetVertex(i, 1)});
   return out;
 }
 

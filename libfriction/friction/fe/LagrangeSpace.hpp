@@ -46,7 +46,7 @@ class LagrangeSpace {
 
   Index numNodes() const { return static_cast<Index>(coordinates_.size()); }
   Index numDofs() const { return 2 * numNodes(); }
-  Index numCells() const { return mesh_->numTriangles(); }
+  Index numCells() const { return mesh_->numCells(); }
   /// Nodes per triangle: 3 (P1) or 6 (P2).
   int nodesPerCell() const { return degree_ == 1 ? 3 : 6; }
   /// Nodes per edge: 2 (P1) or 3 (P2).

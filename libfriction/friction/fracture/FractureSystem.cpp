@@ -32,15 +32,14 @@ Mesh unsplitMeshOf(const SplitMesh& s) {
   m.source = s.mesh.source;
   m.format = s.mesh.format;
   const Index n = s.numOriginalPoints();
+  m.dim = s.mesh.dim;
   m.points.assign(s.mesh.points.begin(), s.mesh.points.begin() + n);
-  m.triangles = s.mesh.triangles;
-  for (auto& t : m.triangles)
-    for (Index& v : t) v = s.origin[v];
-  m.triangleRegion = s.mesh.triangleRegion;
-  m.edges = s.mesh.edges;
-  for (auto& e : m.edges)
-    for (Index& v : e) v = s.origin[v];
-  m.edgeLabel = s.mesh.edgeLabel;
+  m.cellVertices = s.mesh.cellVertices;
+  for (Index& v : m.cellVertices) v = s.origin[v];
+  m.cellRegion = s.mesh.cellRegion;
+  m.facetVertices = s.mesh.facetVertices;
+  for (Index& v : m.facetVertices) v = s.origin[v];
+  m.facetLabel = s.mesh.facetLabel;
   m.labelNames = s.mesh.labelNames;
   m.regionNames = s.mesh.regionNames;
   return m;
@@ -79,7 +78,7 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
       v.fracture = f;
       v.plus = g.plus[i];
       v.minus = g.minus[i];
-      v.x = split_.mesh.points[g.plus[i]];
+      v.x = split_.mesh.points[g.plus[i]].head<2>();
       v.normal = frameVector(g.normal[i]);
       v.tangent[0] = frameVector(g.tangent[i]);
       v.arclength = g.arclength[i];
@@ -93,7 +92,8 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
         m.plus = splitSpace_->midpointNode(g.plus[i], g.plus[i + 1]);
         m.minus = splitSpace_->midpointNode(g.minus[i], g.minus[i + 1]);
         m.x = splitSpace_->coordinate(m.plus);
-        const Vector2 e = (split_.mesh.points[g.plus[i + 1]] - split_.mesh.points[g.plus[i]]);
+        const Vector2 e =
+            (split_.mesh.points[g.plus[i + 1]].head<2>() - split_.mesh.points[g.plus[i]].head<2>());
         const Vector2 t = e.normalized();
         m.tangent[0] = frameVector(t);
         m.normal = frameVector(normalFromTangent(t));

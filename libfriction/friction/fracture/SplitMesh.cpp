@@ -61,6 +61,10 @@ Index SplitMesh::numOriginalPoints() const {
 SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& specs) {
   const std::string& file = mesh.source;
   const Index nPoints = mesh.numPoints();
+  if (mesh.dim != 2)
+    throw InputError(file,
+                     "the mesh is 3D (tetrahedra): splitting fracture nodes of a 3D mesh "
+                     "is not supported yet; expected a 2D triangle mesh");
 
   // Triangle sides -> the (at most two) triangles they bound.
   const auto topology = mesh.topology();
@@ -69,15 +73,17 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     const Index f = topo.overSharedFacets().front();
     const Index a = topo.facetVertex(f, 0), b = topo.facetVertex(f, 1);
     throw InputError(file, "the mesh is not a valid 2D triangulation: the edge " +
-                               formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
-                               " is a side of " + std::to_string(topo.numCellsOf(f)) +
+                               formatPoint(mesh.points[a], mesh.dim) + "-" +
+                               formatPoint(mesh.points[b], mesh.dim) + " is a side of " +
+                               std::to_string(topo.numCellsOf(f)) +
                                " triangles (at most 2 expected)");
   }
 
   // Points that coincide with another point (only a split mesh has them).
   auto hasTwin = [&](Index v) {
     for (Index w = 0; w < nPoints; ++w)
-      if (w != v && (mesh.points[w] - mesh.points[v]).norm() <= 1e-12 * (1 + mesh.points[v].norm()))
+      if (w != v && (mesh.points[w].head<2>() - mesh.points[v].head<2>()).norm() <=
+                        1e-12 * (1 + mesh.points[v].head<2>().norm()))
         return true;
     return false;
   };
@@ -88,31 +94,33 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
                                   -1);  // side -> fracture
   for (std::size_t f = 0; f < specs.size(); ++f) {
     const FractureSpec& spec = specs[f];
-    for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-      if (mesh.edgeLabel[e] != spec.label) continue;
-      const auto [a, b] = mesh.edges[e];
+    for (Index e = 0; e < mesh.numFacets(); ++e) {
+      if (mesh.facetLabel[e] != spec.label) continue;
+      const Index a = mesh.facetVertex(e, 0), b = mesh.facetVertex(e, 1);
       const Index side = topo.findFacet({a, b});
       if (side >= 0 && fractureOfEdge[side] >= 0) {
         if (fractureOfEdge[side] == static_cast<int>(f)) continue;  // listed twice in one patch
         throw InputError(spec.where, "fractures '" + specs[fractureOfEdge[side]].name + "' and '" +
                                          spec.name + "' share the edge " +
-                                         formatPoint(mesh.points[a]) + "-" +
-                                         formatPoint(mesh.points[b]) + " of " + file +
+                                         formatPoint(mesh.points[a], mesh.dim) + "-" +
+                                         formatPoint(mesh.points[b], mesh.dim) + " of " + file +
                                          ": a fracture patch must be listed once");
       }
       if (side < 0)
         throw InputError(file, "fracture '" + spec.name + "': its edge " +
-                                   formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
+                                   formatPoint(mesh.points[a], mesh.dim) + "-" +
+                                   formatPoint(mesh.points[b], mesh.dim) +
                                    " is not a side of any triangle");
       if (topo.isBoundary(side)) {
         if (hasTwin(a) || hasTwin(b))
           throw InputError(file, "fracture '" + spec.name + "' is already split in this mesh " +
-                                     "(its edge " + formatPoint(mesh.points[a]) + "-" +
-                                     formatPoint(mesh.points[b]) +
+                                     "(its edge " + formatPoint(mesh.points[a], mesh.dim) + "-" +
+                                     formatPoint(mesh.points[b], mesh.dim) +
                                      " bounds one triangle and its nodes have coincident " +
                                      "copies); give splitFractureNodes the unsplit mesh");
         throw InputError(file, "fracture '" + spec.name + "': its edge " +
-                                   formatPoint(mesh.points[a]) + "-" + formatPoint(mesh.points[b]) +
+                                   formatPoint(mesh.points[a], mesh.dim) + "-" +
+                                   formatPoint(mesh.points[b], mesh.dim) +
                                    " lies on the outer boundary of the mesh; a fracture must be "
                                    "inside the body (a side of two triangles)");
       }
@@ -138,13 +146,13 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       throw InputError(
           file,
           "fractures '" + specs[list[0].first].name + "' and '" + specs[list[1].first].name +
-              "' meet at " + formatPoint(mesh.points[v]) +
+              "' meet at " + formatPoint(mesh.points[v], mesh.dim) +
               ": junctions of fractures are not supported (mesh them so that they do not meet)");
     if (list.size() > 2)
       throw InputError(
           file,
           "fracture '" + specs[list[0].first].name + "' branches at " +
-              formatPoint(mesh.points[v]) + " (" + std::to_string(list.size()) +
+              formatPoint(mesh.points[v], mesh.dim) + " (" + std::to_string(list.size()) +
               " fracture edges meet there): junctions of fractures are not supported (give each "
               "branch its own label and keep them apart)");
   }
@@ -161,8 +169,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
   }
 
   // 3. A triangle with all three vertices on one fracture has no node off it: refuse.
-  for (Index t = 0; t < mesh.numTriangles(); ++t) {
-    const auto& tri = mesh.triangles[t];
+  for (Index t = 0; t < mesh.numCells(); ++t) {
+    const auto tri = mesh.cell(t);
     int f0 = -2;
     bool all = true;
     for (int k = 0; k < 3 && all; ++k) {
@@ -176,26 +184,28 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       f0 = f;
     }
     if (all)
-      throw InputError(
-          file, "triangle " + std::to_string(t + 1) + " " + formatPoint(mesh.points[tri[0]]) + " " +
-                    formatPoint(mesh.points[tri[1]]) + " " + formatPoint(mesh.points[tri[2]]) +
-                    " has all three vertices on fracture '" + specs[f0].name +
-                    "', so it cannot be assigned to one side; refining the mesh "
-                    "near the fracture (a smaller element size there) removes it");
+      throw InputError(file, "triangle " + std::to_string(t + 1) + " " +
+                                 formatPoint(mesh.points[tri[0]], mesh.dim) + " " +
+                                 formatPoint(mesh.points[tri[1]], mesh.dim) + " " +
+                                 formatPoint(mesh.points[tri[2]], mesh.dim) +
+                                 " has all three vertices on fracture '" + specs[f0].name +
+                                 "', so it cannot be assigned to one side; refining the mesh "
+                                 "near the fracture (a smaller element size there) removes it");
   }
 
   // Node -> incident triangles, for the nodes on fractures only.
   std::unordered_map<Index, std::vector<Index>> fan;
-  for (Index t = 0; t < mesh.numTriangles(); ++t)
-    for (Index v : mesh.triangles[t])
+  for (Index t = 0; t < mesh.numCells(); ++t)
+    for (Index v : mesh.cell(t))
       if (nodeEdges.count(v)) fan[v].push_back(t);
 
   SplitMesh out;
   out.mesh.source = mesh.source;
   out.mesh.format = mesh.format;
+  out.mesh.dim = mesh.dim;
   out.mesh.points = mesh.points;
-  out.mesh.triangles = mesh.triangles;
-  out.mesh.triangleRegion = mesh.triangleRegion;
+  out.mesh.cellVertices = mesh.cellVertices;
+  out.mesh.cellRegion = mesh.cellRegion;
   out.mesh.labelNames = mesh.labelNames;
   out.mesh.regionNames = mesh.regionNames;
   out.origin.resize(nPoints);
@@ -213,7 +223,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     for (Index v : nodesOfF)
       if (nodeEdges[v].size() == 1) ends.push_back(v);
     auto lexLess = [&](Index a, Index b) {
-      const Vector2 &p = mesh.points[a], &q = mesh.points[b];
+      const Point &p = mesh.points[a], &q = mesh.points[b];
       return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
     };
     const Index start = *std::min_element(ends.begin(), ends.end(), lexLess);
@@ -245,13 +255,14 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     g.normal.resize(n);
     g.arclength.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const Vector2 a = mesh.points[g.node[i == 0 ? 0 : i - 1]];
-      const Vector2 b = mesh.points[g.node[i + 1 == n ? n - 1 : i + 1]];
+      const Vector2 a = mesh.points[g.node[i == 0 ? 0 : i - 1]].head<2>();
+      const Vector2 b = mesh.points[g.node[i + 1 == n ? n - 1 : i + 1]].head<2>();
       g.tangent[i] = (b - a).normalized();
       g.normal[i] = normalFromTangent(g.tangent[i]);
       g.arclength[i] = i == 0 ? 0.0
-                              : g.arclength[i - 1] +
-                                    (mesh.points[g.node[i]] - mesh.points[g.node[i - 1]]).norm();
+                              : g.arclength[i - 1] + (mesh.points[g.node[i]].head<2>() -
+                                                      mesh.points[g.node[i - 1]].head<2>())
+                                                         .norm();
     }
 
     // Split each node: union the triangles of its fan across non-fracture sides.
@@ -263,7 +274,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       const std::vector<Index>& tris = fan[v];
       UnionFind uf(static_cast<int>(tris.size()));
       for (std::size_t p = 0; p < tris.size(); ++p)
-        for (Index w : mesh.triangles[tris[p]]) {
+        for (Index w : mesh.cell(tris[p])) {
           if (w == v) continue;
           const Index side = topo.findFacet({v, w});
           if (fractureOfEdge[side] >= 0 || topo.numCellsOf(side) != 2) continue;
@@ -278,7 +289,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
 
       if (groups.size() == 1) {
         if (nodeEdges[v].size() != 1)
-          throw InputError(file, "fracture '" + spec.name + "' at " + formatPoint(mesh.points[v]) +
+          throw InputError(file, "fracture '" + spec.name + "' at " +
+                                     formatPoint(mesh.points[v], mesh.dim) +
                                      ": the triangles around this node are not separated by "
                                      "the fracture (is the mesh conforming to the fracture?)");
         g.kind[i] = FractureNodeKind::tip;
@@ -286,7 +298,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
         continue;
       }
       if (groups.size() > 2)
-        throw InputError(file, "fracture '" + spec.name + "' at " + formatPoint(mesh.points[v]) +
+        throw InputError(file, "fracture '" + spec.name + "' at " +
+                                   formatPoint(mesh.points[v], mesh.dim) +
                                    ": the fracture cuts the triangles around this node into " +
                                    std::to_string(groups.size()) +
                                    " groups (2 expected); the mesh is not a manifold here");
@@ -299,7 +312,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       int gi = 0;
       for (const auto& [root, list] : groups) {
         for (Index t : list) {
-          const auto& tri = mesh.triangles[t];
+          const auto tri = mesh.cell(t);
           for (const auto& fe : nodeEdges[v]) {
             const Index w = fe.second;
             if (std::find(tri.begin(), tri.end(), w) == tri.end()) continue;
@@ -308,9 +321,10 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
               if (x != v && x != w) c = x;
             // Edge normal of (v, w) in the walking direction of the fracture.
             const bool forward = (i + 1 < n && g.node[i + 1] == w);
-            Vector2 dir = mesh.points[w] - mesh.points[v];
+            Vector2 dir = mesh.points[w].head<2>() - mesh.points[v].head<2>();
             if (!forward) dir = -dir;
-            const double s = (mesh.points[c] - mesh.points[v]).dot(normalFromTangent(dir));
+            const double s =
+                (mesh.points[c].head<2>() - mesh.points[v].head<2>()).dot(normalFromTangent(dir));
             sideOf[gi] = s < 0 ? +1 : -1;
             break;
           }
@@ -319,7 +333,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
         ++gi;
       }
       if (sideOf[0] == 0 || sideOf[1] == 0 || sideOf[0] == sideOf[1])
-        throw InputError(file, "fracture '" + spec.name + "' at " + formatPoint(mesh.points[v]) +
+        throw InputError(file, "fracture '" + spec.name + "' at " +
+                                   formatPoint(mesh.points[v], mesh.dim) +
                                    ": cannot tell the two sides of the fracture apart (folded "
                                    "or inverted triangles next to it?)");
 
@@ -331,7 +346,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       for (const auto& [root, list] : groups) {
         if (sideOf[gi++] < 0)
           for (Index t : list)
-            for (Index& x : out.mesh.triangles[t])
+            for (Index& x : out.mesh.cell(t))
               if (x == v) x = copy;
       }
       g.plus[i] = v;
@@ -341,18 +356,18 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
   }
 
   // 5. Boundary patches follow the copies their triangle uses.
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-    const auto [a, b] = mesh.edges[e];
+  for (Index e = 0; e < mesh.numFacets(); ++e) {
+    const Index a = mesh.facetVertex(e, 0), b = mesh.facetVertex(e, 1);
     const Index side = topo.findFacet({a, b});
     if (side >= 0 && fractureOfEdge[side] >= 0) continue;
     if (side < 0)
-      throw InputError(file, "edge " + formatPoint(mesh.points[a]) + "-" +
-                                 formatPoint(mesh.points[b]) + " with label " +
-                                 std::to_string(mesh.edgeLabel[e]) +
+      throw InputError(file, "edge " + formatPoint(mesh.points[a], mesh.dim) + "-" +
+                                 formatPoint(mesh.points[b], mesh.dim) + " with label " +
+                                 std::to_string(mesh.facetLabel[e]) +
                                  " is not a side of any triangle");
     const Index t = topo.cellOf(side, 0).cell;
-    const auto& orig = mesh.triangles[t];
-    const auto& split = out.mesh.triangles[t];
+    const auto orig = mesh.cell(t);
+    const auto split = out.mesh.cell(t);
     std::array<Index, 2> ne{a, b};
     for (Index& x : ne)
       for (int k = 0; k < 3; ++k)
@@ -360,8 +375,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
           x = split[k];
           break;
         }
-    out.mesh.edges.push_back(ne);
-    out.mesh.edgeLabel.push_back(mesh.edgeLabel[e]);
+    out.mesh.addFacet({ne[0], ne[1]}, mesh.facetLabel[e]);
   }
   return out;
 }

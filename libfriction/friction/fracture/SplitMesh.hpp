@@ -59,7 +59,7 @@ struct SplitMeshRecord {
 };
 
 /// A mesh whose fracture nodes are split. mesh.points holds the unsplit points first (the Ω⁺
-/// copy keeps the original number) and the Ω⁻ copies after them; mesh.edges holds the
+/// copy keeps the original number) and the Ω⁻ copies after them; mesh.facetVertices holds the
 /// boundary patches only (fracture edges live in `fractures`), renumbered to the copies their
 /// triangle uses.
 struct SplitMesh {

@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 
+#include "friction/core/Assert.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 #include "friction/fracture/SignConventions.hpp"
@@ -41,17 +42,24 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
   w.setPrecision(precision);
   w.entryString("source", m.source);
   w.entryString("format", m.format);
-  w.entry("points", m.points);
+  FRICTION_ASSERT(m.dim == 2, "writeSplitMesh: a split mesh is 2D (the splitter refuses 3D)");
+  std::vector<Vector2> points;
+  points.reserve(m.points.size());
+  for (const Point& p : m.points) points.push_back(p.head<2>());
+  w.entry("points", points);
   w.entry("origin", toInts(split.origin));
-  std::vector<std::array<int, 3>> tris(m.triangles.begin(), m.triangles.end());
+  std::vector<std::array<int, 3>> tris;
+  tris.reserve(m.cellRegion.size());
+  for (Index t = 0; t < m.numCells(); ++t)
+    tris.push_back({m.cellVertex(t, 0), m.cellVertex(t, 1), m.cellVertex(t, 2)});
   w.entry("triangles", tris);
-  w.entry("regions", m.triangleRegion);
+  w.entry("regions", m.cellRegion);
 
   w.beginDict("patches");
   for (const auto& [label, name] : m.labelNames) {
     std::vector<std::array<int, 2>> edges;
-    for (std::size_t e = 0; e < m.edges.size(); ++e)
-      if (m.edgeLabel[e] == label) edges.push_back({m.edges[e][0], m.edges[e][1]});
+    for (Index e = 0; e < m.numFacets(); ++e)
+      if (m.facetLabel[e] == label) edges.push_back({m.facetVertex(e, 0), m.facetVertex(e, 1)});
     const bool isFracture =
         std::any_of(split.fractures.begin(), split.fractures.end(),
                     [&, l = label](const FractureGeometry& g) { return g.label == l; });
@@ -96,7 +104,7 @@ SplitMesh readSplitMesh(const std::string& path) {
   Mesh& m = s.mesh;
   m.source = dict.getWord("source");
   m.format = dict.getWord("format");
-  m.points = dict.getVectorList("points");
+  for (const Vector2& p : dict.getVectorList("points")) m.points.emplace_back(p.x(), p.y(), 0.0);
   const Index nPoints = m.numPoints();
 
   auto checkIndex = [&](const Dictionary& d, const std::string& key, long i) -> Index {
@@ -123,23 +131,24 @@ SplitMesh readSplitMesh(const std::string& path) {
                               " (the unsplit points come first, each its own origin)" + resplit);
 
   for (const auto& t : dict.getIntTupleList<3>("triangles")) {
-    m.triangles.push_back({checkIndex(dict, "triangles", t[0]), checkIndex(dict, "triangles", t[1]),
+    m.cellVertices.insert(m.cellVertices.end(),
+                          {checkIndex(dict, "triangles", t[0]), checkIndex(dict, "triangles", t[1]),
                            checkIndex(dict, "triangles", t[2])});
-    const double area = m.signedArea(m.numTriangles() - 1);
+    const double area = m.signedMeasure(m.numCells() - 1);
     if (!std::isfinite(area))
-      dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numTriangles() - 1) +
+      dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numCells() - 1) +
                                  " has an area that is not a finite number (coordinates too "
                                  "large in 'points'?)");
     if (!(area > 0))
-      dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numTriangles() - 1) +
+      dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numCells() - 1) +
                                  " is clockwise or degenerate (expected counter-clockwise)");
   }
-  if (m.triangles.empty())
+  if (m.cellVertices.empty())
     dict.fail("triangles", "key 'triangles': expected at least one triangle");
   {
     std::vector<std::pair<std::array<Index, 3>, Index>> sorted;
-    for (Index t = 0; t < m.numTriangles(); ++t) {
-      std::array<Index, 3> k = m.triangles[t];
+    for (Index t = 0; t < m.numCells(); ++t) {
+      std::array<Index, 3> k{m.cellVertex(t, 0), m.cellVertex(t, 1), m.cellVertex(t, 2)};
       std::sort(k.begin(), k.end());
       sorted.emplace_back(k, t);
     }
@@ -154,8 +163,7 @@ SplitMesh readSplitMesh(const std::string& path) {
   // A point no triangle uses would be a node without stiffness (and no row in the
   // split-to-unsplit map the solver builds cell by cell).
   std::vector<char> used(nPoints, 0);
-  for (const auto& t : m.triangles)
-    for (Index v : t) used[v] = 1;
+  for (Index v : m.cellVertices) used[v] = 1;
   for (Index i = 0; i < nPoints; ++i)
     if (!used[i])
       dict.fail("points", "key 'points': point " + std::to_string(i) +
@@ -165,11 +173,11 @@ SplitMesh readSplitMesh(const std::string& path) {
   // Built here once, kept by the mesh for the solver (boundary conditions, FE spaces).
   const auto topology = m.topology();
   const auto isSide = [&](Index a, Index b) { return topology->findFacet({a, b}) >= 0; };
-  for (long r : dict.getIntList("regions")) m.triangleRegion.push_back(static_cast<int>(r));
-  if (m.triangleRegion.size() != m.triangles.size())
-    dict.fail("regions", "key 'regions': " + std::to_string(m.triangleRegion.size()) +
+  for (long r : dict.getIntList("regions")) m.cellRegion.push_back(static_cast<int>(r));
+  if (static_cast<Index>(m.cellRegion.size()) != m.numCells())
+    dict.fail("regions", "key 'regions': " + std::to_string(m.cellRegion.size()) +
                              " entries, expected one per triangle (" +
-                             std::to_string(m.triangles.size()) + ")");
+                             std::to_string(m.numCells()) + ")");
 
   const Dictionary& patches = dict.subDict("patches");
   for (const std::string& name : patches.keys()) {
@@ -177,9 +185,9 @@ SplitMesh readSplitMesh(const std::string& path) {
     const int label = static_cast<int>(p.getInt("label", Bounds::nonNegative()));
     m.labelNames[label] = name;
     for (const auto& e : p.getIntTupleList<2>("edges")) {
-      m.edges.push_back({checkIndex(p, "edges", e[0]), checkIndex(p, "edges", e[1])});
-      m.edgeLabel.push_back(label);
-      if (!isSide(m.edges.back()[0], m.edges.back()[1]))
+      const Index a = checkIndex(p, "edges", e[0]), b = checkIndex(p, "edges", e[1]);
+      m.addFacet({a, b}, label);
+      if (!isSide(a, b))
         p.fail("edges", "key 'edges': the edge (" + std::to_string(e[0]) + " " +
                             std::to_string(e[1]) +
                             ") is not a side of any triangle (expected the patch's edges to be "

@@ -102,7 +102,7 @@ class FreeFemParser {
       if (!f.real(x) || !f.real(y) || !f.skip() || !f.done())
         syntaxError("vertex", i + 1, nv_, syntax);
       checkFinite(s_, x, y, "vertex", i + 1);
-      mesh_.points.emplace_back(x, y);
+      mesh_.points.emplace_back(x, y, 0.0);
     }
   }
 
@@ -111,8 +111,8 @@ class FreeFemParser {
     static const std::string fix =
         "list its vertices counter-clockwise (swap two of them); FreeFEM's savemesh always "
         "writes them counter-clockwise, so the file was written or edited by something else";
-    mesh_.triangles.reserve(reserveHint(nt_, s_, 8));
-    mesh_.triangleRegion.reserve(reserveHint(nt_, s_, 8));
+    mesh_.cellVertices.reserve(3 * reserveHint(nt_, s_, 8));
+    mesh_.cellRegion.reserve(reserveHint(nt_, s_, 8));
     for (long long i = 0; i < nt_; ++i) {
       dataLine("triangles", i, nt_, syntax);
       LineFields f = s_.fields();
@@ -126,16 +126,15 @@ class FreeFemParser {
       const TriangleDefect defect = triangleDefect(mesh_.points, t);
       if (defect != TriangleDefect::none)
         failTriangle(s_, defect, mesh_.points, t, "triangle", i + 1, v, fix);
-      mesh_.triangles.push_back(t);
-      mesh_.triangleRegion.push_back(static_cast<int>(region));
-      numbering_.triangleLine.push_back(s_.lineNumber());
+      mesh_.addCell({t[0], t[1], t[2]}, static_cast<int>(region));
+      numbering_.cellLine.push_back(s_.lineNumber());
     }
   }
 
   void readEdges() {
     static constexpr const char* syntax = "v1 v2 label";
-    mesh_.edges.reserve(reserveHint(nbe_, s_, 6));
-    mesh_.edgeLabel.reserve(reserveHint(nbe_, s_, 6));
+    mesh_.facetVertices.reserve(2 * reserveHint(nbe_, s_, 6));
+    mesh_.facetLabel.reserve(reserveHint(nbe_, s_, 6));
     for (long long i = 0; i < nbe_; ++i) {
       dataLine("edges", i, nbe_, syntax);
       LineFields f = s_.fields();
@@ -145,9 +144,8 @@ class FreeFemParser {
         syntaxError("edge", i + 1, nbe_, syntax);
       const std::array<Index, 2> e{vertex(v[0], "edge", i + 1), vertex(v[1], "edge", i + 1)};
       checkEdge(s_, e, "edge", i + 1, v);
-      mesh_.edges.push_back(e);
-      mesh_.edgeLabel.push_back(static_cast<int>(label));
-      numbering_.edgeLine.push_back(s_.lineNumber());
+      mesh_.addFacet({e[0], e[1]}, static_cast<int>(label));
+      numbering_.facetLine.push_back(s_.lineNumber());
     }
   }
 

@@ -168,7 +168,7 @@ class GmshParser {
     }
     if (!nodesLine_) s_.fail("the file has no $Nodes section: expected $Nodes and $Elements");
     if (!elementsLine_) s_.fail("the file has no $Elements section: expected $Elements");
-    if (mesh_.triangles.empty())
+    if (mesh_.cellRegion.empty())
       s_.failAt(elementsLine_,
                 "$Elements holds no 3-node triangles (type 2): expected a 2D mesh (gmsh -2) "
                 "whose surfaces are in physical groups (or Mesh.SaveAll = 1)");
@@ -374,7 +374,7 @@ class GmshParser {
     if (!std::isfinite(z))
       s_.fail("node " + std::to_string(nodeTags_[i]) +
               " has z that is not a finite number: expected z = 0");
-    mesh_.points.emplace_back(x, y);
+    mesh_.points.emplace_back(x, y, 0.0);
     scale_ = std::max({scale_, std::abs(x), std::abs(y)});
     if (std::abs(z) > maxAbsZ_) {
       maxAbsZ_ = std::abs(z);
@@ -502,9 +502,8 @@ class GmshParser {
   void addEdge(const std::array<long long, 2>& v, long long element, int label) {
     const std::array<Index, 2> e{node(v[0], element), node(v[1], element)};
     checkEdge(s_, e, "element", element, v);
-    mesh_.edges.push_back(e);
-    mesh_.edgeLabel.push_back(label);
-    numbering_.edgeLine.push_back(s_.lineNumber());
+    mesh_.addFacet({e[0], e[1]}, label);
+    numbering_.facetLine.push_back(s_.lineNumber());
   }
 
   void addTriangle(const std::array<long long, 3>& v, long long element, int region,
@@ -513,9 +512,8 @@ class GmshParser {
     const TriangleDefect defect = triangleDefect(mesh_.points, t);
     if (defect != TriangleDefect::none)
       failTriangle(s_, defect, mesh_.points, t, "element", element, v, clockwiseFix(surface));
-    mesh_.triangles.push_back(t);
-    mesh_.triangleRegion.push_back(region);
-    numbering_.triangleLine.push_back(s_.lineNumber());
+    mesh_.addCell({t[0], t[1], t[2]}, region);
+    numbering_.cellLine.push_back(s_.lineNumber());
   }
 
   [[noreturn]] void twoRegions(long long surface, long long a, long long b,
@@ -529,8 +527,8 @@ class GmshParser {
   void readElements22() {
     static constexpr const char* syntax = "tag type numTags tags... nodes...";
     const long long n = count("numElements", "the number of elements");
-    mesh_.triangles.reserve(reserveHint(n, s_, 16));
-    mesh_.triangleRegion.reserve(reserveHint(n, s_, 16));
+    mesh_.cellVertices.reserve(3 * reserveHint(n, s_, 16));
+    mesh_.cellRegion.reserve(reserveHint(n, s_, 16));
     std::unordered_map<long long, long long> surfaceRegion;  // elementary tag -> physical
     for (long long i = 0; i < n; ++i) {
       dataLine(elementsLine_, "elements", i, n, syntax);
@@ -597,8 +595,8 @@ class GmshParser {
         !f.integer(minTag) || !f.integer(maxTag) || !f.done() || numBlocks < 0 || numElements < 0)
       syntaxError("the $Elements header", headerSyntax);
     // An upper bound (points and lines count too).
-    mesh_.triangles.reserve(reserveHint(numElements, s_, 8));
-    mesh_.triangleRegion.reserve(reserveHint(numElements, s_, 8));
+    mesh_.cellVertices.reserve(3 * reserveHint(numElements, s_, 8));
+    mesh_.cellRegion.reserve(reserveHint(numElements, s_, 8));
     long long total = 0;
     for (long long b = 0; b < numBlocks; ++b) {
       dataLine(elementsLine_, "element blocks", b, numBlocks, blockSyntax);

@@ -18,14 +18,16 @@ namespace friction {
 /// round-off of the coordinates, ~1e-16 relative).
 inline constexpr double coincidentTolerance = 1e-6;
 
-/// Pairs (a < b) of vertices used by triangles that lie within coincidentTolerance times the
-/// shorter local side length of each other without being joined by a triangle side, ordered
-/// by a. Expected cost O(n): a hash grid.
+/// Pairs (a < b) of vertices used by cells that lie within coincidentTolerance times the
+/// shorter local edge length of each other without being joined by a cell edge, ordered
+/// by a. Expected cost O(n): a sorted grid.
 std::vector<std::pair<Index, Index>> coincidentPoints(const Mesh& mesh);
 
-/// Triangle sides that bound one triangle (the outer boundary, or the lips of a cut) and
-/// appear in no labelled edge of the mesh, oriented as in their triangle (counter-clockwise:
-/// the body on the left).
-std::vector<std::array<Index, 2>> unlabelledBoundaryEdges(const Mesh& mesh);
+/// Facets that bound one cell (the outer boundary, or the lips of a cut) and appear in no
+/// labelled facet of the mesh, mesh.dim vertices each (flat), in lexicographic order of
+/// their vertex lists, oriented with the body inside: a triangle side counter-clockwise as its
+/// triangle runs (the body on the left), a tetrahedron face with its right-hand normal
+/// pointing out of the body.
+std::vector<Index> unlabelledBoundaryFacets(const Mesh& mesh);
 
 }  // namespace friction

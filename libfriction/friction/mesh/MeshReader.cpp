@@ -82,10 +82,10 @@ Mesh readGmshMesh(const std::string& path) {
 
 namespace detail {
 
-TriangleDefect triangleDefect(const std::vector<Vector2>& points, const std::array<Index, 3>& t) {
-  const Vector2 ab = points[t[1]] - points[t[0]];
-  const Vector2 bc = points[t[2]] - points[t[1]];
-  const Vector2 ac = points[t[2]] - points[t[0]];
+TriangleDefect triangleDefect(const std::vector<Point>& points, const std::array<Index, 3>& t) {
+  const Vector2 ab = points[t[1]].head<2>() - points[t[0]].head<2>();
+  const Vector2 bc = points[t[2]].head<2>() - points[t[1]].head<2>();
+  const Vector2 ac = points[t[2]].head<2>() - points[t[0]].head<2>();
   const double area = 0.5 * (ab.x() * ac.y() - ab.y() * ac.x());
   const double longest2 = std::max({ab.squaredNorm(), bc.squaredNorm(), ac.squaredNorm()});
   // Relative to the longest edge so that the test is independent of the mesh's units; 1e-12
@@ -95,10 +95,10 @@ TriangleDefect triangleDefect(const std::vector<Vector2>& points, const std::arr
 }
 
 void failTriangle(const TextScanner& scanner, TriangleDefect defect,
-                  const std::vector<Vector2>& points, const std::array<Index, 3>& t,
-                  const char* kind, long long number, const std::array<long long, 3>& fileVertices,
+                  const std::vector<Point>& points, const std::array<Index, 3>& t, const char* kind,
+                  long long number, const std::array<long long, 3>& fileVertices,
                   const std::string& clockwiseFix) {
-  const Vector2 a = points[t[0]], b = points[t[1]], c = points[t[2]];
+  const Vector2 a = points[t[0]].head<2>(), b = points[t[1]].head<2>(), c = points[t[2]].head<2>();
   const double area = 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
   std::ostringstream s;
   s.precision(6);
@@ -126,27 +126,26 @@ void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, con
 
 void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& numbering) {
   const auto vertexText = [&](Index v) {
-    return std::to_string(numbering.point[v]) + " " + formatPoint(mesh.points[v]);
+    return std::to_string(numbering.point[v]) + " " + formatPoint(mesh.points[v], mesh.dim);
   };
 
   // Vertex -> its triangles (compressed rows): the side checks below walk one vertex's fan,
   // a few triangles, with no sorting or hashing of all sides.
   std::vector<Index> fanStart(mesh.points.size() + 1, 0);
-  for (const auto& t : mesh.triangles)
-    for (Index v : t) ++fanStart[v + 1];
+  for (Index v : mesh.cellVertices) ++fanStart[v + 1];
   for (std::size_t v = 0; v < mesh.points.size(); ++v) fanStart[v + 1] += fanStart[v];
   std::vector<Index> fan(fanStart.back());
   {
     std::vector<Index> next(fanStart.begin(), fanStart.end() - 1);
-    for (Index t = 0; t < mesh.numTriangles(); ++t)
-      for (Index v : mesh.triangles[t]) fan[next[v]++] = t;  // ascending t within each fan
+    for (Index t = 0; t < mesh.numCells(); ++t)
+      for (Index v : mesh.cell(t)) fan[next[v]++] = t;  // ascending t within each fan
   }
   const auto hasVertex = [&](Index t, Index v) {
-    const auto& tri = mesh.triangles[t];
+    const auto tri = mesh.cell(t);
     return tri[0] == v || tri[1] == v || tri[2] == v;
   };
   const auto sortedVertices = [&](Index t) {
-    std::array<Index, 3> k = mesh.triangles[t];
+    std::array<Index, 3> k{mesh.cellVertex(t, 0), mesh.cellVertex(t, 1), mesh.cellVertex(t, 2)};
     std::sort(k.begin(), k.end());
     return k;
   };
@@ -154,29 +153,29 @@ void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& num
   // Per side, the triangles that have it, in file order. A triangle listed twice doubles its
   // stiffness and hides as a valid mesh (each of its sides then has two triangles, as inside
   // the body); it shares every side with its copy, so the side walk finds it.
-  for (Index t = 0; t < mesh.numTriangles(); ++t)
+  for (Index t = 0; t < mesh.numCells(); ++t)
     for (int k = 0; k < 3; ++k) {
-      const Index a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      const Index a = mesh.cellVertex(t, k), b = mesh.cellVertex(t, (k + 1) % 3);
       Index with[3];
       int count = 0;
       for (Index i = fanStart[a]; i < fanStart[a + 1] && count < 3; ++i)
         if (hasVertex(fan[i], b)) with[count++] = fan[i];
       if (count >= 2 && with[1] == t && sortedVertices(with[0]) == sortedVertices(t)) {
         const auto v = sortedVertices(t);
-        scanner.failAt(numbering.triangleLine[t],
+        scanner.failAt(numbering.cellLine[t],
                        "the triangle with vertices " + std::to_string(numbering.point[v[0]]) + " " +
                            std::to_string(numbering.point[v[1]]) + " " +
                            std::to_string(numbering.point[v[2]]) + " is listed twice (lines " +
-                           std::to_string(numbering.triangleLine[with[0]]) + " and " +
-                           std::to_string(numbering.triangleLine[t]) +
+                           std::to_string(numbering.cellLine[with[0]]) + " and " +
+                           std::to_string(numbering.cellLine[t]) +
                            "): expected each triangle once");
       }
       if (count == 3 && with[2] == t)
-        scanner.failAt(numbering.triangleLine[t],
+        scanner.failAt(numbering.cellLine[t],
                        "the side from vertex " + vertexText(a) + " to vertex " + vertexText(b) +
                            " is a side of a third triangle here (the others are at lines " +
-                           std::to_string(numbering.triangleLine[with[0]]) + " and " +
-                           std::to_string(numbering.triangleLine[with[1]]) +
+                           std::to_string(numbering.cellLine[with[0]]) + " and " +
+                           std::to_string(numbering.cellLine[with[1]]) +
                            "): expected a 2D triangulation, where a side bounds at most two "
                            "triangles (overlapping or folded triangles?)");
     }
@@ -187,30 +186,30 @@ void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& num
   };
 
   // Labelled edges: sides of the triangulation, each label once per side.
-  std::vector<std::pair<std::pair<std::uint64_t, int>, std::size_t>> edgeKeys;
-  edgeKeys.reserve(mesh.edges.size());
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-    const auto [a, b] = mesh.edges[e];
+  std::vector<std::pair<std::pair<std::uint64_t, int>, Index>> edgeKeys;
+  edgeKeys.reserve(mesh.facetLabel.size());
+  for (Index e = 0; e < mesh.numFacets(); ++e) {
+    const Index a = mesh.facetVertex(e, 0), b = mesh.facetVertex(e, 1);
     if (!isSide(a, b))
-      scanner.failAt(numbering.edgeLine[e],
+      scanner.failAt(numbering.facetLine[e],
                      "the edge from vertex " + vertexText(a) + " to vertex " + vertexText(b) +
-                         " (label " + std::to_string(mesh.edgeLabel[e]) +
+                         " (label " + std::to_string(mesh.facetLabel[e]) +
                          ") is not a side of any triangle: expected labelled edges on the "
                          "triangulation (the boundary, or a curve embedded in the surface, e.g. "
                          "gmsh's Curve{c} In Surface{s})");
-    edgeKeys.push_back({{sideKey(a, b), mesh.edgeLabel[e]}, e});
+    edgeKeys.push_back({{sideKey(a, b), mesh.facetLabel[e]}, e});
   }
   // An edge listed twice with one label would carry its boundary load twice.
   std::sort(edgeKeys.begin(), edgeKeys.end());
   for (std::size_t i = 1; i < edgeKeys.size(); ++i)
     if (edgeKeys[i].first == edgeKeys[i - 1].first) {
-      const std::size_t e = edgeKeys[i].second;
-      const int first = numbering.edgeLine[edgeKeys[i - 1].second];
-      const int second = numbering.edgeLine[e];
+      const Index e = edgeKeys[i].second;
+      const int first = numbering.facetLine[edgeKeys[i - 1].second];
+      const int second = numbering.facetLine[e];
       scanner.failAt(std::max(first, second),
-                     "the edge from vertex " + vertexText(mesh.edges[e][0]) + " to vertex " +
-                         vertexText(mesh.edges[e][1]) + " is listed twice with label " +
-                         std::to_string(mesh.edgeLabel[e]) + " (lines " +
+                     "the edge from vertex " + vertexText(mesh.facetVertex(e, 0)) + " to vertex " +
+                         vertexText(mesh.facetVertex(e, 1)) + " is listed twice with label " +
+                         std::to_string(mesh.facetLabel[e]) + " (lines " +
                          std::to_string(std::min(first, second)) + " and " +
                          std::to_string(std::max(first, second)) +
                          "): expected each edge once per label");
@@ -219,10 +218,9 @@ void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& num
   // Vertices no triangle uses carry no stiffness: the solver's matrices would have empty
   // rows for them. Drop them and renumber.
   std::vector<Index> newNumber(mesh.points.size(), -1);
-  for (const auto& t : mesh.triangles)
-    for (Index v : t) newNumber[v] = 0;
+  for (Index v : mesh.cellVertices) newNumber[v] = 0;
   Index next = 0;
-  std::vector<Vector2> kept;
+  std::vector<Point> kept;
   kept.reserve(mesh.points.size());
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
     if (newNumber[v] < 0) {
@@ -234,11 +232,9 @@ void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& num
   }
   if (mesh.droppedPoints.empty()) return;
   mesh.points = std::move(kept);
-  for (auto& t : mesh.triangles)
-    for (Index& v : t) v = newNumber[v];
-  // Every edge is a triangle side (checked above), so its vertices are kept.
-  for (auto& e : mesh.edges)
-    for (Index& v : e) v = newNumber[v];
+  for (Index& v : mesh.cellVertices) v = newNumber[v];
+  // Every labelled facet is a facet of a cell (checked above), so its vertices are kept.
+  for (Index& v : mesh.facetVertices) v = newNumber[v];
 }
 
 void checkFinite(const TextScanner& scanner, double x, double y, const char* kind,

@@ -34,7 +34,7 @@ Mesh parseGmshMesh(TextScanner& scanner);
 /// What is wrong with a triangle, if anything: zero area (relative to its longest edge
 /// squared) or clockwise order. Cheap; called for every triangle.
 enum class TriangleDefect { none, zeroArea, clockwise };
-TriangleDefect triangleDefect(const std::vector<Vector2>& points,
+TriangleDefect triangleDefect(const std::vector<Point>& points,
                               const std::array<Index, 3>& triangle);
 
 /// Throw the InputError for a defective triangle at the scanner's current line. `kind` and
@@ -42,7 +42,7 @@ TriangleDefect triangleDefect(const std::vector<Vector2>& points,
 /// vertex numbers as written in the file; `clockwiseFix` tells the user how to repair a
 /// clockwise triangle with the tool that wrote the file.
 [[noreturn]] void failTriangle(const TextScanner& scanner, TriangleDefect defect,
-                               const std::vector<Vector2>& points,
+                               const std::vector<Point>& points,
                                const std::array<Index, 3>& triangle, const char* kind,
                                long long number, const std::array<long long, 3>& fileVertices,
                                const std::string& clockwiseFix);
@@ -54,9 +54,9 @@ void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, con
 /// Where each item of a parsed mesh came from, for the whole-mesh checks of finishMesh.
 struct FileNumbering {
   std::vector<long long>
-      point;  ///< per vertex, its number in the file (FreeFEM position, gmsh tag)
-  std::vector<int> triangleLine;  ///< per triangle, its line
-  std::vector<int> edgeLine;      ///< per labelled edge, its line
+      point;                   ///< per vertex, its number in the file (FreeFEM position, gmsh tag)
+  std::vector<int> cellLine;   ///< per cell, its line
+  std::vector<int> facetLine;  ///< per labelled facet, its line
 };
 
 /// The checks that need the whole mesh, each an InputError at the line of the offending

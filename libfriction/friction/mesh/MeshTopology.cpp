@@ -13,13 +13,6 @@ namespace friction {
 
 namespace {
 
-std::vector<Index> flatTriangles(const Mesh& mesh) {
-  std::vector<Index> cells;
-  cells.reserve(3 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles) cells.insert(cells.end(), t.begin(), t.end());
-  return cells;
-}
-
 // A facet seen from one cell, in the bucket of its smallest vertex: the rest of its key
 // (packed so that integer order is key order), then the cell and local facet (cell · 4 +
 // local), so that sorting a bucket gives the facets in key order and each facet's cells
@@ -70,7 +63,7 @@ std::uint64_t packRest(const std::array<Index, dim>& key) {
 }  // namespace
 
 MeshTopology::MeshTopology(const Mesh& mesh)
-    : MeshTopology(2, mesh.numPoints(), flatTriangles(mesh), mesh.source) {}
+    : MeshTopology(mesh.dim, mesh.numPoints(), mesh.cellVertices, mesh.source) {}
 
 MeshTopology::MeshTopology(int dimension, Index numVertices, std::vector<Index> cellVertices,
                            const std::string& source)
@@ -164,12 +157,7 @@ void MeshTopology::build() {
 }
 
 bool MeshTopology::describes(const Mesh& mesh) const {
-  if (dim_ != 2 || numVertices_ != mesh.numPoints() || numCells() != mesh.numTriangles())
-    return false;
-  for (Index c = 0; c < numCells(); ++c)
-    for (int k = 0; k < 3; ++k)
-      if (cells_[at(c, k)] != mesh.triangles[c][k]) return false;
-  return true;
+  return dim_ == mesh.dim && numVertices_ == mesh.numPoints() && cells_ == mesh.cellVertices;
 }
 
 Index MeshTopology::findFacet(std::initializer_list<Index> vertices) const {

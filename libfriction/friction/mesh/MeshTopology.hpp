@@ -2,7 +2,7 @@
 // facets), built once per mesh and shared by the splitter, the mesh checks, the boundary
 // conditions and the FE space (Mesh::topology()). The dimension d is a run-time fact: a cell
 // has d + 1 vertices and d + 1 facets of d vertices each (triangles and their sides in 2D;
-// tetrahedra and their triangles would drop in with d = 3).
+// tetrahedra and their triangles in 3D).
 //
 // Conventions:
 // * local facet k of a cell is the facet opposite its local vertex k (the other d vertices),
@@ -40,9 +40,9 @@ class MeshTopology {
     int local;
   };
 
-  /// The topology of the triangles of a 2D mesh (mesh.triangles, vertices 0..numPoints − 1).
-  /// Throws InputError naming mesh.source if a triangle has a vertex that is not a point of
-  /// the mesh (the readers never make one).
+  /// The topology of the cells of a mesh (mesh.cellVertices, dimension mesh.dim, vertices
+  /// 0..numPoints − 1). Throws InputError naming mesh.source if a cell has a vertex that is
+  /// not a point of the mesh (the readers never make one).
   explicit MeshTopology(const Mesh& mesh);
 
   /// The topology of `cellVertices.size() / (dimension + 1)` cells of dimension + 1 vertices

@@ -124,8 +124,10 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
             " ComponentName0=\"XX\" ComponentName1=\"YY\" ComponentName2=\"ZZ\""
             " ComponentName3=\"XY\" ComponentName4=\"YZ\" ComponentName5=\"XZ\"");
   for (Index c = 0; c < numCells; ++c) {
-    const auto& t = mesh.triangles[static_cast<std::size_t>(c)];
-    const Vector2 centroid = (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]]) / 3.0;
+    const auto t = mesh.cell(c);
+    const Vector2 centroid =
+        (mesh.points[t[0]].head<2>() + mesh.points[t[1]].head<2>() + mesh.points[t[2]].head<2>()) /
+        3.0;
     Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
     if (initialStress) sigma += initialStress(centroid);
     const double szz = material.outOfPlaneStress(assembler.strain(u, c, centroid));
@@ -136,8 +138,8 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
         0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
         3.0 * sxy * sxy);
     vm << "          " << finite(vonMises) << "\n";
-    const int r = static_cast<std::size_t>(c) < mesh.triangleRegion.size()
-                      ? mesh.triangleRegion[static_cast<std::size_t>(c)]
+    const int r = static_cast<std::size_t>(c) < mesh.cellRegion.size()
+                      ? mesh.cellRegion[static_cast<std::size_t>(c)]
                       : 0;
     region << "          " << r << "\n";
   }

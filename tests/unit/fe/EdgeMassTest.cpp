@@ -47,8 +47,7 @@ TEST_CASE("fe lumped edge mass sums to the edge lengths", "[fe][edgeMass]") {
   }
   // An interior set of edges (the cell diagonals of the first row) works the same way.
   std::vector<std::array<Index, 2>> diagonals;
-  for (int i = 0; i < 5; ++i)
-    diagonals.push_back({mesh.triangles[2 * i][0], mesh.triangles[2 * i][2]});
+  for (int i = 0; i < 5; ++i) diagonals.push_back({mesh.cell(2 * i)[0], mesh.cell(2 * i)[2]});
   double total = 0.0;
   for (const auto& e : diagonals) total += edgeLength(V, e);
   REQUIRE(assembler.lumpedEdgeMass(diagonals).sum() == Approx(total).margin(1e-14));
@@ -78,8 +77,8 @@ TEST_CASE("fe Simpson edge weights integrate quadratics exactly", "[fe][edgeMass
   REQUIRE(integrate(p2, p2.labelledEdges(1)) == Approx(1.0 / 3 + 2.0).margin(1e-14));
   REQUIRE(integrate(p2, p2.labelledEdges(4)) == Approx(2.0).margin(1e-14));
   // A slanted edge: from a = (0, 0) to b, f(a + s(b − a)) integrated exactly by Simpson.
-  const std::array<Index, 2> diag{mesh.triangles[0][0], mesh.triangles[0][2]};
-  const Vector2 a = mesh.points[diag[0]], b = mesh.points[diag[1]];
+  const std::array<Index, 2> diag{mesh.cell(0)[0], mesh.cell(0)[2]};
+  const Vector2 a = mesh.points[diag[0]].head<2>(), b = mesh.points[diag[1]].head<2>();
   const Vector2 d = b - a;
   // ∫_0^1 f(a + s d) |d| ds for f = x² − 3xy + 2, a = 0: (d_x² − 3 d_x d_y)/3 + 2.
   REQUIRE(a.norm() == 0.0);

@@ -36,29 +36,31 @@ inline Mesh unitSquareMesh(int n, double amount = 0.0) {
       const bool bx = (i == 0 || i == n), by = (j == 0 || j == n);
       if (!bx) x += amount * h * jitter(k, 1);
       if (!by) y += amount * h * jitter(k, 2);
-      m.points.emplace_back(x, y);
+      m.points.emplace_back(x, y, 0.0);
     }
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const Index a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
-      m.triangles.push_back({a, b, c});
-      m.triangles.push_back({a, c, d});
-      m.triangleRegion.push_back(0);
-      m.triangleRegion.push_back(0);
+      m.cellVertices.insert(m.cellVertices.end(), {a, b, c});
+      m.cellVertices.insert(m.cellVertices.end(), {a, c, d});
+      m.cellRegion.push_back(0);
+      m.cellRegion.push_back(0);
     }
   for (int k = 0; k < n; ++k) {
-    m.edges.push_back({node(k, 0), node(k + 1, 0)});
-    m.edgeLabel.push_back(1);
-    m.edges.push_back({node(n, k), node(n, k + 1)});
-    m.edgeLabel.push_back(2);
-    m.edges.push_back({node(k + 1, n), node(k, n)});
-    m.edgeLabel.push_back(3);
-    m.edges.push_back({node(0, k + 1), node(0, k)});
-    m.edgeLabel.push_back(4);
+    m.facetVertices.insert(m.facetVertices.end(), {node(k, 0), node(k + 1, 0)});
+    m.facetLabel.push_back(1);
+    m.facetVertices.insert(m.facetVertices.end(), {node(n, k), node(n, k + 1)});
+    m.facetLabel.push_back(2);
+    m.facetVertices.insert(m.facetVertices.end(), {node(k + 1, n), node(k, n)});
+    m.facetLabel.push_back(3);
+    m.facetVertices.insert(m.facetVertices.end(), {node(0, k + 1), node(0, k)});
+    m.facetLabel.push_back(4);
   }
   m.labelNames = {{1, "bottom"}, {2, "right"}, {3, "top"}, {4, "left"}};
-  for (const auto& t : m.triangles) {
-    const Vector2 e1 = m.points[t[1]] - m.points[t[0]], e2 = m.points[t[2]] - m.points[t[0]];
+  for (Index t_ = 0; t_ < m.numCells(); ++t_) {
+    const auto t = m.cell(t_);
+    const Vector2 e1 = (m.points[t[1]] - m.points[t[0]]).head<2>(),
+                  e2 = (m.points[t[2]] - m.points[t[0]]).head<2>();
     if (e1.x() * e2.y() - e1.y() * e2.x() <= 0.0)
       throw std::logic_error("unitSquareMesh: distortion inverted a triangle");
   }
@@ -72,11 +74,12 @@ inline Mesh splitFourTriangleMesh() {
   Mesh m;
   m.source = "splitFourTriangles";
   m.format = "test mesh";
-  m.points = {{0, 0}, {1, 0}, {0, 0.5}, {1, 0.5}, {0, 1}, {1, 1}, {0, 0.5}, {1, 0.5}};
-  m.triangles = {{0, 1, 7}, {0, 7, 6}, {2, 3, 5}, {2, 5, 4}};
-  m.triangleRegion = {2, 2, 1, 1};
-  m.edges = {{0, 1}, {1, 7}, {3, 5}, {5, 4}, {4, 2}, {6, 0}};
-  m.edgeLabel = {1, 2, 2, 3, 4, 4};
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 0.5, 0}, {1, 0.5, 0},
+              {0, 1, 0}, {1, 1, 0}, {0, 0.5, 0}, {1, 0.5, 0}};
+  m.cellVertices = {0, 1, 7, 0, 7, 6, 2, 3, 5, 2, 5, 4};
+  m.cellRegion = {2, 2, 1, 1};
+  m.facetVertices = {0, 1, 1, 7, 3, 5, 5, 4, 4, 2, 6, 0};
+  m.facetLabel = {1, 2, 2, 3, 4, 4};
   return m;
 }
 

@@ -27,18 +27,19 @@ TEST_CASE("fe LagrangeSpace numbers P1 and P2 nodes on a grid", "[fe][space]") {
     const NodeList nodes = p2.cellNodes(c);
     REQUIRE(nodes.size == 6);
     // Vertices keep the mesh numbers; midpoints in the order (0,1), (1,2), (2,0).
-    const auto& t = mesh.triangles[c];
+    const auto& t = mesh.cell(c);
     for (int i = 0; i < 3; ++i) REQUIRE(nodes[i] == t[i]);
     const int pairs[3][2] = {{0, 1}, {1, 2}, {2, 0}};
     for (int e = 0; e < 3; ++e) {
-      const Vector2 mid = 0.5 * (mesh.points[t[pairs[e][0]]] + mesh.points[t[pairs[e][1]]]);
+      const Vector2 mid =
+          0.5 * (mesh.points[t[pairs[e][0]]].head<2>() + mesh.points[t[pairs[e][1]]].head<2>());
       // Exact: the midpoint is computed once by the same formula.
       REQUIRE((p2.coordinate(nodes[3 + e]) - mid).norm() == 0.0);
       REQUIRE(p2.midpointNode(t[pairs[e][1]], t[pairs[e][0]]) == nodes[3 + e]);
     }
   }
   // A labelled edge gives (a, mid, b) in its own orientation.
-  const auto& e = mesh.edges.front();
+  const auto e = mesh.facet(0);
   const NodeList en = p2.edgeNodes(e[0], e[1]);
   REQUIRE(en.size == 3);
   REQUIRE(en[0] == e[0]);
@@ -73,15 +74,16 @@ TEST_CASE("fe P2 space on a split mesh has distinct midpoints on the two sides",
   // The two halves share no node at all.
   std::set<Index> top, bottom;
   for (Index c = 0; c < V.numCells(); ++c)
-    for (Index n : V.cellNodes(c)) (mesh.triangleRegion[c] == 1 ? top : bottom).insert(n);
+    for (Index n : V.cellNodes(c)) (mesh.cellRegion[c] == 1 ? top : bottom).insert(n);
   for (Index n : top) REQUIRE(bottom.count(n) == 0);
   REQUIRE(top.size() + bottom.size() == static_cast<std::size_t>(V.numNodes()));
 }
 
 TEST_CASE("fe LagrangeSpace rejects a labelled edge that is no triangle side", "[fe][space]") {
   Mesh mesh = test::unitSquareMesh(2);
-  mesh.edges.push_back({0, 8});  // corner to corner: crosses the mesh, not a side
-  mesh.edgeLabel.push_back(7);
+  mesh.facetVertices.insert(mesh.facetVertices.end(),
+                            {0, 8});  // corner to corner: crosses the mesh, not a side
+  mesh.facetLabel.push_back(7);
   try {
     LagrangeSpace V(mesh, 1);
     FAIL("no InputError");

@@ -36,9 +36,10 @@ Topology topologyOf(const Mesh& mesh, int fractureLabel) {
              test::connectedComponents(s.mesh),
              g.normal[g.numNodes() / 2],
              {}};
-  for (std::size_t e = 0; e < s.mesh.edges.size(); ++e)
-    t.patchLength[s.mesh.labelNames.at(s.mesh.edgeLabel[e])] +=
-        (s.mesh.points[s.mesh.edges[e][1]] - s.mesh.points[s.mesh.edges[e][0]]).norm();
+  for (std::size_t e = 0; e < s.mesh.facetLabel.size(); ++e)
+    t.patchLength[s.mesh.labelNames.at(s.mesh.facetLabel[e])] +=
+        (s.mesh.points[s.mesh.facet(e)[1]].head<2>() - s.mesh.points[s.mesh.facet(e)[0]].head<2>())
+            .norm();
   return t;
 }
 

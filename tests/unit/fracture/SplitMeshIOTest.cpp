@@ -66,7 +66,7 @@ TEST_CASE("readSplitMesh accepts what splitFractures makes and refuses what woul
 
   SECTION("a point no triangle uses") {
     SplitMesh s = good;
-    s.mesh.points.push_back(Vector2(0.3, 0.3));
+    s.mesh.points.push_back(Point(0.3, 0.3, 0));
     s.origin.push_back(0);  // a valid origin: only its use is missing
     CHECK_THAT(readError(dir, s), Contains("used by no triangle") && Contains("-overwrite"));
   }
@@ -77,18 +77,19 @@ TEST_CASE("readSplitMesh accepts what splitFractures makes and refuses what woul
   }
   SECTION("a triangle listed twice") {
     SplitMesh s = good;
-    s.mesh.triangles.push_back(s.mesh.triangles[0]);
-    s.mesh.triangleRegion.push_back(0);
+    s.mesh.addCell({s.mesh.cellVertex(0, 0), s.mesh.cellVertex(0, 1), s.mesh.cellVertex(0, 2)}, 0);
     CHECK_THAT(readError(dir, s), Contains("have the same vertices"));
   }
   SECTION("a patch edge that is no triangle side") {
     SplitMesh s = good;
-    s.mesh.edges[0] = {0, s.mesh.numPoints() - 1};
+    s.mesh.facetVertices[0] = 0;
+    s.mesh.facetVertices[1] = s.mesh.numPoints() - 1;
     CHECK_THAT(readError(dir, s), Contains("is not a side of any triangle"));
   }
   SECTION("a patch edge from a node to itself") {
     SplitMesh s = good;
-    s.mesh.edges[0] = {0, 0};
+    s.mesh.facetVertices[0] = 0;
+    s.mesh.facetVertices[1] = 0;
     CHECK_THAT(readError(dir, s), Contains("is not a side of any triangle"));
   }
   SECTION("a frame that is not one (the solver would scale tractions by it)") {
@@ -106,7 +107,7 @@ TEST_CASE("readSplitMesh accepts what splitFractures makes and refuses what woul
   }
   SECTION("coordinates whose triangle area overflows") {
     SplitMesh s = good;
-    s.mesh.points[0] = Vector2(-1e300, -1e300);
+    s.mesh.points[0] = Point(-1e300, -1e300, 0);
     CHECK_THAT(readError(dir, s), Contains("not a finite number"));
   }
   SECTION("fracture nodes out of order") {

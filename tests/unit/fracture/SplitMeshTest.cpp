@@ -17,7 +17,8 @@ using Catch::Matchers::Contains;
 namespace {
 
 Vector2 centroid(const Mesh& m, Index t) {
-  return (m.points[m.triangles[t][0]] + m.points[m.triangles[t][1]] + m.points[m.triangles[t][2]]) /
+  return (m.points[m.cell(t)[0]].head<2>() + m.points[m.cell(t)[1]].head<2>() +
+          m.points[m.cell(t)[2]].head<2>()) /
          3;
 }
 
@@ -27,11 +28,11 @@ void checkSides(const SplitMesh& s) {
   int plusChecked = 0, minusChecked = 0;
   for (const FractureGeometry& g : s.fractures)
     for (Index i = 0; i < g.numNodes(); ++i)
-      for (Index t = 0; t < s.mesh.numTriangles(); ++t) {
-        const auto& tri = s.mesh.triangles[t];
+      for (Index t = 0; t < s.mesh.numCells(); ++t) {
+        const auto& tri = s.mesh.cell(t);
         for (Index v : tri) {
           if (s.origin[v] != g.node[i]) continue;
-          const double side = (centroid(s.mesh, t) - s.mesh.points[v]).dot(g.normal[i]);
+          const double side = (centroid(s.mesh, t) - s.mesh.points[v].head<2>()).dot(g.normal[i]);
           if (g.plus[i] == g.minus[i]) continue;  // a tip serves both sides
           if (side < -1e-12) {
             CHECK(v == g.plus[i]);
@@ -73,7 +74,7 @@ TEST_CASE("a fracture across the whole width duplicates every node, ends include
   CHECK(g.kind.front() == FractureNodeKind::boundary);
   CHECK(g.kind.back() == FractureNodeKind::boundary);
   CHECK(s.mesh.numPoints() == m.numPoints() + n + 1);
-  CHECK(s.mesh.numTriangles() == m.numTriangles());
+  CHECK(s.mesh.numCells() == m.numCells());
   // The fracture cuts the square in two.
   CHECK(connectedComponents(m) == 1);
   CHECK(connectedComponents(s.mesh) == 2);
@@ -87,15 +88,17 @@ TEST_CASE("a fracture across the whole width duplicates every node, ends include
     CHECK(s.origin[g.minus[i]] == g.node[i]);
   }
   checkSides(s);
-  CHECK(s.mesh.totalArea() == Approx(m.totalArea()).epsilon(1e-14));
+  CHECK(s.mesh.totalMeasure() == Approx(m.totalMeasure()).epsilon(1e-14));
   // Every triangle stays counter-clockwise.
-  for (Index t = 0; t < s.mesh.numTriangles(); ++t) CHECK(s.mesh.signedArea(t) > 0);
+  for (Index t = 0; t < s.mesh.numCells(); ++t) CHECK(s.mesh.signedMeasure(t) > 0);
   // Fracture edges leave the patch list; the boundary patches keep their edge counts and the
   // left/right edges next to the fracture end use the copy of their own side.
-  CHECK(s.mesh.edges.size() == m.edges.size() - n);
-  for (std::size_t e = 0; e < s.mesh.edges.size(); ++e) {
-    const Vector2 mid = (s.mesh.points[s.mesh.edges[e][0]] + s.mesh.points[s.mesh.edges[e][1]]) / 2;
-    for (Index v : s.mesh.edges[e]) {
+  CHECK(s.mesh.facetLabel.size() == m.facetLabel.size() - n);
+  for (std::size_t e = 0; e < s.mesh.facetLabel.size(); ++e) {
+    const Vector2 mid = (s.mesh.points[s.mesh.facet(e)[0]].head<2>() +
+                         s.mesh.points[s.mesh.facet(e)[1]].head<2>()) /
+                        2;
+    for (Index v : s.mesh.facet(e)) {
       if (v == g.plus.front() || v == g.plus.back()) CHECK(mid.y() > 0.5);
       if (v == g.minus.front() || v == g.minus.back()) CHECK(mid.y() < 0.5);
     }
@@ -143,8 +146,8 @@ TEST_CASE("an inclined fracture has a consistent unit normal pointing from plus 
   const int n = 8;
   Mesh m = gridMesh(n);
   for (int k = 2; k < 6; ++k) {
-    m.edges.push_back({gridNode(n, k, k), gridNode(n, k + 1, k + 1)});
-    m.edgeLabel.push_back(7);
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, k, k), gridNode(n, k + 1, k + 1)});
+    m.facetLabel.push_back(7);
   }
   m.labelNames[7] = "diag";
   const SplitMesh s = splitFractures(m, {{"diag", 7, {}}});
@@ -168,10 +171,10 @@ TEST_CASE("the normal is consistent along a bent fracture", "[split]") {
   const int n = 8;
   Mesh m = gridMesh(n);
   addHorizontalFracture(m, n, 4, 0, 4, 5, "bent");
-  m.edges.push_back({gridNode(n, 4, 4), gridNode(n, 5, 5)});
-  m.edgeLabel.push_back(5);
-  m.edges.push_back({gridNode(n, 6, 6), gridNode(n, 5, 5)});
-  m.edgeLabel.push_back(5);
+  m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, 4, 4), gridNode(n, 5, 5)});
+  m.facetLabel.push_back(5);
+  m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, 6, 6), gridNode(n, 5, 5)});
+  m.facetLabel.push_back(5);
   const SplitMesh s = splitFractures(m, {{"bent", 5, {}}});
   const FractureGeometry& g = s.fractures[0];
   REQUIRE(g.numNodes() == 7);
@@ -192,8 +195,8 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
   SECTION("branching edges") {
     Mesh m = gridMesh(n);
     addHorizontalFracture(m, n, 4, 0, n, 5, "fracture");
-    m.edges.push_back({gridNode(n, 4, 4), gridNode(n, 4, 5)});
-    m.edgeLabel.push_back(5);
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, 4, 4), gridNode(n, 4, 5)});
+    m.facetLabel.push_back(5);
     CHECK_THAT(
         splitError(m, {{"fracture", 5, {}}}),
         Contains("branches at (0.5 0.5)") && Contains("junctions of fractures are not supported"));
@@ -209,9 +212,9 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
     Mesh m = gridMesh(n);
     // Edges (2,4)-(3,4) and (3,4)-(3,5) are two sides of the grid triangle
     // {(2,4), (3,4), (3,5)}: all of its vertices lie on the fracture.
-    m.edges.push_back({gridNode(n, 2, 4), gridNode(n, 3, 4)});
-    m.edges.push_back({gridNode(n, 3, 4), gridNode(n, 3, 5)});
-    m.edgeLabel.insert(m.edgeLabel.end(), {5, 5});
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, 2, 4), gridNode(n, 3, 4)});
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, 3, 4), gridNode(n, 3, 5)});
+    m.facetLabel.insert(m.facetLabel.end(), {5, 5});
     CHECK_THAT(splitError(m, {{"kink", 5, {}}}),
                Contains("all three vertices on fracture 'kink'") && Contains("refining"));
   }
@@ -227,8 +230,9 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
       const int di = (b.first > a.first) - (b.first < a.first);
       const int dj = (b.second > a.second) - (b.second < a.second);
       for (int i = a.first, j = a.second; i != b.first || j != b.second; i += di, j += dj) {
-        m.edges.push_back({gridNode(n, i, j), gridNode(n, i + di, j + dj)});
-        m.edgeLabel.push_back(5);
+        m.facetVertices.insert(m.facetVertices.end(),
+                               {gridNode(n, i, j), gridNode(n, i + di, j + dj)});
+        m.facetLabel.push_back(5);
       }
     }
     CHECK_THAT(splitError(m, {{"loop", 5, {"d", 3}}}), Contains("d:3") && Contains("closed curve"));
@@ -240,8 +244,9 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
     // Put the fracture edges back as a patch of the split mesh, as a split mesh exported to a
     // mesh file would have them, and split again.
     for (Index i = 0; i + 1 < s.fractures[0].numNodes(); ++i) {
-      s.mesh.edges.push_back({s.fractures[0].plus[i], s.fractures[0].plus[i + 1]});
-      s.mesh.edgeLabel.push_back(5);
+      s.mesh.facetVertices.insert(s.mesh.facetVertices.end(),
+                                  {s.fractures[0].plus[i], s.fractures[0].plus[i + 1]});
+      s.mesh.facetLabel.push_back(5);
     }
     CHECK_THAT(splitError(s.mesh, {{"fracture", 5, {}}}), Contains("already split"));
   }
@@ -262,9 +267,9 @@ TEST_CASE("the split mesh file reads back to the same split mesh", "[split][io]"
   std::filesystem::remove_all(dir);
 
   CHECK(r.mesh.points == s.mesh.points);  // precision 17 round-trips exactly
-  CHECK(r.mesh.triangles == s.mesh.triangles);
+  CHECK(r.mesh.cellVertices == s.mesh.cellVertices);
   CHECK(r.origin == s.origin);
-  CHECK(r.mesh.edges.size() == s.mesh.edges.size());
+  CHECK(r.mesh.facetLabel.size() == s.mesh.facetLabel.size());
   REQUIRE(r.fractures.size() == 1);
   CHECK(r.fractures[0].node == s.fractures[0].node);
   CHECK(r.fractures[0].plus == s.fractures[0].plus);

@@ -18,25 +18,25 @@ inline Mesh gridMesh(int n) {
   m.source = "grid" + std::to_string(n);
   m.format = "test grid";
   for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) m.points.emplace_back(double(i) / n, double(j) / n);
+    for (int i = 0; i <= n; ++i) m.points.emplace_back(double(i) / n, double(j) / n, 0.0);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const Index a = gridNode(n, i, j), b = gridNode(n, i + 1, j), c = gridNode(n, i + 1, j + 1),
                   d = gridNode(n, i, j + 1);
-      m.triangles.push_back({a, b, c});
-      m.triangles.push_back({a, c, d});
-      m.triangleRegion.push_back(0);
-      m.triangleRegion.push_back(0);
+      m.cellVertices.insert(m.cellVertices.end(), {a, b, c});
+      m.cellVertices.insert(m.cellVertices.end(), {a, c, d});
+      m.cellRegion.push_back(0);
+      m.cellRegion.push_back(0);
     }
   for (int k = 0; k < n; ++k) {
-    m.edges.push_back({gridNode(n, k, 0), gridNode(n, k + 1, 0)});
-    m.edgeLabel.push_back(1);
-    m.edges.push_back({gridNode(n, n, k), gridNode(n, n, k + 1)});
-    m.edgeLabel.push_back(2);
-    m.edges.push_back({gridNode(n, k + 1, n), gridNode(n, k, n)});
-    m.edgeLabel.push_back(3);
-    m.edges.push_back({gridNode(n, 0, k + 1), gridNode(n, 0, k)});
-    m.edgeLabel.push_back(4);
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, k, 0), gridNode(n, k + 1, 0)});
+    m.facetLabel.push_back(1);
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, n, k), gridNode(n, n, k + 1)});
+    m.facetLabel.push_back(2);
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, k + 1, n), gridNode(n, k, n)});
+    m.facetLabel.push_back(3);
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, 0, k + 1), gridNode(n, 0, k)});
+    m.facetLabel.push_back(4);
   }
   m.labelNames = {{1, "bottom"}, {2, "right"}, {3, "top"}, {4, "left"}};
   return m;
@@ -47,8 +47,8 @@ inline Mesh gridMesh(int n) {
 inline void addHorizontalFracture(Mesh& m, int n, int j, int i0, int i1, int label,
                                   const std::string& name) {
   for (int i = i0; i < i1; ++i) {
-    m.edges.push_back({gridNode(n, i + 1, j), gridNode(n, i, j)});
-    m.edgeLabel.push_back(label);
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, i + 1, j), gridNode(n, i, j)});
+    m.facetLabel.push_back(label);
   }
   m.labelNames[label] = name;
 }
@@ -60,12 +60,14 @@ inline int connectedComponents(const Mesh& m) {
   std::function<int(int)> find = [&](int i) {
     return parent[i] == i ? i : parent[i] = find(parent[i]);
   };
-  for (const auto& t : m.triangles) {
+  for (Index t_ = 0; t_ < m.numCells(); ++t_) {
+    const auto t = m.cell(t_);
     parent[find(t[0])] = find(t[1]);
     parent[find(t[1])] = find(t[2]);
   }
   std::set<int> roots;
-  for (const auto& t : m.triangles) roots.insert(find(t[0]));
+  for (Index t_ = 0; t_ < m.numCells(); ++t_)
+    if (const auto t = m.cell(t_); true) roots.insert(find(t[0]));
   return static_cast<int>(roots.size());
 }
 

@@ -1,4 +1,4 @@
-// coincidentPoints and unlabelledBoundaryEdges (MeshCheck.hpp): a hidden cut is found at any
+// coincidentPoints and unlabelledBoundaryFacets (MeshCheck.hpp): a hidden cut is found at any
 // scale, a sound mesh gives nothing, unlabelled boundary sides are exactly the unlabelled ones.
 #include <catch2/catch.hpp>
 
@@ -14,21 +14,22 @@ namespace {
 // a copy (offset by `offset`) that the triangles and boundary edges right of it use.
 Mesh cutGrid(int n, double scale, double offset) {
   Mesh m = gridMesh(n);
-  for (Vector2& p : m.points) p *= scale;
+  for (Point& p : m.points) p *= scale;
   std::vector<Index> copy(m.points.size(), -1);
   for (int j = 0; j <= n; ++j) {
     const Index v = gridNode(n, n / 2, j);
     copy[v] = m.numPoints();
-    m.points.push_back(m.points[v] + Vector2(offset, 0));
+    m.points.push_back(m.points[v] + Point(offset, 0, 0));
   }
-  const auto right = [&](const Vector2& c) { return c.x() > 0.5 * scale; };
-  for (auto& t : m.triangles) {
-    const Vector2 c = (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3;
-    if (right(c))
+  const auto right = [&](const Point& c) { return c.x() > 0.5 * scale; };
+  for (Index c = 0; c < m.numCells(); ++c) {
+    const auto t = m.cell(c);
+    if (right((m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3))
       for (Index& v : t)
         if (copy[v] >= 0) v = copy[v];
   }
-  for (auto& e : m.edges) {
+  for (Index f = 0; f < m.numFacets(); ++f) {
+    const auto e = m.facet(f);
     if (right(0.5 * (m.points[e[0]] + m.points[e[1]])))
       for (Index& v : e)
         if (copy[v] >= 0) v = copy[v];
@@ -43,9 +44,9 @@ TEST_CASE("mesh checks: a sound mesh has no coincident points and no unlabelled 
   for (double scale : {1e-9, 1.0, 1e6}) {
     INFO("scale " << scale);
     Mesh m = gridMesh(8);
-    for (Vector2& p : m.points) p *= scale;
+    for (Point& p : m.points) p *= scale;
     CHECK(coincidentPoints(m).empty());
-    CHECK(unlabelledBoundaryEdges(m).empty());
+    CHECK(unlabelledBoundaryFacets(m).empty());
   }
 }
 
@@ -64,12 +65,9 @@ TEST_CASE("mesh checks: a hidden cut is found as coincident points at any scale"
         CHECK((m.points[a] - m.points[b]).norm() <= 1e-14 * scale);
       }
       // The two lips, n sides each, with no label.
-      const auto edges = unlabelledBoundaryEdges(m);
-      CHECK(edges.size() == static_cast<std::size_t>(2 * n));
-      for (const auto& e : edges) {
-        CHECK(m.points[e[0]].x() == Approx(0.5 * scale).epsilon(1e-12));
-        CHECK(m.points[e[1]].x() == Approx(0.5 * scale).epsilon(1e-12));
-      }
+      const auto edges = unlabelledBoundaryFacets(m);
+      CHECK(edges.size() == static_cast<std::size_t>(2 * 2 * n));
+      for (Index v : edges) CHECK(m.points[v].x() == Approx(0.5 * scale).epsilon(1e-12));
     }
   // Vertices a tenth of a side apart are not coincident: only a cut's copies are.
   CHECK(coincidentPoints(cutGrid(n, 1.0, 0.1 / n)).empty());
@@ -80,18 +78,19 @@ TEST_CASE("mesh checks: boundary sides without a label are listed, oriented coun
   const int n = 4;
   Mesh m = gridMesh(n);
   // Remove the labels of the right side (label 2).
-  std::vector<std::array<Index, 2>> edges;
+  std::vector<Index> edges;
   std::vector<int> labels;
-  for (std::size_t e = 0; e < m.edges.size(); ++e)
-    if (m.edgeLabel[e] != 2) {
-      edges.push_back(m.edges[e]);
-      labels.push_back(m.edgeLabel[e]);
+  for (Index e = 0; e < m.numFacets(); ++e)
+    if (m.facetLabel[e] != 2) {
+      edges.insert(edges.end(), m.facet(e).begin(), m.facet(e).end());
+      labels.push_back(m.facetLabel[e]);
     }
-  m.edges = edges;
-  m.edgeLabel = labels;
-  const auto found = unlabelledBoundaryEdges(m);
-  REQUIRE(found.size() == static_cast<std::size_t>(n));
-  for (const auto& e : found) {
+  m.facetVertices = edges;
+  m.facetLabel = labels;
+  const auto found = unlabelledBoundaryFacets(m);
+  REQUIRE(found.size() == static_cast<std::size_t>(2 * n));
+  for (std::size_t i = 0; i < found.size(); i += 2) {
+    const Index e[2] = {found[i], found[i + 1]};
     CHECK(m.points[e[0]].x() == 1.0);
     CHECK(m.points[e[1]].x() == 1.0);
     CHECK(m.points[e[1]].y() > m.points[e[0]].y());  // the body on the left: upwards

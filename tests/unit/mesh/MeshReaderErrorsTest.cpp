@@ -124,8 +124,8 @@ TEST_CASE("mesh: the unmodified base meshes of the error tests read without erro
     const Mesh m = readMesh(dir.write("base.msh", *text));
     INFO(m.format);
     CHECK(m.numPoints() == 4);
-    CHECK(m.numTriangles() == 2);
-    CHECK(m.totalArea() == 1.0);
+    CHECK(m.numCells() == 2);
+    CHECK(m.totalMeasure() == 1.0);
   }
 }
 
@@ -530,7 +530,7 @@ TEST_CASE("mesh: an edge listed twice with one label is rejected", "[mesh][error
                    {"is listed twice with label 1 (lines 8 and 12)"});
   const Mesh m = readMesh(
       dir.write("edge2ok.msh", replaceLine(replaceLine(freeFem, 1, "4 2 5"), 11, "4 1 4\n2 1 9")));
-  CHECK(m.edges.size() == 5);
+  CHECK(m.facetLabel.size() == 5);
 }
 
 TEST_CASE("mesh: vertices no triangle uses are dropped and the rest renumbered", "[mesh][reader]") {
@@ -543,13 +543,13 @@ TEST_CASE("mesh: vertices no triangle uses are dropped and the rest renumbered",
   const Mesh base = readMesh(dir.write("base.msh", freeFem));
   REQUIRE(m.droppedPoints.size() == 1);
   CHECK(m.droppedPoints[0].number == 3);
-  CHECK(m.droppedPoints[0].x == Vector2(0.3, 0.7));
+  CHECK(m.droppedPoints[0].x == Point(0.3, 0.7, 0));
   CHECK(m.numPoints() == 4);
   CHECK(base.droppedPoints.empty());
   // Same triangles and edges, vertex for vertex (the numbering after the gap shifts by one).
   CHECK(geometryOf(m) == geometryOf(base));
-  CHECK(m.triangles == base.triangles);
-  CHECK(m.edges == base.edges);
+  CHECK(m.cellVertices == base.cellVertices);
+  CHECK(m.facetVertices == base.facetVertices);
 }
 
 TEST_CASE("mesh: numbers are parsed strictly", "[mesh][errors]") {

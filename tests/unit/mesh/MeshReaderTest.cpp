@@ -38,31 +38,31 @@ TEST_CASE("mesh: readMesh reads the same unit square from FreeFEM, gmsh 2.2 and 
   for (const Mesh* m : {&ff, &g22, &g41}) {
     INFO(m->format);
     CHECK(m->numPoints() == 15);
-    CHECK(m->numTriangles() == 16);
-    CHECK(m->edges.size() == 14);
-    CHECK(m->edgeLabel.size() == 14);
-    CHECK(m->triangleRegion == std::vector<int>(16, 1));
+    CHECK(m->numCells() == 16);
+    CHECK(m->numFacets() == 14);
+    CHECK(m->facetLabel.size() == 14);
+    CHECK(m->cellRegion == std::vector<int>(16, 1));
     // 16 triangles of area 1/16 each: exact in binary floating point.
-    CHECK(m->totalArea() == 1.0);
-    for (Index t = 0; t < m->numTriangles(); ++t) CHECK(m->signedArea(t) == 1.0 / 16);
+    CHECK(m->totalMeasure() == 1.0);
+    for (Index t = 0; t < m->numCells(); ++t) CHECK(m->signedMeasure(t) == 1.0 / 16);
     // The fracture: the last two edges, at y = 0.5 from x = 0.25 to 0.75.
-    CHECK(m->edgeLabel[12] == 5);
-    CHECK(m->edgeLabel[13] == 5);
-    CHECK(m->points[m->edges[12][0]] == Vector2(0.25, 0.5));
-    CHECK(m->points[m->edges[13][1]] == Vector2(0.75, 0.5));
+    CHECK(m->facetLabel[12] == 5);
+    CHECK(m->facetLabel[13] == 5);
+    CHECK(m->points[m->facetVertex(12, 0)] == Point(0.25, 0.5, 0));
+    CHECK(m->points[m->facetVertex(13, 1)] == Point(0.75, 0.5, 0));
   }
   // Same geometry, triangles (with orientation), edges and labels in the same order.
   CHECK(geometryOf(ff) == geometryOf(g22));
   CHECK(geometryOf(ff) == geometryOf(g41));
   // gmsh 2.2 file numbers its nodes like the FreeFEM file: identical connectivity.
   CHECK(ff.points == g22.points);
-  CHECK(ff.triangles == g22.triangles);
-  CHECK(ff.edges == g22.edges);
-  CHECK(ff.edgeLabel == g22.edgeLabel);
+  CHECK(ff.cellVertices == g22.cellVertices);
+  CHECK(ff.facetVertices == g22.facetVertices);
+  CHECK(ff.facetLabel == g22.facetLabel);
   // gmsh 4.1 nodes are numbered in file order (tags 101, 12, 5, ...), not by tag.
-  CHECK(g41.points[0] == Vector2(0, 0));
-  CHECK(g41.points[1] == Vector2(1, 0));
-  CHECK(g41.points[2] == Vector2(1, 1));
+  CHECK(g41.points[0] == Point(0, 0, 0));
+  CHECK(g41.points[1] == Point(1, 0, 0));
+  CHECK(g41.points[2] == Point(1, 1, 0));
 
   const std::map<int, std::string> labels{
       {1, "bottom"}, {2, "right"}, {3, "top"}, {4, "left"}, {5, "fracture"}};
@@ -85,11 +85,11 @@ TEST_CASE("mesh: readMesh tells the format from the content, not the file name",
   // gmsh content behind blank lines and in a file not named .msh.
   const Mesh g = readMesh(dir.write("gmshMesh.txt", "\n  \n" + text41));
   CHECK(g.format == "gmsh .msh 4.1");
-  CHECK(g.numTriangles() == 16);
+  CHECK(g.numCells() == 16);
   // FreeFEM content in a file named like a gmsh file.
   const Mesh f = readMesh(dir.write("fromGmsh.msh", textFF));
   CHECK(f.format == "FreeFEM .msh");
-  CHECK(f.numTriangles() == 16);
+  CHECK(f.numCells() == 16);
 }
 
 TEST_CASE("mesh: FreeFEM vertex labels are ignored and edges keep their file orientation",
@@ -101,11 +101,12 @@ TEST_CASE("mesh: FreeFEM vertex labels are ignored and edges keep their file ori
                                     "0 0 123456\n1 0 -7\n1 1 0\n0 1 99\n"
                                     "1 2 3 4\n1 3 4 6\n"
                                     "1 2 1\n2 3 2\n3 4 3\n4 1 4\n3 1 5\n"));
-  CHECK(m.triangleRegion == std::vector<int>{4, 6});
-  CHECK(m.edgeLabel == std::vector<int>{1, 2, 3, 4, 5});
-  CHECK(m.edges.back() == std::array<Index, 2>{2, 0});
+  CHECK(m.cellRegion == std::vector<int>{4, 6});
+  CHECK(m.facetLabel == std::vector<int>{1, 2, 3, 4, 5});
+  CHECK(m.facet(m.numFacets() - 1)[0] == 2);
+  CHECK(m.facet(m.numFacets() - 1)[1] == 0);
   CHECK(m.labelNames.empty());
-  CHECK(m.totalArea() == 1.0);
+  CHECK(m.totalMeasure() == 1.0);
 }
 
 TEST_CASE("mesh: a gmsh curve in several physical groups gives one edge per group in 2.2 and 4.1",
@@ -128,9 +129,9 @@ TEST_CASE("mesh: a gmsh curve in several physical groups gives one edge per grou
                           "$EndElements\n"));
   for (const Mesh* m : {&g22, &g41}) {
     INFO(m->format);
-    CHECK(m->edges == std::vector<std::array<Index, 2>>{{0, 1}, {0, 1}});
-    CHECK(m->edgeLabel == std::vector<int>{7, 8});
-    CHECK(m->triangleRegion == std::vector<int>{3, 3});
+    CHECK(m->facetVertices == std::vector<Index>{0, 1, 0, 1});
+    CHECK(m->facetLabel == std::vector<int>{7, 8});
+    CHECK(m->cellRegion == std::vector<int>{3, 3});
     CHECK(m->labelNames == std::map<int, std::string>{{7, "bottom"}, {8, "all boundary"}});
     CHECK(m->regionNames == std::map<int, std::string>{{3, "rock"}});
   }
@@ -151,9 +152,9 @@ TEST_CASE("mesh: gmsh elements without a physical group get label and region 0",
                                       "$EndElements\n"));
   for (const Mesh* m : {&g22, &g41}) {
     INFO(m->format);
-    CHECK(m->edgeLabel == std::vector<int>{0});
-    CHECK(m->triangleRegion == std::vector<int>{0});
-    CHECK(m->totalArea() == 0.5);
+    CHECK(m->facetLabel == std::vector<int>{0});
+    CHECK(m->cellRegion == std::vector<int>{0});
+    CHECK(m->totalMeasure() == 0.5);
   }
 }
 
@@ -182,22 +183,22 @@ TEST_CASE(
   for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   const Mesh m = readMesh(dir.write("sparse.msh", crlf));
   REQUIRE(m.numPoints() == 4);
-  CHECK(m.points[1] == Vector2(1, 0));
-  CHECK(m.points[3] == Vector2(0, 1));
-  CHECK(m.triangles == std::vector<std::array<Index, 3>>{{0, 1, 2}, {0, 2, 3}});
-  CHECK(m.edges == std::vector<std::array<Index, 2>>{{0, 1}});
-  CHECK(m.edgeLabel == std::vector<int>{7});
-  CHECK(m.totalArea() == 1.0);
+  CHECK(m.points[1] == Point(1, 0, 0));
+  CHECK(m.points[3] == Point(0, 1, 0));
+  CHECK(m.cellVertices == std::vector<Index>{0, 1, 2, 0, 2, 3});
+  CHECK(m.facetVertices == std::vector<Index>{0, 1});
+  CHECK(m.facetLabel == std::vector<int>{7});
+  CHECK(m.totalMeasure() == 1.0);
 }
 
-TEST_CASE("mesh: signedArea is positive counter-clockwise and totalArea adds the areas",
+TEST_CASE("mesh: signedMeasure is positive counter-clockwise and totalMeasure adds the areas",
           "[mesh][reader]") {
   Mesh m;
-  m.points = {Vector2(0, 0), Vector2(2, 0), Vector2(0, 3), Vector2(2, 3)};
-  m.triangles = {{0, 1, 2}, {1, 3, 2}, {0, 2, 1}};
-  m.triangleRegion = {0, 0, 0};
-  CHECK(m.signedArea(0) == 3.0);
-  CHECK(m.signedArea(1) == 3.0);
-  CHECK(m.signedArea(2) == -3.0);
-  CHECK(m.totalArea() == 9.0);
+  m.points = {Point(0, 0, 0), Point(2, 0, 0), Point(0, 3, 0), Point(2, 3, 0)};
+  m.cellVertices = {0, 1, 2, 1, 3, 2, 0, 2, 1};
+  m.cellRegion = {0, 0, 0};
+  CHECK(m.signedMeasure(0) == 3.0);
+  CHECK(m.signedMeasure(1) == 3.0);
+  CHECK(m.signedMeasure(2) == -3.0);
+  CHECK(m.totalMeasure() == 9.0);
 }

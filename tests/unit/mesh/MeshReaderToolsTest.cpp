@@ -40,8 +40,8 @@ Physical Surface("domain", 1) = {1};
 Physical Point("corner", 9) = {1};
 )";
 
-using Point = std::pair<double, double>;
-using Triangle = std::array<Point, 3>;
+using XY = std::pair<double, double>;
+using Triangle = std::array<XY, 3>;
 
 // A triangle as its vertex coordinates, rotated to start at the smallest one: the same
 // triangle with the same orientation gives the same value whatever its first vertex.
@@ -52,9 +52,9 @@ Triangle canonical(Triangle t) {
 
 // What gmsh's API reads from a .msh file, in the same terms as our Mesh.
 struct GmshReading {
-  std::vector<Point> points;                // sorted
+  std::vector<XY> points;                   // sorted
   std::multiset<Triangle> triangles;        // canonical
-  std::set<std::pair<Point, Point>> lines;  // distinct line elements, unoriented
+  std::set<std::pair<XY, XY>> lines;        // distinct line elements, unoriented
   std::size_t lineElements = 0;             // line elements as gmsh's reader keeps them
   std::size_t lineElementsTimesGroups = 0;  // ... counted once per physical group of their curve
   std::map<int, std::string> labelNames, regionNames;
@@ -68,7 +68,7 @@ GmshReading readWithGmshApi(const std::string& file) {
   std::vector<std::size_t> nodeTags;
   std::vector<double> coords, parametric;
   gmsh::model::mesh::getNodes(nodeTags, coords, parametric);
-  std::map<std::size_t, Point> byTag;
+  std::map<std::size_t, XY> byTag;
   for (std::size_t i = 0; i < nodeTags.size(); ++i) {
     byTag[nodeTags[i]] = {coords[3 * i], coords[3 * i + 1]};
     r.points.push_back(byTag[nodeTags[i]]);
@@ -108,9 +108,9 @@ GmshReading readWithGmshApi(const std::string& file) {
 
 double labelLength(const Mesh& m, int label) {
   double length = 0;
-  for (std::size_t e = 0; e < m.edges.size(); ++e)
-    if (m.edgeLabel[e] == label)
-      length += (m.points[m.edges[e][1]] - m.points[m.edges[e][0]]).norm();
+  for (Index e = 0; e < m.numFacets(); ++e)
+    if (m.facetLabel[e] == label)
+      length += (m.points[m.facetVertex(e, 1)] - m.points[m.facetVertex(e, 0)]).norm();
   return length;
 }
 
@@ -130,39 +130,41 @@ TEST_CASE("mesh: readMesh agrees with gmsh's own reader on meshes gmsh writes as
     const GmshReading ref = readWithGmshApi(dir.file(name));
     REQUIRE(ref.points.size() > 100);  // a real mesh, not a trivial one
 
-    std::vector<Point> points;
-    for (const Vector2& p : m.points) points.emplace_back(p.x(), p.y());
+    std::vector<XY> points;
+    for (const friction::Point& p : m.points) points.emplace_back(p.x(), p.y());
     std::sort(points.begin(), points.end());
     // Both readers turn the same decimal text into the nearest double: exact equality.
     CHECK(points == ref.points);
 
     std::multiset<Triangle> triangles;
-    for (const auto& t : m.triangles)
-      triangles.insert(canonical({Point(m.points[t[0]].x(), m.points[t[0]].y()),
-                                  Point(m.points[t[1]].x(), m.points[t[1]].y()),
-                                  Point(m.points[t[2]].x(), m.points[t[2]].y())}));
-    CHECK(m.triangles.size() == ref.triangles.size());
+    for (Index c = 0; c < m.numCells(); ++c)
+      if (const auto t = m.cell(c); true)
+        triangles.insert(canonical({XY(m.points[t[0]].x(), m.points[t[0]].y()),
+                                    XY(m.points[t[1]].x(), m.points[t[1]].y()),
+                                    XY(m.points[t[2]].x(), m.points[t[2]].y())}));
+    CHECK(static_cast<std::size_t>(m.numCells()) == ref.triangles.size());
     CHECK(triangles == ref.triangles);  // same triangles, same orientation
 
     // One edge per line element and physical group. gmsh's own reader keeps the copies a 2.2
     // file holds (one per group) as separate elements, and a 4.1 line element once.
     if (name == "square41.msh")
-      CHECK(m.edges.size() == ref.lineElementsTimesGroups);
+      CHECK(static_cast<std::size_t>(m.numFacets()) == ref.lineElementsTimesGroups);
     else
-      CHECK(m.edges.size() == ref.lineElements);
-    std::set<std::pair<Point, Point>> lines;
-    for (const auto& e : m.edges)
-      lines.insert(std::minmax(Point(m.points[e[0]].x(), m.points[e[0]].y()),
-                               Point(m.points[e[1]].x(), m.points[e[1]].y())));
+      CHECK(static_cast<std::size_t>(m.numFacets()) == ref.lineElements);
+    std::set<std::pair<XY, XY>> lines;
+    for (Index f = 0; f < m.numFacets(); ++f)
+      if (const auto e = m.facet(f); true)
+        lines.insert(std::minmax(XY(m.points[e[0]].x(), m.points[e[0]].y()),
+                                 XY(m.points[e[1]].x(), m.points[e[1]].y())));
     CHECK(lines == ref.lines);
     CHECK(m.labelNames == ref.labelNames);
     CHECK(m.regionNames == ref.regionNames);
-    CHECK(m.triangleRegion == std::vector<int>(m.triangles.size(), 1));
+    CHECK(m.cellRegion == std::vector<int>(m.numCells(), 1));
     // Lengths of the labelled curves; round-off only (gmsh writes 16 digits).
     CHECK(labelLength(m, 1) == Approx(1.0).epsilon(1e-12));
     CHECK(labelLength(m, 5) == Approx(0.5).epsilon(1e-12));
     CHECK(labelLength(m, 6) == Approx(1.5).epsilon(1e-12));
-    CHECK(m.totalArea() == Approx(1.0).epsilon(1e-12));
+    CHECK(m.totalMeasure() == Approx(1.0).epsilon(1e-12));
     meshes[name] = m;
   }
   // The two files hold the same mesh; read alike, edge for edge.
@@ -199,29 +201,29 @@ for (int k = 0; k < T.nbe; k++) f << T.be(k)[0] << " " << T.be(k)[1] << " " << T
   double area;
   REQUIRE(ref >> nv >> nt >> nbe >> area);
   REQUIRE(m.numPoints() == nv);
-  REQUIRE(m.numTriangles() == nt);
-  REQUIRE(static_cast<int>(m.edges.size()) == nbe);
-  CHECK(m.totalArea() == Approx(area).epsilon(1e-12));
+  REQUIRE(m.numCells() == nt);
+  REQUIRE(m.numFacets() == nbe);
+  CHECK(m.totalMeasure() == Approx(area).epsilon(1e-12));
   // FreeFEM's readmesh and ours read the same text: the same doubles.
   for (Index i = 0; i < nv; ++i) {
     double x, y;
     REQUIRE(ref >> x >> y);
-    CHECK(m.points[i] == Vector2(x, y));
+    CHECK(m.points[i] == friction::Point(x, y, 0));
   }
   for (Index k = 0; k < nt; ++k) {
     std::array<Index, 3> t;
     int region;
     REQUIRE(ref >> t[0] >> t[1] >> t[2] >> region);
-    CHECK(m.triangles[k] == t);
-    CHECK(m.triangleRegion[k] == region);
+    CHECK(std::array<Index, 3>{m.cellVertex(k, 0), m.cellVertex(k, 1), m.cellVertex(k, 2)} == t);
+    CHECK(m.cellRegion[k] == region);
   }
   std::set<std::pair<Index, Index>> refEdges, ourEdges;
   for (int k = 0; k < nbe; ++k) {
     Index a, b;
     int label;
     REQUIRE(ref >> a >> b >> label);
-    CHECK(m.edgeLabel[k] == label);
-    CHECK(std::minmax(m.edges[k][0], m.edges[k][1]) == std::minmax(a, b));
+    CHECK(m.facetLabel[k] == label);
+    CHECK(std::minmax(m.facetVertex(k, 0), m.facetVertex(k, 1)) == std::minmax(a, b));
   }
   // The interior crack: its edges carry label 5 and add up to its length.
   CHECK(labelLength(m, 5) == Approx(0.5).epsilon(1e-12));
@@ -302,12 +304,13 @@ TEST_CASE("mesh: a gmsh Physical Point off the mesh is dropped, the rest read as
     const Mesh probe = readMesh(dir.file("probe.msh"));
     CHECK(plain.droppedPoints.empty());  // the corner's physical point is a mesh vertex
     REQUIRE(probe.droppedPoints.size() == 1);
-    CHECK(probe.droppedPoints[0].x == Vector2(0.4, 0.8));
+    CHECK(probe.droppedPoints[0].x == friction::Point(0.4, 0.8, 0));
     CHECK(probe.droppedPoints[0].number > 0);
     CHECK(geometryOf(probe) == geometryOf(plain));
     std::vector<char> used(probe.points.size(), 0);
-    for (const auto& t : probe.triangles)
-      for (Index v : t) used.at(v) = 1;
+    for (Index c = 0; c < probe.numCells(); ++c)
+      if (const auto t = probe.cell(c); true)
+        for (Index v : t) used.at(v) = 1;
     CHECK(std::count(used.begin(), used.end(), 0) == 0);
   }
 }

@@ -118,12 +118,12 @@ inline Geometry geometryOf(const Mesh& m) {
   const auto p = [&](Index i) { return Geometry::Point(m.points[i].x(), m.points[i].y()); };
   for (Index i = 0; i < m.numPoints(); ++i) g.points.push_back(p(i));
   std::sort(g.points.begin(), g.points.end());
-  for (Index t = 0; t < m.numTriangles(); ++t) {
-    const auto& v = m.triangles[t];
-    g.triangles.emplace_back(p(v[0]), p(v[1]), p(v[2]), m.triangleRegion[t]);
+  for (Index t = 0; t < m.numCells(); ++t) {
+    const auto& v = m.cell(t);
+    g.triangles.emplace_back(p(v[0]), p(v[1]), p(v[2]), m.cellRegion[t]);
   }
-  for (std::size_t e = 0; e < m.edges.size(); ++e)
-    g.edges.emplace_back(p(m.edges[e][0]), p(m.edges[e][1]), m.edgeLabel[e]);
+  for (std::size_t e = 0; e < m.facetLabel.size(); ++e)
+    g.edges.emplace_back(p(m.facet(e)[0]), p(m.facet(e)[1]), m.facetLabel[e]);
   return g;
 }
 

@@ -19,7 +19,7 @@ namespace {
 // Every facet against the cells, by brute force: facet f of cell c at local k has the cell's
 // vertices but vertex k, that vertex is not on it, and it lists (c, k) among its cells.
 void checkAgainstCells(const Mesh& m, const MeshTopology& topo) {
-  REQUIRE(topo.numCells() == m.numTriangles());
+  REQUIRE(topo.numCells() == m.numCells());
   REQUIRE(topo.numCells() > 0);
   std::size_t sides = 0;
   for (Index c = 0; c < topo.numCells(); ++c)
@@ -28,11 +28,11 @@ void checkAgainstCells(const Mesh& m, const MeshTopology& topo) {
       REQUIRE(f >= 0);
       std::set<Index> expected;
       for (int j = 0; j < 3; ++j)
-        if (j != k) expected.insert(m.triangles[c][j]);
+        if (j != k) expected.insert(m.cell(c)[j]);
       const std::set<Index> got{topo.facetVertex(f, 0), topo.facetVertex(f, 1)};
       CHECK(got == expected);
       CHECK(topo.facetVertex(f, 0) < topo.facetVertex(f, 1));
-      CHECK(topo.oppositeVertex(c, k) == m.triangles[c][k]);
+      CHECK(topo.oppositeVertex(c, k) == m.cell(c)[k]);
       CHECK_FALSE(got.count(topo.oppositeVertex(c, k)));
       bool listed = false;
       for (int i = 0; i < topo.numCellsOf(f); ++i)
@@ -58,8 +58,8 @@ void checkAgainstCells(const Mesh& m, const MeshTopology& topo) {
 TEST_CASE("MeshTopology of two triangles: one interior side, four boundary sides", "[mesh]") {
   Mesh m;
   m.source = "square";
-  m.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  m.cellVertices = {0, 1, 2, 0, 2, 3};
   const MeshTopology topo(m);
   REQUIRE(topo.dimension() == 2);
   REQUIRE(topo.numVertices() == 4);
@@ -100,7 +100,8 @@ TEST_CASE("MeshTopology of a grid: boundary flags are the sides on the square's 
   // 3 · cells = 2 · interior + boundary, and the boundary of the square has 4n sides.
   Index boundary = 0, interior = 0;
   for (Index f = 0; f < topo.numFacets(); ++f) {
-    const Vector2 a = m.points[topo.facetVertex(f, 0)], b = m.points[topo.facetVertex(f, 1)];
+    const Vector2 a = m.points[topo.facetVertex(f, 0)].head<2>(),
+                  b = m.points[topo.facetVertex(f, 1)].head<2>();
     const bool onSquare = (a.x() == b.x() && (a.x() == 0 || a.x() == 1)) ||
                           (a.y() == b.y() && (a.y() == 0 || a.y() == 1));
     CHECK(topo.isBoundary(f) == onSquare);
@@ -114,7 +115,7 @@ TEST_CASE("MeshTopology of a grid: boundary flags are the sides on the square's 
       double side[2];
       for (int i = 0; i < 2; ++i) {
         const auto [cell, local] = topo.cellOf(f, i);
-        const Vector2 c = m.points[topo.oppositeVertex(cell, local)] - a;
+        const Vector2 c = m.points[topo.oppositeVertex(cell, local)].head<2>() - a;
         side[i] = d.x() * c.y() - d.y() * c.x();
       }
       CHECK(side[0] * side[1] < 0);
@@ -123,16 +124,17 @@ TEST_CASE("MeshTopology of a grid: boundary flags are the sides on the square's 
   CHECK(boundary == 4 * n);
   CHECK(3 * topo.numCells() == 2 * interior + boundary);
   // Every labelled edge of the grid is a boundary side.
-  for (const auto& e : m.edges) CHECK(topo.isBoundary(topo.findFacet({e[0], e[1]})));
+  for (Index e = 0; e < m.numFacets(); ++e)
+    CHECK(topo.isBoundary(topo.findFacet({m.facetVertex(e, 0), m.facetVertex(e, 1)})));
 }
 
 TEST_CASE("MeshTopology reports a side of three triangles, and the splitter refuses it", "[mesh]") {
   Mesh m;
   m.source = "fan.msh";
-  m.points = {{0, 0}, {1, 0}, {0.5, 1}, {0.5, -1}, {0.5, 2}};
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 2, 0}};
   // The side (0 0)-(1 0) bounds the first two and the third, which overlaps the first.
-  m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
-  m.triangleRegion = {0, 0, 0};
+  m.cellVertices = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+  m.cellRegion = {0, 0, 0};
   const MeshTopology topo(m);
   checkAgainstCells(m, topo);
   const Index f = topo.findFacet({0, 1});
@@ -160,7 +162,7 @@ TEST_CASE("MeshTopology of an empty mesh has no cells and no facets", "[mesh]") 
   CHECK(none.findFacet({0, 1}) == -1);
   CHECK(none.overSharedFacets().empty());
 
-  m.points = {{0, 0}, {1, 0}};  // points, but no triangle
+  m.points = {{0, 0, 0}, {1, 0, 0}};  // points, but no triangle
   const MeshTopology pointsOnly(m);
   CHECK(pointsOnly.numVertices() == 2);
   CHECK(pointsOnly.numFacets() == 0);
@@ -170,8 +172,8 @@ TEST_CASE("MeshTopology of an empty mesh has no cells and no facets", "[mesh]") 
 TEST_CASE("MeshTopology refuses a triangle vertex that is not a point, naming the mesh", "[mesh]") {
   Mesh m;
   m.source = "bad.msh";
-  m.points = {{0, 0}, {1, 0}, {0, 1}};
-  m.triangles = {{0, 1, 3}};
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.cellVertices = {0, 1, 3};
   CHECK_THROWS_WITH(MeshTopology(m), Catch::Contains("bad.msh") && Catch::Contains("vertex 3"));
 }
 
@@ -184,8 +186,8 @@ TEST_CASE("Mesh::topology is built once and rebuilt when the triangles change", 
   // Flip the diagonal of the first grid cell: other sides, so a new topology.
   const Index a = gridNode(2, 0, 0), b = gridNode(2, 1, 0), c = gridNode(2, 1, 1),
               d = gridNode(2, 0, 1);
-  m.triangles[0] = {a, b, d};
-  m.triangles[1] = {b, c, d};
+  std::copy_n(std::array<Index, 3>{a, b, d}.begin(), 3, m.cell(0).begin());
+  std::copy_n(std::array<Index, 3>{b, c, d}.begin(), 3, m.cell(1).begin());
   CHECK_FALSE(first->describes(m));
   const auto second = m.topology();
   CHECK(second != first);

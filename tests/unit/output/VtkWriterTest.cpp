@@ -70,7 +70,7 @@ Eigen::VectorXd linearField(const LagrangeSpace& space, double t) {
   Eigen::VectorXd u = Eigen::VectorXd::Zero(space.numDofs());
   const Mesh& mesh = space.mesh();
   for (Index c = 0; c < space.numCells(); ++c) {
-    const auto& tri = mesh.triangles[static_cast<std::size_t>(c)];
+    const auto tri = mesh.cell(c);
     const double yc =
         (mesh.points[tri[0]].y() + mesh.points[tri[1]].y() + mesh.points[tri[2]].y()) / 3;
     const double plus = yc > kFractureY ? 1.0 : 0.0;
