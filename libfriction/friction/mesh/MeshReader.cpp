@@ -140,8 +140,9 @@ TetrahedronDefect tetrahedronDefect(const std::vector<Point>& points,
   for (int i = 1; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j)
       longest2 = std::max(longest2, (points[t[j]] - points[t[i]]).squaredNorm());
-  // As for triangles: relative to the longest edge cubed, far below any usable shape.
-  if (std::abs(sixVolume) <= 1e-12 * longest2 * std::sqrt(longest2))
+  // As for triangles: relative to the longest edge cubed, far below any usable shape. Written
+  // so that a volume that overflows (NaN) is refused too.
+  if (!(std::abs(sixVolume) > 1e-12 * longest2 * std::sqrt(longest2)))
     return TetrahedronDefect::zeroVolume;
   return sixVolume < 0 ? TetrahedronDefect::negative : TetrahedronDefect::none;
 }

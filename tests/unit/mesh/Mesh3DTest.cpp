@@ -386,3 +386,29 @@ f << Th.nv << " " << Th.nt << " " << Th.nbe << " " << Th.measure << endl;
   CHECK(faultArea == Approx(0.5).epsilon(1e-12));  // 0.5 long, 1 high
   CHECK(unlabelledBoundaryFacets(m).empty());
 }
+
+TEST_CASE(
+    "mesh 3D: a hidden cut (a face whose vertices have copies) is found, a sound mesh has "
+    "none",
+    "[mesh][3d][check]") {
+  // Two tetrahedra on either side of the face (0,0,0) (1,0,0) (0,1,0); the lower one uses
+  // copies of its vertices, so the face is a cut.
+  Mesh m;
+  m.dim = 3;
+  m.points = {{0, 0, 0},  {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+              {0, 0, -1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.addCell({0, 1, 2, 3});
+  m.addCell({5, 7, 6, 4});
+  REQUIRE(m.signedMeasure(0) > 0);
+  REQUIRE(m.signedMeasure(1) > 0);
+  const auto pairs = coincidentPoints(m);
+  CHECK(pairs == std::vector<std::pair<Index, Index>>{{0, 5}, {1, 6}, {2, 7}});
+  // Joined through the face: no pair.
+  m.points.resize(5);
+  m.cellVertices = {0, 1, 2, 3, 0, 2, 1, 4};
+  CHECK(coincidentPoints(m).empty());
+  const CellSizes sizes = cellSizes(m);
+  CHECK(sizes.total == Approx(1.0 / 3));
+  CHECK(sizes.smallest == Approx(1.0 / 6));
+  CHECK(sizes.largest == Approx(1.0 / 6));
+}
