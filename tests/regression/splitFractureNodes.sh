@@ -267,6 +267,41 @@ PY
   solve -case "$c"
   ((rc == 0)) || fail "current split mesh: exit code $rc"
   ;;
+tetrahedralMesh)
+  # A 3D mesh (gmsh -3, a cube with an embedded fault square) is read and checked, and its
+  # summary printed; splitting it is refused (exit 1, nothing written).
+  copyCase paperBenchmark; c=$work/paperBenchmark
+  cat >"$c/constant/mesh/cube.geo" <<'GEO'
+lc = 0.5;
+Point(1) = {0, 0, 0, lc}; Point(2) = {1, 0, 0, lc}; Point(3) = {1, 1, 0, lc}; Point(4) = {0, 1, 0, lc};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+out[] = Extrude {0, 0, 1} { Surface{1}; };
+Point(101) = {0.25, 0.25, 0.5, lc}; Point(102) = {0.75, 0.25, 0.5, lc};
+Point(103) = {0.75, 0.75, 0.5, lc}; Point(104) = {0.25, 0.75, 0.5, lc};
+Line(101) = {101, 102}; Line(102) = {102, 103}; Line(103) = {103, 104}; Line(104) = {104, 101};
+Curve Loop(101) = {101, 102, 103, 104}; Plane Surface(101) = {101};
+Surface{101} In Volume{out[1]};
+Physical Surface("outside", 1) = {1, out[0], out[2], out[3], out[4], out[5]};
+Physical Surface("fault", 5) = {101};
+Physical Volume("rock", 2) = {out[1]};
+GEO
+  (cd "$c/constant/mesh" && gmsh -3 -format msh41 cube.geo -o cube.msh >gmsh.log 2>&1) ||
+    fail "gmsh failed: $(tail -3 "$c/constant/mesh/gmsh.log")"
+  sed -i -e 's#"constant/mesh/square.msh"#"constant/mesh/cube.msh"#' \
+    -e '/^patches/,/^}/c\patches { outside 1; fault 5; }' -e 's/^fractures .*/fractures (fault);/' \
+    "$c/system/meshDict"
+  run -case "$c"
+  ((rc == 1)) || fail "exit code $rc (expected 1)"
+  expect "$out" "(gmsh .msh 4.1, 3D)"
+  expect "$out" "volume:      1"
+  expect "$out" "fault           5"
+  expect "$out" "unlabelled boundary triangles: 0"
+  expect "$out" "cube.msh: the mesh is 3D (tetrahedra): splitting fracture nodes of a 3D mesh is not supported yet"
+  [[ -e $c/constant/splitMesh ]] && fail "constant/splitMesh written"
+  # The work folders hold 2D results that are compared across builds: leave none here.
+  rm -rf "$work"/*
+  ;;
 *) fail "unknown scenario" ;;
 esac
 echo "PASS [$scenario]"

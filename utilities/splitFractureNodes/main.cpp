@@ -9,6 +9,7 @@
 //
 // Exit codes: 0 done; 1 bad input (the message names file:line and what was expected);
 // 2 bad command line; 6 an internal or system error (out of memory, …).
+#include <Eigen/Geometry>
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <iomanip>
@@ -20,6 +21,7 @@
 #include "friction/core/CommandLine.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/fracture/SplitMeshIO.hpp"
+#include "friction/mesh/MeshCheck.hpp"
 #include "friction/mesh/MeshReader.hpp"
 
 namespace fs = std::filesystem;
@@ -143,6 +145,43 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
             << "    area:      " << s.mesh.totalMeasure() << "\n\n";
 }
 
+// A 3D mesh is read and checked, but not split yet: what was read, before the refusal.
+void printSummary3(const Mesh& mesh) {
+  const CellSizes sizes = cellSizes(mesh);
+  const auto centroid = [&](Index c) {
+    Point x = Point::Zero();
+    for (Index v : mesh.cell(c)) x += mesh.points[v] / 4.0;
+    return formatPoint(x, 3);
+  };
+  std::cout << std::setprecision(6);
+  std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ", 3D)\n"
+            << "    points:      " << mesh.numPoints() << "\n"
+            << "    tetrahedra:  " << mesh.numCells() << "\n"
+            << "    volume:      " << sizes.total << "\n"
+            << "    smallest:    " << sizes.smallest << " at " << centroid(sizes.smallestCell)
+            << "\n"
+            << "    largest:     " << sizes.largest << " at " << centroid(sizes.largestCell)
+            << "\n\n";
+  std::cout << "Patches\n    " << std::left << std::setw(16) << "name" << std::setw(8) << "label"
+            << std::setw(11) << "triangles"
+            << "area\n";
+  for (const auto& [label, name] : mesh.labelNames) {
+    int count = 0;
+    double area = 0;
+    for (Index e = 0; e < mesh.numFacets(); ++e)
+      if (mesh.facetLabel[e] == label) {
+        ++count;
+        const auto v = mesh.facet(e);
+        area += 0.5 * (mesh.points[v[1]] - mesh.points[v[0]])
+                          .cross(mesh.points[v[2]] - mesh.points[v[0]])
+                          .norm();
+      }
+    std::cout << "    " << std::setw(16) << name << std::setw(8) << label << std::setw(11) << count
+              << area << "\n";
+  }
+  std::cout << std::right << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -189,7 +228,12 @@ int main(int argc, char** argv) {
     //    boundary edges (refused unless meshDict accepts them).
     const MeshSettings::MeshFindings findings = settings.checkMesh(mesh);
 
-    // 6. Split, summarise, write (atomically: a failed run leaves no output).
+    // 6. Split, summarise, write (atomically: a failed run leaves no output). A 3D mesh is
+    //    summarised and checked; splitFractures then refuses it (not supported yet).
+    if (mesh.dim == 3) {
+      printSummary3(mesh);
+      printChecks(mesh, settings, findings);
+    }
     SplitMesh split = splitFractures(mesh, specs);
     split.madeFrom = std::move(madeFrom);
     std::set<int> fractureLabels;

@@ -125,7 +125,7 @@ class FreeFemParser {
       for (int k = 0; k < 3; ++k) t[k] = vertex(v[k], "triangle", i + 1);
       const TriangleDefect defect = triangleDefect(mesh_.points, t);
       if (defect != TriangleDefect::none)
-        failTriangle(s_, defect, mesh_.points, t, "triangle", i + 1, v, fix);
+        failTriangle(s_, s_.lineNumber(), defect, mesh_.points, t, "triangle", i + 1, v, fix);
       mesh_.addCell({t[0], t[1], t[2]}, static_cast<int>(region));
       numbering_.cellLine.push_back(s_.lineNumber());
     }
@@ -143,7 +143,7 @@ class FreeFemParser {
       if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(label) || !f.done() || !fitsInt(label))
         syntaxError("edge", i + 1, nbe_, syntax);
       const std::array<Index, 2> e{vertex(v[0], "edge", i + 1), vertex(v[1], "edge", i + 1)};
-      checkEdge(s_, e, "edge", i + 1, v);
+      checkEdge(s_, s_.lineNumber(), e, "edge", i + 1, v);
       mesh_.addFacet({e[0], e[1]}, static_cast<int>(label));
       numbering_.facetLine.push_back(s_.lineNumber());
     }

@@ -1,11 +1,15 @@
 // Reader for gmsh ASCII .msh, versions 2.2 and 4.1: $MeshFormat, $PhysicalNames, $Entities
-// (4.1), $Nodes, $Elements; other sections are skipped. Line elements (type 1) become edges
-// labelled by their physical curve, triangles (type 2) take their physical surface as region,
-// points (type 15) are ignored (their nodes, used by no triangle, are dropped with every other
-// unused node: see finishMesh); anything else is an error. Node tags may be arbitrary
-// (non-contiguous, in any order); nodes are numbered 0, 1, ... in file order.
+// (4.1), $Nodes, $Elements; other sections are skipped. The mesh is 3D when it has
+// tetrahedra (type 4), else 2D. In 2D, line elements (type 1) become edges labelled by their
+// physical curve and triangles (type 2) take their physical surface as region; in 3D,
+// triangles become faces labelled by their physical surface, tetrahedra take their physical
+// volume as region and lines are ignored. Points (type 15) are ignored (their nodes, used by
+// no cell, are dropped with every other unused node: see finishMesh); anything else is an
+// error. Node tags may be arbitrary (non-contiguous, in any order); nodes are numbered 0, 1,
+// ... in file order.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <unordered_map>
 
@@ -70,8 +74,10 @@ std::string elementTypeAdvice(long long type) {
   if (type == 3)
     return "the solver takes triangles only: do not recombine (no Recombine Surface, "
            "Mesh.RecombineAll = 0)";
-  if (type >= 4 && type <= 7) return "the solver is 2D: mesh with gmsh -2 and no volumes";
-  return "mesh with gmsh -2 -order 1 and no recombination";
+  if (type >= 5 && type <= 7)
+    return "the solver takes tetrahedra only in 3D: do not recombine volumes or extrude them "
+           "with Recombine (hexahedra, prisms, pyramids)";
+  return "mesh with gmsh -2 (or -3) -order 1 and no recombination";
 }
 
 // Node tag -> 0-based index. Tags are usually dense (1..n) and then a vector is fastest;
@@ -149,7 +155,6 @@ class GmshParser {
       } else if (l == "$Nodes") {
         once(nodesLine_);
         version_ == 41 ? readNodes41() : readNodes22();
-        checkPlanar();
         nodeMap_.build(s_, nodeTags_, nodeLines_);
       } else if (l == "$Elements") {
         once(elementsLine_);
@@ -168,10 +173,13 @@ class GmshParser {
     }
     if (!nodesLine_) s_.fail("the file has no $Nodes section: expected $Nodes and $Elements");
     if (!elementsLine_) s_.fail("the file has no $Elements section: expected $Elements");
+    buildMesh();
     if (mesh_.cellRegion.empty())
       s_.failAt(elementsLine_,
                 "$Elements holds no 3-node triangles (type 2): expected a 2D mesh (gmsh -2) "
-                "whose surfaces are in physical groups (or Mesh.SaveAll = 1)");
+                "whose surfaces are in physical groups (or Mesh.SaveAll = 1), or 4-node "
+                "tetrahedra (type 4) for a 3D mesh (gmsh -3) whose volumes are in physical "
+                "groups");
     numbering_.point = nodeTags_;
     finishMesh(s_, mesh_, numbering_);
     return std::move(mesh_);
@@ -293,8 +301,8 @@ class GmshParser {
       if (q.size() < 2 || q.front() != '"' || q.back() != '"')
         syntaxError("physical name " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
       const std::string name(q.substr(1, q.size() - 2));
-      if (dim == 1) mesh_.labelNames[static_cast<int>(tag)] = name;
-      if (dim == 2) mesh_.regionNames[static_cast<int>(tag)] = name;
+      // Labels or regions once the mesh's dimension is known (buildMesh).
+      if (dim >= 1 && dim <= 3) names_[dim][static_cast<int>(tag)] = name;
     }
     expectEnd(openLine, "the " + std::to_string(n) + " names it announces");
   }
@@ -350,10 +358,7 @@ class GmshParser {
       for (long long i = 0; i < n[dim]; ++i) {
         long long tag;
         std::vector<int> physical = readEntity(dim, i, n[dim], tag);
-        if (dim == 1 || dim == 2) {
-          auto& table = dim == 1 ? curvePhysical_ : surfacePhysical_;
-          table[tag] = std::move(physical);
-        }
+        if (dim >= 1) entityPhysical_[dim][tag] = std::move(physical);
       }
     expectEnd(entitiesLine_,
               "the " + std::to_string(n[0] + n[1] + n[2] + n[3]) + " entities it announces");
@@ -370,11 +375,8 @@ class GmshParser {
   // Coordinates of node i, which must be the next point (nodes are numbered in file order).
   void setCoordinates(std::size_t i, double x, double y, double z, int line) {
     FRICTION_ASSERT(i == mesh_.points.size(), "node coordinates out of order");
-    checkFinite(s_, x, y, "node", nodeTags_[i]);
-    if (!std::isfinite(z))
-      s_.fail("node " + std::to_string(nodeTags_[i]) +
-              " has z that is not a finite number: expected z = 0");
-    mesh_.points.emplace_back(x, y, 0.0);
+    checkFinite(s_, x, y, z, "node", nodeTags_[i]);
+    mesh_.points.emplace_back(x, y, z);
     scale_ = std::max({scale_, std::abs(x), std::abs(y)});
     if (std::abs(z) > maxAbsZ_) {
       maxAbsZ_ = std::abs(z);
@@ -385,9 +387,12 @@ class GmshParser {
   }
 
   // gmsh writes 2D meshes in the plane z = 0; a nonzero z (beyond round-off) means a 3D or
-  // rotated geometry whose projection would be wrong.
+  // rotated geometry whose projection would be wrong. Then z is set to 0 (the 2D convention).
   void checkPlanar() {
-    if (maxAbsZ_ <= 1e-10 * scale_) return;
+    if (maxAbsZ_ <= 1e-10 * scale_) {
+      for (Point& p : mesh_.points) p.z() = 0;
+      return;
+    }
     s_.failAt(maxAbsZLine_, "node " + std::to_string(nodeTags_[maxAbsZNode_]) +
                                 " has z = " + formatNumber(maxAbsZValue_) +
                                 ": expected a 2D mesh in the plane z = 0 (|z| <= 1e-10 "
@@ -488,8 +493,8 @@ class GmshParser {
 
   [[noreturn]] void unsupportedType(long long type) {
     s_.fail("element type " + std::to_string(type) + " (" + elementTypeName(type) +
-            ") is not supported: expected 2-node lines (type 1), 3-node triangles (type 2) or "
-            "points (type 15). " +
+            ") is not supported: expected 2-node lines (type 1), 3-node triangles (type 2), "
+            "4-node tetrahedra (type 4) or points (type 15). " +
             elementTypeAdvice(type));
   }
 
@@ -499,37 +504,132 @@ class GmshParser {
            "}; in the .geo, or gmsh::model::mesh::reverse), so that it faces +z";
   }
 
-  void addEdge(const std::array<long long, 2>& v, long long element, int label) {
-    const std::array<Index, 2> e{node(v[0], element), node(v[1], element)};
-    checkEdge(s_, e, "element", element, v);
-    mesh_.addFacet({e[0], e[1]}, label);
-    numbering_.facetLine.push_back(s_.lineNumber());
+  // The elements are kept as read until the dimension is known (a triangle is a cell of a 2D
+  // mesh, a labelled face of a 3D one), then checked and stored in file order by buildMesh.
+  struct RawElement {
+    long long tag;
+    long long entity;  ///< elementary tag, 0 if the file gives none
+    std::array<Index, 4> node;
+    int line;
+    int type;      ///< 1, 2 or 4
+    int physical;  ///< 2.2: the physical tag (0 if none)
+    int block;     ///< 4.1: the element block (blocks_), else -1
+  };
+  struct Block {
+    std::vector<int> physical;
+    int line;
+  };
+
+  void addRaw(int type, long long tag, long long entity, const std::array<long long, 4>& v,
+              int physical, int block) {
+    RawElement e{tag, entity, {}, s_.lineNumber(), type, physical, block};
+    const int n = type == 1 ? 2 : type == 2 ? 3 : 4;
+    for (int k = 0; k < n; ++k) e.node[k] = node(v[k], tag);
+    elements_.push_back(e);
   }
 
-  void addTriangle(const std::array<long long, 3>& v, long long element, int region,
-                   long long surface) {
-    const std::array<Index, 3> t{node(v[0], element), node(v[1], element), node(v[2], element)};
-    const TriangleDefect defect = triangleDefect(mesh_.points, t);
-    if (defect != TriangleDefect::none)
-      failTriangle(s_, defect, mesh_.points, t, "element", element, v, clockwiseFix(surface));
-    mesh_.addCell({t[0], t[1], t[2]}, region);
-    numbering_.cellLine.push_back(s_.lineNumber());
+  std::array<long long, 4> fileNodes(const RawElement& e) const {
+    std::array<long long, 4> v{};
+    for (int k = 0; k < 4; ++k) v[k] = nodeTags_[e.node[k]];
+    return v;
   }
 
-  [[noreturn]] void twoRegions(long long surface, long long a, long long b,
+  void addFacet(const RawElement& e, int label) {
+    const auto v = fileNodes(e);
+    if (mesh_.dim == 2) {
+      const std::array<Index, 2> edge{e.node[0], e.node[1]};
+      checkEdge(s_, e.line, edge, "element", e.tag, {v[0], v[1]});
+      mesh_.addFacet({edge[0], edge[1]}, label);
+    } else {
+      const std::array<Index, 3> t{e.node[0], e.node[1], e.node[2]};
+      checkTriangleFacet(s_, e.line, t, "element", e.tag, {v[0], v[1], v[2]});
+      mesh_.addFacet({t[0], t[1], t[2]}, label);
+    }
+    numbering_.facetLine.push_back(e.line);
+  }
+
+  void addCell(const RawElement& e, int region) {
+    const auto v = fileNodes(e);
+    if (mesh_.dim == 2) {
+      const std::array<Index, 3> t{e.node[0], e.node[1], e.node[2]};
+      const TriangleDefect defect = triangleDefect(mesh_.points, t);
+      if (defect != TriangleDefect::none)
+        failTriangle(s_, e.line, defect, mesh_.points, t, "element", e.tag, {v[0], v[1], v[2]},
+                     clockwiseFix(e.entity));
+      mesh_.addCell({t[0], t[1], t[2]}, region);
+    } else {
+      const TetrahedronDefect defect = tetrahedronDefect(mesh_.points, e.node);
+      if (defect != TetrahedronDefect::none)
+        failTetrahedron(s_, e.line, defect, mesh_.points, e.node, "element", e.tag, v,
+                        "gmsh writes them so: the file was written or edited by something "
+                        "else; swap two vertices of the element");
+      mesh_.addCell({e.node[0], e.node[1], e.node[2], e.node[3]}, region);
+    }
+    numbering_.cellLine.push_back(e.line);
+  }
+
+  [[noreturn]] void twoRegions(int line, long long entity, long long a, long long b,
                                const std::string& where) {
-    s_.fail("surface " + std::to_string(surface) + " is in two physical surfaces (" +
-            std::to_string(a) + " and " + std::to_string(b) + where +
-            "): expected each surface in at most one physical surface, since a triangle has "
-            "one region");
+    const bool volume = mesh_.dim == 3;
+    s_.failAt(line, std::string(volume ? "volume " : "surface ") + std::to_string(entity) +
+                        " is in two physical " + (volume ? "volumes" : "surfaces") + " (" +
+                        std::to_string(a) + " and " + std::to_string(b) + where +
+                        "): expected each " + (volume ? "volume" : "surface") +
+                        " in at most one physical " + (volume ? "volume" : "surface") +
+                        ", since a " + cellName(mesh_.dim) + " has one region");
+  }
+
+  // The mesh from the raw elements: the dimension is the highest of its cells' (3 with
+  // tetrahedra); cells and labelled facets in file order.
+  void buildMesh() {
+    const bool tetrahedra = std::any_of(elements_.begin(), elements_.end(),
+                                        [](const RawElement& e) { return e.type == 4; });
+    mesh_.dim = tetrahedra ? 3 : 2;
+    mesh_.labelNames = names_[mesh_.dim - 1];
+    mesh_.regionNames = names_[mesh_.dim];
+    if (mesh_.dim == 2) checkPlanar();
+    const int facetType = mesh_.dim == 2 ? 1 : 2, cellType = mesh_.dim == 2 ? 2 : 4;
+    std::size_t numCells = 0;
+    for (const RawElement& e : elements_) numCells += e.type == cellType;
+    mesh_.cellVertices.reserve(numCells * (mesh_.dim + 1));
+    mesh_.cellRegion.reserve(numCells);
+    numbering_.cellLine.reserve(numCells);
+    // gmsh 2.2 writes an element once per physical group of its entity; a cell can only
+    // have one region.
+    std::unordered_map<long long, long long> entityRegion;  // elementary tag -> physical
+    for (const RawElement& e : elements_) {
+      const std::vector<int>* physical = e.block >= 0 ? &blocks_[e.block].physical : nullptr;
+      if (e.type == facetType) {
+        // One facet per physical group, like gmsh's own 2.2 output.
+        if (!physical)
+          addFacet(e, e.physical);
+        else if (physical->empty())
+          addFacet(e, 0);
+        else
+          for (int label : *physical) addFacet(e, label);
+      } else if (e.type == cellType) {
+        int region = e.physical;
+        if (physical) {
+          if (physical->size() > 1)
+            twoRegions(blocks_[e.block].line, e.entity, (*physical)[0], (*physical)[1],
+                       " in $Entities at line " + std::to_string(entitiesLine_));
+          region = physical->empty() ? 0 : (*physical)[0];
+        } else if (e.entity != 0) {
+          const auto [it, inserted] = entityRegion.emplace(e.entity, e.physical);
+          if (!inserted && it->second != e.physical)
+            twoRegions(e.line, e.entity, it->second, e.physical, "");
+        }
+        addCell(e, region);
+      }
+      // Else a line element of a 3D mesh (an edge of a physical curve): not needed.
+    }
+    elements_ = {};
   }
 
   void readElements22() {
     static constexpr const char* syntax = "tag type numTags tags... nodes...";
     const long long n = count("numElements", "the number of elements");
-    mesh_.cellVertices.reserve(3 * reserveHint(n, s_, 16));
-    mesh_.cellRegion.reserve(reserveHint(n, s_, 16));
-    std::unordered_map<long long, long long> surfaceRegion;  // elementary tag -> physical
+    elements_.reserve(reserveHint(n, s_, 16));
     for (long long i = 0; i < n; ++i) {
       dataLine(elementsLine_, "elements", i, n, syntax);
       LineFields f = s_.fields();
@@ -537,7 +637,7 @@ class GmshParser {
       if (!f.integer(tag) || !f.integer(type) || !f.integer(numTags) || numTags < 0)
         syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
       if (type == 15) continue;
-      if (type != 1 && type != 2) unsupportedType(type);
+      if (type != 1 && type != 2 && type != 4) unsupportedType(type);
       long long physical = 0, elementary = 0, t;
       for (long long k = 0; k < numTags; ++k) {
         if (!f.integer(t))
@@ -547,24 +647,15 @@ class GmshParser {
       }
       if (!fitsInt(physical))
         syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
-      std::array<long long, 3> v{};
-      const int numNodes = type == 1 ? 2 : 3;
+      std::array<long long, 4> v{};
+      const int numNodes = type == 1 ? 2 : type == 2 ? 3 : 4;
       for (int k = 0; k < numNodes; ++k)
         if (!f.integer(v[k]))
           syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
       if (!f.done())
         syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
-      if (type == 1) {
-        addEdge({v[0], v[1]}, tag, static_cast<int>(physical));
-      } else {
-        // gmsh 2.2 writes an element once per physical group of its entity; a triangle can
-        // only have one region.
-        if (numTags >= 2) {
-          const auto [it, inserted] = surfaceRegion.emplace(elementary, physical);
-          if (!inserted && it->second != physical) twoRegions(elementary, it->second, physical, "");
-        }
-        addTriangle(v, tag, static_cast<int>(physical), elementary);
-      }
+      addRaw(static_cast<int>(type), tag, numTags >= 2 ? elementary : 0, v,
+             static_cast<int>(physical), -1);
     }
     expectEnd(elementsLine_, "the " + std::to_string(n) + " elements it announces");
   }
@@ -573,10 +664,13 @@ class GmshParser {
   const std::vector<int>& physicalTags(long long dim, long long entity) {
     static const std::vector<int> none;
     if (!entitiesLine_) return none;
-    const auto& table = dim == 1 ? curvePhysical_ : surfacePhysical_;
+    const auto& table = entityPhysical_[dim];
     auto it = table.find(entity);
     if (it == table.end())
-      s_.fail("element block of " + std::string(dim == 1 ? "curve " : "surface ") +
+      s_.fail("element block of " +
+              std::string(dim == 1   ? "curve "
+                          : dim == 2 ? "surface "
+                                     : "volume ") +
               std::to_string(entity) + ": $Entities (line " + std::to_string(entitiesLine_) +
               ") lists no such entity: expected the entity of every element block in $Entities");
     return it->second;
@@ -594,9 +688,8 @@ class GmshParser {
     if (s_.line().front() == '$' || !f.integer(numBlocks) || !f.integer(numElements) ||
         !f.integer(minTag) || !f.integer(maxTag) || !f.done() || numBlocks < 0 || numElements < 0)
       syntaxError("the $Elements header", headerSyntax);
-    // An upper bound (points and lines count too).
-    mesh_.cellVertices.reserve(3 * reserveHint(numElements, s_, 8));
-    mesh_.cellRegion.reserve(reserveHint(numElements, s_, 8));
+    // An upper bound (points count too).
+    elements_.reserve(reserveHint(numElements, s_, 8));
     long long total = 0;
     for (long long b = 0; b < numBlocks; ++b) {
       dataLine(elementsLine_, "element blocks", b, numBlocks, blockSyntax);
@@ -607,20 +700,18 @@ class GmshParser {
           !bf.done() || count < 0)
         syntaxError("element block " + std::to_string(b + 1) + " of " + std::to_string(numBlocks),
                     blockSyntax);
-      if (type != 1 && type != 2 && type != 15) unsupportedType(type);
-      const long long typeDim = type == 1 ? 1 : type == 2 ? 2 : 0;
+      if (type != 1 && type != 2 && type != 4 && type != 15) unsupportedType(type);
+      const long long typeDim = type == 1 ? 1 : type == 2 ? 2 : type == 4 ? 3 : 0;
       if (dim != typeDim)
         s_.fail("element block of type " + std::to_string(type) + " (" + elementTypeName(type) +
                 ") on an entity of dimension " + std::to_string(dim) + ": expected dimension " +
                 std::to_string(typeDim));
-      std::vector<int> physical;
-      if (type != 15) physical = physicalTags(dim, entity);
-      if (type == 2 && physical.size() > 1)
-        twoRegions(entity, physical[0], physical[1],
-                   " in $Entities at line " + std::to_string(entitiesLine_));
-      const int numNodes = type == 1 ? 2 : type == 2 ? 3 : 1;
+      const int block = static_cast<int>(blocks_.size());
+      if (type != 15) blocks_.push_back({physicalTags(dim, entity), blockLine});
+      const int numNodes = type == 1 ? 2 : type == 2 ? 3 : type == 4 ? 4 : 1;
       const char* syntax = type == 1   ? "elementTag node node"
                            : type == 2 ? "elementTag node node node"
+                           : type == 4 ? "elementTag node node node node"
                                        : "elementTag node";
       const std::string where = " (element block at line " + std::to_string(blockLine) + ")";
       for (long long k = 0; k < count; ++k) {
@@ -628,19 +719,13 @@ class GmshParser {
                  syntax);
         LineFields ef = s_.fields();
         long long tag;
-        std::array<long long, 3> v{};
+        std::array<long long, 4> v{};
         bool ok = ef.integer(tag);
         for (int j = 0; j < numNodes && ok; ++j) ok = ef.integer(v[j]);
         if (!ok || !ef.done())
           syntaxError("element " + std::to_string(k + 1) + " of " + std::to_string(count) + where,
                       syntax);
-        if (type == 1) {
-          // One edge per physical group, like gmsh's own 2.2 output.
-          if (physical.empty()) addEdge({v[0], v[1]}, tag, 0);
-          for (int label : physical) addEdge({v[0], v[1]}, tag, label);
-        } else if (type == 2) {
-          addTriangle(v, tag, physical.empty() ? 0 : physical[0], entity);
-        }
+        if (type != 15) addRaw(static_cast<int>(type), tag, entity, v, 0, block);
       }
       total += count;
     }
@@ -657,7 +742,10 @@ class GmshParser {
   FileNumbering numbering_;
   int version_ = 0;  // 22 or 41
   int physicalNamesLine_ = 0, entitiesLine_ = 0, nodesLine_ = 0, elementsLine_ = 0;
-  std::unordered_map<long long, std::vector<int>> curvePhysical_, surfacePhysical_;
+  std::unordered_map<long long, std::vector<int>> entityPhysical_[4];  // per entity dimension
+  std::map<int, std::string> names_[4];  // physical names per dimension
+  std::vector<RawElement> elements_;
+  std::vector<Block> blocks_;
   std::vector<long long> nodeTags_;
   std::vector<int> nodeLines_;
   NodeMap nodeMap_;

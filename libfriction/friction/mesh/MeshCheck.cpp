@@ -1,4 +1,4 @@
-// Coincident vertices and unlabelled boundary edges: see MeshCheck.hpp.
+// Coincident vertices, unlabelled boundary facets, cell sizes: see MeshCheck.hpp.
 #include "friction/mesh/MeshCheck.hpp"
 
 #include <algorithm>
@@ -128,6 +128,17 @@ std::vector<Index> unlabelledBoundaryFacets(const Mesh& mesh) {
   std::vector<Index> flat;
   for (const auto& v : out) flat.insert(flat.end(), v.begin(), v.end());
   return flat;
+}
+
+CellSizes cellSizes(const Mesh& mesh) {
+  CellSizes s;
+  for (Index c = 0; c < mesh.numCells(); ++c) {
+    const double m = std::abs(mesh.signedMeasure(c));
+    s.total += m;
+    if (s.smallestCell < 0 || m < s.smallest) s.smallest = m, s.smallestCell = c;
+    if (s.largestCell < 0 || m > s.largest) s.largest = m, s.largestCell = c;
+  }
+  return s;
 }
 
 }  // namespace friction

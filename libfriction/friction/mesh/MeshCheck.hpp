@@ -1,7 +1,9 @@
 // Checks of a read mesh that no file syntax can express: vertices at the same place that
-// share no edge (a hidden internal cut) and boundary edges that carry no label. Both are
-// legal triangulations that the solver would treat as traction-free boundaries, so the
-// case must say that it means them (system/meshDict: allowCoincidentNodes, defaultPatch).
+// share no edge (a hidden internal cut) and boundary facets (edges in 2D, triangles in 3D)
+// that carry no label. Both are legal meshes that the solver would treat as traction-free
+// boundaries, so the case must say that it means them (system/meshDict:
+// allowCoincidentNodes, defaultPatch). And the sizes of the cells, for the summary. (Facets
+// of more than two cells are refused by the readers and listed by MeshTopology.)
 #pragma once
 
 #include <array>
@@ -29,5 +31,14 @@ std::vector<std::pair<Index, Index>> coincidentPoints(const Mesh& mesh);
 /// triangle runs (the body on the left), a tetrahedron face with its right-hand normal
 /// pointing out of the body.
 std::vector<Index> unlabelledBoundaryFacets(const Mesh& mesh);
+
+/// Sizes of the cells of a mesh (areas in 2D, volumes in 3D), for summaries.
+struct CellSizes {
+  double total = 0;     ///< the mesh's area or volume
+  double smallest = 0;  ///< the smallest cell's (0 for a mesh without cells)
+  double largest = 0;
+  Index smallestCell = -1, largestCell = -1;
+};
+CellSizes cellSizes(const Mesh& mesh);
 
 }  // namespace friction

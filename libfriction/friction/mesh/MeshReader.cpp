@@ -1,6 +1,7 @@
-// readMesh and the checks both mesh formats share: loading the file, telling FreeFEM from
-// gmsh by content, and rejecting degenerate or clockwise triangles and collapsed edges.
-// The format parsers are in FreeFemMeshReader.cpp and GmshMeshReader.cpp.
+// readMesh and the checks the mesh formats share: loading the file, telling FreeFEM .msh,
+// Medit .mesh and gmsh apart by content, rejecting degenerate or wrongly oriented cells and
+// collapsed facets, and the whole-mesh checks. The format parsers are in
+// FreeFemMeshReader.cpp, MeditMeshReader.cpp and GmshMeshReader.cpp.
 #include "friction/mesh/MeshReader.hpp"
 
 #include <algorithm>
@@ -13,7 +14,10 @@
 #include <memory>
 #include <sstream>
 
+#include <Eigen/Geometry>
+
 #include "friction/mesh/MeshReaderDetail.hpp"
+#include "friction/mesh/MeshTopology.hpp"
 
 namespace friction {
 
@@ -23,7 +27,8 @@ namespace {
 std::string loadFile(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw InputError(path, "is a directory: expected a mesh file (FreeFEM .msh or gmsh .msh)");
+    throw InputError(path,
+                     "is a directory: expected a mesh file (FreeFEM .msh or .mesh, or gmsh .msh)");
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) throw InputError(path, std::string("cannot open the mesh file: ") + std::strerror(errno));
   std::string text;
@@ -37,14 +42,17 @@ std::string loadFile(const std::string& path) {
   return text;
 }
 
-bool isGmsh(const std::string& text) {
+// Whether the first word of the file (after a byte-order mark and white space) is `tag`.
+bool startsWith(const std::string& text, const std::string& tag) {
   std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-  static const std::string tag = "$MeshFormat";
   if (text.compare(i, tag.size(), tag) != 0) return false;
   const std::size_t after = i + tag.size();
   return after == text.size() || std::isspace(static_cast<unsigned char>(text[after]));
 }
+
+bool isGmsh(const std::string& text) { return startsWith(text, "$MeshFormat"); }
+bool isMedit(const std::string& text) { return startsWith(text, "MeshVersionFormatted"); }
 
 // NUL bytes do not occur in text meshes; catching them here gives a clearer message than
 // "expected nv nt nbe, found <garbage>".
@@ -62,10 +70,18 @@ void rejectBinary(const std::string& path, const std::string& text) {
 
 Mesh readMesh(const std::string& path) {
   std::string text = loadFile(path);
-  const bool gmsh = isGmsh(text);
+  const bool gmsh = isGmsh(text), medit = !gmsh && isMedit(text);
   if (!gmsh) rejectBinary(path, text);
   TextScanner scanner(path, std::move(text));
-  return gmsh ? detail::parseGmshMesh(scanner) : detail::parseFreeFemMesh(scanner);
+  if (gmsh) return detail::parseGmshMesh(scanner);
+  return medit ? detail::parseMeditMesh(scanner) : detail::parseFreeFemMesh(scanner);
+}
+
+Mesh readMeditMesh(const std::string& path) {
+  std::string text = loadFile(path);
+  rejectBinary(path, text);
+  TextScanner scanner(path, std::move(text));
+  return detail::parseMeditMesh(scanner);
 }
 
 Mesh readFreeFemMesh(const std::string& path) {
@@ -94,7 +110,7 @@ TriangleDefect triangleDefect(const std::vector<Point>& points, const std::array
   return area < 0 ? TriangleDefect::clockwise : TriangleDefect::none;
 }
 
-void failTriangle(const TextScanner& scanner, TriangleDefect defect,
+void failTriangle(const TextScanner& scanner, int line, TriangleDefect defect,
                   const std::vector<Point>& points, const std::array<Index, 3>& t, const char* kind,
                   long long number, const std::array<long long, 3>& fileVertices,
                   const std::string& clockwiseFix) {
@@ -112,22 +128,157 @@ void failTriangle(const TextScanner& scanner, TriangleDefect defect,
   else
     s << "is clockwise (signed area " << area << "): expected counter-clockwise triangles; "
       << clockwiseFix;
-  scanner.fail(s.str());
+  scanner.failAt(line, s.str());
 }
 
-void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, const char* kind,
-               long long number, const std::array<long long, 2>& fileVertices) {
-  if (edge[0] != edge[1]) return;
-  scanner.fail(std::string(kind) + " " + std::to_string(number) + " joins vertex " +
-               std::to_string(fileVertices[0]) + " to itself (" + std::to_string(fileVertices[0]) +
-               " " + std::to_string(fileVertices[1]) +
-               "): expected an edge between two different vertices");
+TetrahedronDefect tetrahedronDefect(const std::vector<Point>& points,
+                                    const std::array<Index, 4>& t) {
+  const Point& x0 = points[t[0]];
+  const Point a = points[t[1]] - x0, b = points[t[2]] - x0, c = points[t[3]] - x0;
+  const double sixVolume = a.cross(b).dot(c);
+  double longest2 = std::max({a.squaredNorm(), b.squaredNorm(), c.squaredNorm()});
+  for (int i = 1; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      longest2 = std::max(longest2, (points[t[j]] - points[t[i]]).squaredNorm());
+  // As for triangles: relative to the longest edge cubed, far below any usable shape. Written
+  // so that a volume that overflows (NaN) is refused too.
+  if (!(std::abs(sixVolume) > 1e-12 * longest2 * std::sqrt(longest2)))
+    return TetrahedronDefect::zeroVolume;
+  return sixVolume < 0 ? TetrahedronDefect::negative : TetrahedronDefect::none;
 }
+
+void failTetrahedron(const TextScanner& scanner, int line, TetrahedronDefect defect,
+                     const std::vector<Point>& points, const std::array<Index, 4>& t,
+                     const char* kind, long long number,
+                     const std::array<long long, 4>& fileVertices, const std::string& negativeFix) {
+  const Point& x0 = points[t[0]];
+  const double volume = (points[t[1]] - x0).cross(points[t[2]] - x0).dot(points[t[3]] - x0) / 6.0;
+  std::ostringstream s;
+  s.precision(6);
+  s << kind << " " << number << " (vertices " << fileVertices[0] << " " << fileVertices[1] << " "
+    << fileVertices[2] << " " << fileVertices[3] << " at ";
+  for (int k = 0; k < 4; ++k) s << (k ? ", " : "") << formatPoint(points[t[k]], 3);
+  s << ") ";
+  if (defect == TetrahedronDefect::zeroVolume)
+    s << "has zero volume (" << volume
+      << "): expected a tetrahedron whose volume is more than 1e-12 times its longest edge "
+         "cubed; remesh or remove it";
+  else
+    s << "has negative volume (signed volume " << volume
+      << "): expected tetrahedra of positive volume (the fourth vertex on the side of the first "
+         "three where (x1 - x0) x (x2 - x0) points); "
+      << negativeFix;
+  scanner.failAt(line, s.str());
+}
+
+void checkTriangleFacet(const TextScanner& scanner, int line, const std::array<Index, 3>& f,
+                        const char* kind, long long number,
+                        const std::array<long long, 3>& fileVertices) {
+  if (f[0] != f[1] && f[1] != f[2] && f[0] != f[2]) return;
+  scanner.failAt(line, std::string(kind) + " " + std::to_string(number) +
+                           " is a triangle with a repeated vertex (" +
+                           std::to_string(fileVertices[0]) + " " + std::to_string(fileVertices[1]) +
+                           " " + std::to_string(fileVertices[2]) +
+                           "): expected three different vertices");
+}
+
+void checkEdge(const TextScanner& scanner, int line, const std::array<Index, 2>& edge,
+               const char* kind, long long number, const std::array<long long, 2>& fileVertices) {
+  if (edge[0] != edge[1]) return;
+  scanner.failAt(line, std::string(kind) + " " + std::to_string(number) + " joins vertex " +
+                           std::to_string(fileVertices[0]) + " to itself (" +
+                           std::to_string(fileVertices[0]) + " " + std::to_string(fileVertices[1]) +
+                           "): expected an edge between two different vertices");
+}
+
+namespace {
+
+// finishMesh's checks for tetrahedra and labelled triangles, on the topology of the cells
+// (the vertex numbers are in range: the parsers checked them).
+void checkMesh3(const TextScanner& scanner, const Mesh& mesh, const FileNumbering& numbering) {
+  const auto vertexText = [&](Index v) {
+    return std::to_string(numbering.point[v]) + " " + formatPoint(mesh.points[v], 3);
+  };
+  const MeshTopology topology(3, mesh.numPoints(), mesh.cellVertices, mesh.source);
+  const auto sorted = [&](Index c) {
+    std::array<Index, 4> k{mesh.cellVertex(c, 0), mesh.cellVertex(c, 1), mesh.cellVertex(c, 2),
+                           mesh.cellVertex(c, 3)};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  // A tetrahedron listed twice shares every face with its copy: look for it first (it would
+  // otherwise be reported as a face of three tetrahedra).
+  for (Index f = 0; f < topology.numFacets(); ++f) {
+    const int n = topology.numCellsOf(f);
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        const Index a = topology.cellOf(f, i).cell, b = topology.cellOf(f, j).cell;
+        if (sorted(a) != sorted(b)) continue;
+        const auto v = sorted(a);
+        scanner.failAt(numbering.cellLine[b],
+                       "the tetrahedron with vertices " + std::to_string(numbering.point[v[0]]) +
+                           " " + std::to_string(numbering.point[v[1]]) + " " +
+                           std::to_string(numbering.point[v[2]]) + " " +
+                           std::to_string(numbering.point[v[3]]) + " is listed twice (lines " +
+                           std::to_string(numbering.cellLine[a]) + " and " +
+                           std::to_string(numbering.cellLine[b]) +
+                           "): expected each tetrahedron once");
+      }
+  }
+  if (!topology.overSharedFacets().empty()) {
+    const Index f = topology.overSharedFacets().front();
+    const Index third = topology.cellOf(f, 2).cell;
+    scanner.failAt(numbering.cellLine[third],
+                   "the face with vertices " + vertexText(topology.facetVertex(f, 0)) + ", " +
+                       vertexText(topology.facetVertex(f, 1)) + " and " +
+                       vertexText(topology.facetVertex(f, 2)) +
+                       " is a face of a third tetrahedron here (the others are at lines " +
+                       std::to_string(numbering.cellLine[topology.cellOf(f, 0).cell]) + " and " +
+                       std::to_string(numbering.cellLine[topology.cellOf(f, 1).cell]) +
+                       "): expected a 3D tetrahedral mesh, where a face bounds at most two "
+                       "tetrahedra (overlapping or folded tetrahedra?)");
+  }
+  // Labelled triangles: faces of the mesh, each label once per face.
+  std::vector<std::pair<std::pair<Index, int>, Index>> keys;
+  keys.reserve(mesh.facetLabel.size());
+  for (Index e = 0; e < mesh.numFacets(); ++e) {
+    const Index a = mesh.facetVertex(e, 0), b = mesh.facetVertex(e, 1), c = mesh.facetVertex(e, 2);
+    const Index f = topology.findFacet({a, b, c});
+    if (f < 0)
+      scanner.failAt(numbering.facetLine[e],
+                     "the triangle with vertices " + vertexText(a) + ", " + vertexText(b) +
+                         " and " + vertexText(c) + " (label " + std::to_string(mesh.facetLabel[e]) +
+                         ") is not a face of any tetrahedron: expected labelled triangles on the "
+                         "mesh (the boundary, or a surface embedded in the volume, e.g. gmsh's "
+                         "Surface{s} In Volume{v})");
+    keys.push_back({{f, mesh.facetLabel[e]}, e});
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (keys[i].first == keys[i - 1].first) {
+      const Index e = keys[i].second;
+      const int first = numbering.facetLine[keys[i - 1].second], second = numbering.facetLine[e];
+      scanner.failAt(
+          std::max(first, second),
+          "the triangle with vertices " + vertexText(mesh.facetVertex(e, 0)) + ", " +
+              vertexText(mesh.facetVertex(e, 1)) + " and " + vertexText(mesh.facetVertex(e, 2)) +
+              " is listed twice with label " + std::to_string(mesh.facetLabel[e]) + " (lines " +
+              std::to_string(std::min(first, second)) + " and " +
+              std::to_string(std::max(first, second)) + "): expected each triangle once per label");
+    }
+}
+
+}  // namespace
 
 void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& numbering) {
   const auto vertexText = [&](Index v) {
     return std::to_string(numbering.point[v]) + " " + formatPoint(mesh.points[v], mesh.dim);
   };
+  if (mesh.dim == 3) {
+    checkMesh3(scanner, mesh, numbering);
+    dropUnusedPoints(mesh, numbering);
+    return;
+  }
 
   // Vertex -> its triangles (compressed rows): the side checks below walk one vertex's fan,
   // a few triangles, with no sorting or hashing of all sides.
@@ -215,8 +366,12 @@ void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& num
                          "): expected each edge once per label");
     }
 
-  // Vertices no triangle uses carry no stiffness: the solver's matrices would have empty
-  // rows for them. Drop them and renumber.
+  dropUnusedPoints(mesh, numbering);
+}
+
+void dropUnusedPoints(Mesh& mesh, const FileNumbering& numbering) {
+  // Vertices no cell uses carry no stiffness: the solver's matrices would have empty rows
+  // for them. Drop them and renumber.
   std::vector<Index> newNumber(mesh.points.size(), -1);
   for (Index v : mesh.cellVertices) newNumber[v] = 0;
   Index next = 0;
@@ -243,6 +398,15 @@ void checkFinite(const TextScanner& scanner, double x, double y, const char* kin
   scanner.fail(std::string(kind) + " " + std::to_string(number) + " has coordinate " +
                (std::isfinite(x) ? "y" : "x") +
                " that is not a finite number (NaN or Inf): expected finite coordinates");
+}
+
+void checkFinite(const TextScanner& scanner, double x, double y, double z, const char* kind,
+                 long long number) {
+  checkFinite(scanner, x, y, kind, number);
+  if (std::isfinite(z)) return;
+  scanner.fail(std::string(kind) + " " + std::to_string(number) +
+               " has coordinate z that is not a finite number (NaN or Inf): expected finite "
+               "coordinates");
 }
 
 }  // namespace detail

@@ -27,9 +27,10 @@ inline std::size_t reserveHint(long long announced, const TextScanner& scanner,
   return announced < 0 ? 0 : std::min(static_cast<std::size_t>(announced), cap);
 }
 
-/// Parse a FreeFEM / gmsh file whose whole text the scanner holds.
+/// Parse a FreeFEM / gmsh / Medit file whose whole text the scanner holds.
 Mesh parseFreeFemMesh(TextScanner& scanner);
 Mesh parseGmshMesh(TextScanner& scanner);
+Mesh parseMeditMesh(TextScanner& scanner);
 
 /// What is wrong with a triangle, if anything: zero area (relative to its longest edge
 /// squared) or clockwise order. Cheap; called for every triangle.
@@ -37,19 +38,38 @@ enum class TriangleDefect { none, zeroArea, clockwise };
 TriangleDefect triangleDefect(const std::vector<Point>& points,
                               const std::array<Index, 3>& triangle);
 
-/// Throw the InputError for a defective triangle at the scanner's current line. `kind` and
+/// Throw the InputError for a defective triangle at `line`. `kind` and
 /// `number` name it as the file does ("triangle 7", "element 31"); `fileVertices` are its
 /// vertex numbers as written in the file; `clockwiseFix` tells the user how to repair a
 /// clockwise triangle with the tool that wrote the file.
-[[noreturn]] void failTriangle(const TextScanner& scanner, TriangleDefect defect,
+[[noreturn]] void failTriangle(const TextScanner& scanner, int line, TriangleDefect defect,
                                const std::vector<Point>& points,
                                const std::array<Index, 3>& triangle, const char* kind,
                                long long number, const std::array<long long, 3>& fileVertices,
                                const std::string& clockwiseFix);
 
-/// Reject an edge whose two ends are the same vertex, at the scanner's current line.
-void checkEdge(const TextScanner& scanner, const std::array<Index, 2>& edge, const char* kind,
-               long long number, const std::array<long long, 2>& fileVertices);
+/// What is wrong with a tetrahedron, if anything: zero volume (relative to its longest edge
+/// cubed) or negative volume (vertex 3 not on the side of face 0 1 2 that its right-hand
+/// normal (x1 − x0) × (x2 − x0) points to).
+enum class TetrahedronDefect { none, zeroVolume, negative };
+TetrahedronDefect tetrahedronDefect(const std::vector<Point>& points,
+                                    const std::array<Index, 4>& tetrahedron);
+
+/// Throw the InputError for a defective tetrahedron at `line`; arguments as failTriangle.
+[[noreturn]] void failTetrahedron(const TextScanner& scanner, int line, TetrahedronDefect defect,
+                                  const std::vector<Point>& points,
+                                  const std::array<Index, 4>& tetrahedron, const char* kind,
+                                  long long number, const std::array<long long, 4>& fileVertices,
+                                  const std::string& negativeFix);
+
+/// Reject a labelled triangle (3D) with a repeated vertex, at `line`.
+void checkTriangleFacet(const TextScanner& scanner, int line, const std::array<Index, 3>& facet,
+                        const char* kind, long long number,
+                        const std::array<long long, 3>& fileVertices);
+
+/// Reject an edge whose two ends are the same vertex, at `line`.
+void checkEdge(const TextScanner& scanner, int line, const std::array<Index, 2>& edge,
+               const char* kind, long long number, const std::array<long long, 2>& fileVertices);
 
 /// Where each item of a parsed mesh came from, for the whole-mesh checks of finishMesh.
 struct FileNumbering {
@@ -60,14 +80,19 @@ struct FileNumbering {
 };
 
 /// The checks that need the whole mesh, each an InputError at the line of the offending
-/// item: a triangle listed twice, a side shared by more than two triangles, a labelled edge
-/// that is no side of any triangle, an edge listed twice with the same label. Then drops the
-/// vertices no triangle uses (renumbering triangles and edges) and lists them in
-/// mesh.droppedPoints.
+/// item: a cell listed twice, a facet shared by more than two cells, a labelled facet that is
+/// no facet of any cell, a facet listed twice with the same label. Then drops the vertices no
+/// cell uses (renumbering cells and facets) and lists them in mesh.droppedPoints.
 void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& numbering);
+
+/// The last step of finishMesh: drop the vertices no cell uses, renumber, and list them in
+/// mesh.droppedPoints.
+void dropUnusedPoints(Mesh& mesh, const FileNumbering& numbering);
 
 /// Reject a NaN or Inf coordinate at the scanner's current line.
 void checkFinite(const TextScanner& scanner, double x, double y, const char* kind,
+                 long long number);
+void checkFinite(const TextScanner& scanner, double x, double y, double z, const char* kind,
                  long long number);
 
 }  // namespace friction::detail

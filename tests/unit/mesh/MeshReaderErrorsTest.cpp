@@ -383,9 +383,10 @@ TEST_CASE("mesh: unsupported gmsh element types are rejected, naming the type", 
         {"element type 3 (4-node quadrangle) is not supported",
          "expected 2-node lines (type 1), 3-node triangles (type 2)", "do not recombine"});
   }
-  SECTION("gmsh 4.1: tetrahedron") {
-    requireReadError(dir, "tet.msh", replaceLine(gmsh41, 25, "3 1 4 2"), 25,
-                     {"element type 4 (4-node tetrahedron) is not supported", "gmsh -2"});
+  SECTION("gmsh 4.1: hexahedron (tetrahedra are read: 3D meshes)") {
+    requireReadError(dir, "hex.msh", replaceLine(gmsh41, 25, "3 1 5 2"), 25,
+                     {"element type 5 (8-node hexahedron) is not supported",
+                      "4-node tetrahedra (type 4)", "tetrahedra only in 3D"});
   }
 }
 
