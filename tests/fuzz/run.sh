@@ -39,7 +39,8 @@ fi
 
 cmake -S "$here" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" > "$build.configure.log" 2>&1 \
   || { cat "$build.configure.log"; echo "run.sh: configuring the fuzz build failed" >&2; exit 2; }
-cmake --build "$build" || { echo "run.sh: building the fuzz targets failed" >&2; exit 2; }
+# At most as many compile jobs as the machine has cores (ninja alone starts cores + 2).
+cmake --build "$build" --parallel "$(nproc)" || { echo "run.sh: building the fuzz targets failed" >&2; exit 2; }
 
 status=0
 # One BLAS thread: the fuzz job is meant to take one core, and CHOLMOD's calls are tiny here.
