@@ -106,7 +106,9 @@ TriangleDefect triangleDefect(const std::vector<Point>& points, const std::array
   const double longest2 = std::max({ab.squaredNorm(), bc.squaredNorm(), ac.squaredNorm()});
   // Relative to the longest edge so that the test is independent of the mesh's units; 1e-12
   // is far below any usable triangle's shape ratio and far above round-off (~1e-16).
-  if (std::abs(area) <= 1e-12 * longest2) return TriangleDefect::zeroArea;
+  // Written as !(… > …) so that an area that is not a number (coordinates whose differences
+  // overflow double) is refused too.
+  if (!(std::abs(area) > 1e-12 * longest2)) return TriangleDefect::zeroArea;
   return area < 0 ? TriangleDefect::clockwise : TriangleDefect::none;
 }
 
@@ -121,7 +123,10 @@ void failTriangle(const TextScanner& scanner, int line, TriangleDefect defect,
   s << kind << " " << number << " (vertices " << fileVertices[0] << " " << fileVertices[1] << " "
     << fileVertices[2] << " at (" << a.x() << ", " << a.y() << "), (" << b.x() << ", " << b.y()
     << "), (" << c.x() << ", " << c.y() << ")) ";
-  if (defect == TriangleDefect::zeroArea)
+  if (defect == TriangleDefect::zeroArea && !std::isfinite(area))
+    s << "has an area that is not a finite number (" << area
+      << "): the differences of its coordinates overflow double; rescale the mesh";
+  else if (defect == TriangleDefect::zeroArea)
     s << "has zero area (" << area
       << "): expected a triangle whose area is more than 1e-12 times its longest edge squared; "
          "remesh or remove it";

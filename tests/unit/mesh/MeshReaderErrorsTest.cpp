@@ -332,6 +332,16 @@ TEST_CASE("mesh: zero-area triangles are rejected", "[mesh][errors]") {
   }
 }
 
+TEST_CASE("mesh: a triangle whose area overflows double is rejected", "[mesh][errors]") {
+  TempDir dir;
+  // Vertices 1, 2, 3 at (−1e308, 0), (1e308, 0), (1e308, 1e308): the sides' differences are
+  // infinite and the signed area is ∞ − ∞, not a number.
+  const std::string huge = replaceLine(
+      replaceLine(replaceLine(freeFem, 2, "-1e308 0 1"), 3, "1e308 0 1"), 4, "1e308 1e308 2");
+  requireReadError(dir, "huge.msh", huge, 6,
+                   {"triangle 1 (vertices 1 2 3", "not a finite number", "rescale the mesh"});
+}
+
 TEST_CASE("mesh: clockwise triangles are rejected, naming the triangle and how to fix it",
           "[mesh][errors]") {
   TempDir dir;
