@@ -89,6 +89,32 @@ void printChecks(const Mesh& mesh, const MeshSettings& settings,
   std::cout << "\n\n";
 }
 
+// 3D, after the split: per fault surface its area, tip-line length and nodes; the split mesh.
+void printFractures3D(const Mesh& mesh, const SplitMesh& split) {
+  for (const FractureGeometry& g : split.fractures) {
+    Point mean = Point::Zero();
+    for (const auto& t : g.triangles)
+      mean += (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]);
+    std::cout << "Fracture " << g.name << " (label " << g.label << ")\n"
+              << "    triangles:    " << g.triangles.size() << "\n"
+              << "    area:         " << g.area(mesh.points) << "\n"
+              << "    tip line:     " << g.tipLineLength(mesh)
+              << " (length of its edge inside the body)\n"
+              << "    nodes:        " << g.numNodes() << " (duplicated " << g.numDuplicated()
+              << ": interior " << g.numOfKind(FractureNodeKind::interior) << ", boundary "
+              << g.numOfKind(FractureNodeKind::boundary) << "; tips " << g.numTips() << ")\n"
+              << "    normal:       " << formatPoint(mean.normalized(), 3)
+              << " area-weighted mean (from Omega+ to Omega-)\n\n";
+  }
+
+  const SplitMesh& s = split;
+  std::cout << "Split mesh\n"
+            << "    points:     " << s.mesh.numPoints() << " (+"
+            << s.mesh.numPoints() - mesh.numPoints() << ")\n"
+            << "    tetrahedra: " << s.mesh.numCells() << "\n"
+            << "    volume:     " << s.mesh.totalMeasure() << "\n\n";
+}
+
 // 3D: volumes, patch areas, and per fault surface its area, tip-line length and nodes.
 void printSummary3D(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {
   std::cout << std::setprecision(6);
@@ -116,29 +142,7 @@ void printSummary3D(const Mesh& mesh, const SplitMesh& split, const std::set<int
               << "\n";
   }
   std::cout << std::right << "\n";
-
-  for (const FractureGeometry& g : split.fractures) {
-    Point mean = Point::Zero();
-    for (const auto& t : g.triangles)
-      mean += (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]);
-    std::cout << "Fracture " << g.name << " (label " << g.label << ")\n"
-              << "    triangles:    " << g.triangles.size() << "\n"
-              << "    area:         " << g.area(mesh.points) << "\n"
-              << "    tip line:     " << g.tipLineLength(mesh)
-              << " (length of its edge inside the body)\n"
-              << "    nodes:        " << g.numNodes() << " (duplicated " << g.numDuplicated()
-              << ": interior " << g.numOfKind(FractureNodeKind::interior) << ", boundary "
-              << g.numOfKind(FractureNodeKind::boundary) << "; tips " << g.numTips() << ")\n"
-              << "    normal:       " << formatPoint(mean.normalized(), 3)
-              << " area-weighted mean (from Omega+ to Omega-)\n\n";
-  }
-
-  const SplitMesh& s = split;
-  std::cout << "Split mesh\n"
-            << "    points:     " << s.mesh.numPoints() << " (+"
-            << s.mesh.numPoints() - mesh.numPoints() << ")\n"
-            << "    tetrahedra: " << s.mesh.numCells() << "\n"
-            << "    volume:     " << s.mesh.totalMeasure() << "\n\n";
+  printFractures3D(mesh, split);
 }
 
 void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {

@@ -29,6 +29,30 @@ struct UnionFind {
   void unite(int a, int b) { parent[find(a)] = find(b); }
 };
 
+// The rule of the splitting, in any dimension: the cells around node v (`cells`, all of them)
+// that stay connected through facets that contain v and are not fracture facets
+// (fractureOfFacet[facet] >= 0), grouped: one group per copy of v. Keyed by a group's root,
+// each group in the order of `cells`.
+std::map<int, std::vector<Index>> sidesAround(Index v, const std::vector<Index>& cells,
+                                              const MeshTopology& topo,
+                                              const std::vector<int>& fractureOfFacet) {
+  UnionFind uf(static_cast<int>(cells.size()));
+  for (std::size_t p = 0; p < cells.size(); ++p)
+    for (int k = 0; k < topo.verticesPerCell(); ++k) {
+      if (topo.cellVertex(cells[p], k) == v) continue;  // the facet opposite v lacks it
+      const Index side = topo.cellFacet(cells[p], k);
+      if (fractureOfFacet[side] >= 0 || topo.numCellsOf(side) != 2) continue;
+      const Index c0 = topo.cellOf(side, 0).cell, c1 = topo.cellOf(side, 1).cell;
+      const Index other = c0 == cells[p] ? c1 : c0;
+      const auto q = std::find(cells.begin(), cells.end(), other) - cells.begin();
+      uf.unite(static_cast<int>(p), static_cast<int>(q));
+    }
+  std::map<int, std::vector<Index>> groups;
+  for (std::size_t p = 0; p < cells.size(); ++p)
+    groups[uf.find(static_cast<int>(p))].push_back(cells[p]);
+  return groups;
+}
+
 // The edges (a < b) of the boundary facets of a 3D mesh: where a surface's edge lies on ∂Ω.
 std::set<std::pair<Index, Index>> outerBoundaryEdges(const MeshTopology& topo) {
   std::set<std::pair<Index, Index>> edges;
@@ -308,21 +332,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     g.kind.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const Index v = g.node[i];
-      const std::vector<Index>& tris = fan[v];
-      UnionFind uf(static_cast<int>(tris.size()));
-      for (std::size_t p = 0; p < tris.size(); ++p)
-        for (Index w : mesh.cell(tris[p])) {
-          if (w == v) continue;
-          const Index side = topo.findFacet({v, w});
-          if (fractureOfEdge[side] >= 0 || topo.numCellsOf(side) != 2) continue;
-          const Index t0 = topo.cellOf(side, 0).cell, t1 = topo.cellOf(side, 1).cell;
-          const Index other = t0 == tris[p] ? t1 : t0;
-          const auto q = std::find(tris.begin(), tris.end(), other) - tris.begin();
-          uf.unite(static_cast<int>(p), static_cast<int>(q));
-        }
-      std::map<int, std::vector<Index>> groups;  // root -> triangles of one side
-      for (std::size_t p = 0; p < tris.size(); ++p)
-        groups[uf.find(static_cast<int>(p))].push_back(tris[p]);
+      const std::map<int, std::vector<Index>> groups = sidesAround(v, fan[v], topo, fractureOfEdge);
 
       if (groups.size() == 1) {
         if (nodeEdges[v].size() != 1)
@@ -455,6 +465,7 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
   // 1. Each fracture's triangles: interior facets of the mesh, each of one fracture.
   std::vector<std::vector<std::array<Index, 3>>> tris(specs.size());
   std::vector<int> fractureOfFacet(static_cast<std::size_t>(topo.numFacets()), -1);
+  std::vector<int> triangleOfFacet(static_cast<std::size_t>(topo.numFacets()), -1);  // in tris
   for (std::size_t f = 0; f < specs.size(); ++f) {
     const FractureSpec& spec = specs[f];
     for (Index e = 0; e < mesh.numFacets(); ++e) {
@@ -484,6 +495,7 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
                                    "inside the body (a face of two tetrahedra)");
       }
       fractureOfFacet[side] = static_cast<int>(f);
+      triangleOfFacet[side] = static_cast<int>(tris[f].size());
       tris[f].push_back({a, b, c});
     }
     if (tris[f].empty()) throw InputError(spec.where, entry(spec) + " has no triangles in " + file);
@@ -535,45 +547,33 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
                                        "on the outer boundary) are supported");
 
     // Orient the triangles consistently: walk across edges from the first triangle (file
-    //    orientation); a neighbour must run through the shared edge the other way.
-    std::vector<int> flip(nt, -1);  // 0 as in the file, 1 reversed
-    std::vector<int> stack;
-    flip[0] = 0;
-    stack.push_back(0);
-    int reached = 1;
-    auto runs = [&](int i, Index a, Index b) {  // does oriented triangle i run a -> b?
-      const auto& t = tri[i];
-      for (int k = 0; k < 3; ++k) {
-        const Index p = t[k], q = t[(k + 1) % 3];
-        if (p == a && q == b) return flip[i] == 0;
-        if (p == b && q == a) return flip[i] == 1;
-      }
+    // orientation); a neighbour must run through the shared edge the other way.
+    std::vector<int> flip(nt, -1);                    // 0 as in the file, 1 reversed
+    auto runsInFile = [&](int i, Index a, Index b) {  // does triangle i run a -> b in the file?
+      for (int k = 0; k < 3; ++k)
+        if (tri[i][k] == a && tri[i][(k + 1) % 3] == b) return true;
       return false;
     };
+    std::vector<int> stack{0};
+    flip[0] = 0;
+    int reached = 1;
     while (!stack.empty()) {
       const int i = stack.back();
       stack.pop_back();
       for (int k = 0; k < 3; ++k) {
+        // Oriented, i runs a -> b (reversed, b -> a): j must run the other way.
         const Index a = tri[i][k], b = tri[i][(k + 1) % 3];
-        const bool iab = runs(i, a, b);
         for (int j : edgeTris[std::minmax(a, b)]) {
           if (j == i) continue;
-          const bool fileAB = std::find(tri[j].begin(), tri[j].end(), a) != tri[j].end() && [&] {
-            for (int m = 0; m < 3; ++m)
-              if (tri[j][m] == a && tri[j][(m + 1) % 3] == b) return true;
-            return false;
-          }();
-          // j must run b -> a when i runs a -> b.
-          const int want = (fileAB == iab) ? 1 : 0;
+          const int want = (runsInFile(j, a, b) == (flip[i] == 0)) ? 1 : 0;
           if (flip[j] < 0) {
             flip[j] = want;
             ++reached;
             stack.push_back(j);
           } else if (flip[j] != want) {
             throw InputError(file, entry(spec) +
-                                       " is not an orientable surface (a Moebius "
-                                       "strip?): its two sides cannot be told "
-                                       "apart; found at the edge " +
+                                       " is not an orientable surface (a Moebius strip?): its "
+                                       "two sides cannot be told apart; found at the edge " +
                                        at(a) + "-" + at(b));
           }
         }
@@ -670,21 +670,8 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
     g.kind.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const Index v = g.node[i];
-      const std::vector<Index>& tets = fan[v];
-      UnionFind uf(static_cast<int>(tets.size()));
-      for (std::size_t p = 0; p < tets.size(); ++p)
-        for (int k = 0; k < 4; ++k) {
-          if (topo.cellVertex(tets[p], k) == v) continue;  // the facet opposite v lacks it
-          const Index side = topo.cellFacet(tets[p], k);
-          if (fractureOfFacet[side] >= 0 || topo.numCellsOf(side) != 2) continue;
-          const Index t0 = topo.cellOf(side, 0).cell, t1 = topo.cellOf(side, 1).cell;
-          const Index other = t0 == tets[p] ? t1 : t0;
-          const auto q = std::find(tets.begin(), tets.end(), other) - tets.begin();
-          uf.unite(static_cast<int>(p), static_cast<int>(q));
-        }
-      std::map<int, std::vector<Index>> groups;  // root -> tetrahedra of one side
-      for (std::size_t p = 0; p < tets.size(); ++p)
-        groups[uf.find(static_cast<int>(p))].push_back(tets[p]);
+      const std::map<int, std::vector<Index>> groups =
+          sidesAround(v, fan[v], topo, fractureOfFacet);
 
       if (groups.size() == 1) {
         if (!onEdge[i])
@@ -712,18 +699,10 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
             const Index side = topo.cellFacet(t, k);
             if (fractureOfFacet[side] != static_cast<int>(f) || topo.cellVertex(t, k) == v)
               continue;
-            // The oriented fracture triangle with these vertices.
-            for (const auto& tr : tri) {
-              std::array<Index, 3> key = tr;
-              std::sort(key.begin(), key.end());
-              if (key[0] != topo.facetVertex(side, 0) || key[1] != topo.facetVertex(side, 1) ||
-                  key[2] != topo.facetVertex(side, 2))
-                continue;
-              const double s =
-                  (mesh.points[topo.cellVertex(t, k)] - mesh.points[tr[0]]).dot(cross(tr));
-              sideOf[gi] = s < 0 ? +1 : -1;
-              break;
-            }
+            const auto& tr = tri[triangleOfFacet[side]];  // oriented
+            const double s =
+                (mesh.points[topo.cellVertex(t, k)] - mesh.points[tr[0]]).dot(cross(tr));
+            sideOf[gi] = s < 0 ? +1 : -1;
           }
           if (sideOf[gi] != 0) break;
         }
