@@ -62,8 +62,8 @@ struct FractureGeometry {
   /// 3D: the area of the triangles (points: the mesh's or the split mesh's, whose first
   /// points are the unsplit ones). 0 in 2D.
   double area(const std::vector<Point>& points) const;
-  /// 3D: the length of the tip line, the edges of the surface's boundary that have a tip node
-  /// at either end or that do not lie on the outer boundary of the unsplit mesh. 0 in 2D.
+  /// 3D: the length of the tip line: the edges of the surface's own boundary (edges of one of
+  /// its triangles) that are not edges of a boundary face of the unsplit mesh. 0 in 2D.
   double tipLineLength(const Mesh& unsplit) const;
 };
 
