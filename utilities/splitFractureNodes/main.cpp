@@ -1,6 +1,6 @@
 // splitFractureNodes: duplicate the mesh nodes along the fractures of a case (docs/method.md)
-// and write the split mesh, with n_Γ, t_Γ and arclength per fracture node, to
-// <case>/constant/splitMesh for the solver.
+// and write the split mesh, with n_Γ per fracture node (2D: also t_Γ and arclength; 3D: the
+// oriented fault triangles), to <case>/constant/splitMesh for the solver.
 //
 // Sample run:
 //   splitFractureNodes -case cases/paperBenchmark
@@ -90,7 +90,64 @@ void printChecks(const Mesh& mesh, const MeshSettings& settings,
   std::cout << "\n\n";
 }
 
+// 3D, after the split: per fault surface its area, tip-line length and nodes; the split mesh.
+void printFractures3D(const Mesh& mesh, const SplitMesh& split) {
+  for (const FractureGeometry& g : split.fractures) {
+    Point mean = Point::Zero();
+    for (const auto& t : g.triangles)
+      mean += (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]);
+    std::cout << "Fracture " << g.name << " (label " << g.label << ")\n"
+              << "    triangles:    " << g.triangles.size() << "\n"
+              << "    area:         " << g.area(mesh.points) << "\n"
+              << "    tip line:     " << g.tipLineLength(mesh)
+              << " (length of its edge inside the body)\n"
+              << "    nodes:        " << g.numNodes() << " (duplicated " << g.numDuplicated()
+              << ": interior " << g.numOfKind(FractureNodeKind::interior) << ", boundary "
+              << g.numOfKind(FractureNodeKind::boundary) << "; tips " << g.numTips() << ")\n"
+              << "    normal:       " << formatPoint(mean.normalized(), 3)
+              << " area-weighted mean (from Omega+ to Omega-)\n\n";
+  }
+
+  const SplitMesh& s = split;
+  std::cout << "Split mesh\n"
+            << "    points:     " << s.mesh.numPoints() << " (+"
+            << s.mesh.numPoints() - mesh.numPoints() << ")\n"
+            << "    tetrahedra: " << s.mesh.numCells() << "\n"
+            << "    volume:     " << s.mesh.totalMeasure() << "\n\n";
+}
+
+// 3D: volumes, patch areas, and per fault surface its area, tip-line length and nodes.
+void printSummary3D(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {
+  std::cout << std::setprecision(6);
+  std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ")\n"
+            << "    points:     " << mesh.numPoints() << "\n"
+            << "    tetrahedra: " << mesh.numCells() << "\n"
+            << "    volume:     " << mesh.totalMeasure() << "\n\n";
+
+  std::cout << "Patches\n    " << std::left << std::setw(16) << "name" << std::setw(8) << "label"
+            << std::setw(11) << "triangles" << std::setw(14) << "area"
+            << "type\n";
+  for (const auto& [label, name] : mesh.labelNames) {
+    int count = 0;
+    double area = 0;
+    for (Index e = 0; e < mesh.numFacets(); ++e)
+      if (mesh.facetLabel[e] == label) {
+        ++count;
+        const Point& a = mesh.points[mesh.facetVertex(e, 0)];
+        area += 0.5 * (mesh.points[mesh.facetVertex(e, 1)] - a)
+                          .cross(mesh.points[mesh.facetVertex(e, 2)] - a)
+                          .norm();
+      }
+    std::cout << "    " << std::setw(16) << name << std::setw(8) << label << std::setw(11) << count
+              << std::setw(14) << area << (fractureLabels.count(label) ? "fracture" : "boundary")
+              << "\n";
+  }
+  std::cout << std::right << "\n";
+  printFractures3D(mesh, split);
+}
+
 void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {
+  if (mesh.dim == 3) return printSummary3D(mesh, split, fractureLabels);
   std::cout << std::setprecision(6);
   std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ")\n"
             << "    points:    " << mesh.numPoints() << "\n"
@@ -133,7 +190,8 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
                               " (duplicated)")
                 << "\n";
     }
-    std::cout << "    normal:       " << point(g.normal[0]) << " at the start (from Omega+ to "
+    std::cout << "    normal:       " << point(g.normal[0].head<2>())
+              << " at the start (from Omega+ to "
               << "Omega-; tangent " << point(g.tangent[0]) << ")\n\n";
   }
 

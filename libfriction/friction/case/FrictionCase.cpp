@@ -87,6 +87,12 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
     throw InputError(splitPath, "cannot open: run splitFractureNodes on the case first");
   split_ = readSplitMesh(splitPath);
   checkSplitMeshCurrent(caseDir, split_);
+  // The first place the dimension is known: refuse a 3D mesh before anything is assembled.
+  if (split_.mesh.dim != 2)
+    throw InputError(splitPath,
+                     "is a 3D split mesh (tetrahedra, fault surfaces): frictionSolver solves "
+                     "2D cases only so far (splitFractureNodes splits 3D meshes already; "
+                     "solving in 3D comes next); expected a 2D split mesh");
 
   const Dictionary mech = readCaseFile(caseDir, "constant/mechanicalProperties");
   material_ = std::make_unique<Material>(Material::read(mech));

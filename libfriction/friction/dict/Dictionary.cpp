@@ -978,6 +978,23 @@ std::vector<Vector2> Dictionary::getVectorList(const std::string& key) const {
   });
 }
 
+std::vector<Point> Dictionary::getPointList(const std::string& key) const {
+  const std::string expected = "a list of 3-vectors, e.g. ((0 0 0) (1 0 0))";
+  return getRequired(*impl_, key, expected, [&](const DictEntry& e) {
+    const Value& list = singleList(e, expected);
+    std::vector<Point> out;
+    out.reserve(list.items.size());
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+      const Value& v = list.items[i];
+      if (!v.isList() || v.items.size() != 3 || !v.items[0].isNumber() || !v.items[1].isNumber() ||
+          !v.items[2].isNumber())
+        failItem(e, i, v, "a vector (x y z)");
+      out.emplace_back(v.items[0].number, v.items[1].number, v.items[2].number);
+    }
+    return out;
+  });
+}
+
 template <std::size_t N>
 std::vector<std::array<long, N>> Dictionary::getIntTupleList(const std::string& key) const {
   const std::string tuple = "(" + std::to_string(N) + " integers)";
@@ -997,6 +1014,7 @@ std::vector<std::array<long, N>> Dictionary::getIntTupleList(const std::string& 
 
 template std::vector<std::array<long, 2>> Dictionary::getIntTupleList<2>(const std::string&) const;
 template std::vector<std::array<long, 3>> Dictionary::getIntTupleList<3>(const std::string&) const;
+template std::vector<std::array<long, 4>> Dictionary::getIntTupleList<4>(const std::string&) const;
 
 Table Dictionary::getTable(const std::string& key) const {
   const std::string expected = "a table ((x0 y0) (x1 y1) ...)";

@@ -129,6 +129,8 @@ class Dictionary {
   std::vector<long> getIntList(const std::string& key) const;
   std::vector<std::string> getWordList(const std::string& key) const;
   std::vector<Vector2> getVectorList(const std::string& key) const;
+  /// List of 3-vectors, e.g. ((0 0 0) (1 0 0)).
+  std::vector<Point> getPointList(const std::string& key) const;
   /// List of fixed-size integer tuples, e.g. ((0 1 2) (2 3 4)).
   template <std::size_t N>
   std::vector<std::array<long, N>> getIntTupleList(const std::string& key) const;

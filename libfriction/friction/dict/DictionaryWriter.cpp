@@ -178,6 +178,17 @@ void DictionaryWriter::entry(const std::string& key, const std::vector<Vector2>&
   });
 }
 
+void DictionaryWriter::entry(const std::string& key, const std::vector<Point>& list) {
+  writeList(out_, depth_, key, list.size(), [&](std::size_t i, std::string& buf) {
+    buf += '(';
+    for (int c = 0; c < 3; ++c) {
+      if (c) buf += ' ';
+      buf += number(list[i][c]);
+    }
+    buf += ')';
+  });
+}
+
 void DictionaryWriter::entryWords(const std::string& key, const std::vector<std::string>& words) {
   for (const std::string& w : words) checkWord(w, "word");
   writeList(out_, depth_, key, words.size(),
@@ -201,6 +212,8 @@ template void DictionaryWriter::entry<2>(const std::string&,
                                          const std::vector<std::array<int, 2>>&);
 template void DictionaryWriter::entry<3>(const std::string&,
                                          const std::vector<std::array<int, 3>>&);
+template void DictionaryWriter::entry<4>(const std::string&,
+                                         const std::vector<std::array<int, 4>>&);
 
 void DictionaryWriter::entryRaw(const std::string& key, const std::string& raw) {
   writeKey(out_, depth_, key);

@@ -40,6 +40,7 @@ class DictionaryWriter {
   void entry(const std::string& key, const std::vector<double>& list);
   void entry(const std::string& key, const std::vector<int>& list);
   void entry(const std::string& key, const std::vector<Vector2>& list);
+  void entry(const std::string& key, const std::vector<Point>& list);  // (x y z) each
   void entryWords(const std::string& key, const std::vector<std::string>& words);
   template <std::size_t N>
   void entry(const std::string& key, const std::vector<std::array<int, N>>& tuples);

@@ -7,6 +7,13 @@
 //  * Each fracture is walked from the end that is smallest in (x, then y) to the other, so
 //    the arclength s grows along t_Γ. A horizontal fracture is walked left to right:
 //    t_Γ = (1, 0), n_Γ = (0, −1), Ω⁺ is above.
+//  * 3D (fault surfaces): the surface's triangles are oriented consistently (across shared
+//    edges), then globally so that the component of largest magnitude of their area-weighted
+//    mean normal Σ (b − a) × (c − a) is negative (a tie goes to the earlier axis, x before y
+//    before z). n_Γ at a node is the normalised sum of its triangles' (b − a) × (c − a) (an
+//    area-weighted mean). A horizontal fault has n_Γ = (0, 0, −1) and Ω⁺ above it, as a
+//    horizontal 2D fracture has n_Γ = (0, −1) and Ω⁺ above it. The Ω⁺ copy of a node keeps
+//    its number, in 2D and 3D.
 //  * [[f]] = f⁺ − f⁻ (jump), {f} = (f⁺ + f⁻)/2 (average).
 //  * σ_n = (σ n_Γ)·n_Γ, negative in compression; τ = (σ n_Γ)·t_Γ in 2D.
 //  * Slip s = [[u]]·t_Γ, slip increment β; with Coulomb's law the slip increment is opposite

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -27,6 +28,42 @@ struct UnionFind {
   }
   void unite(int a, int b) { parent[find(a)] = find(b); }
 };
+
+// The rule of the splitting, in any dimension: the cells around node v (`cells`, all of them)
+// that stay connected through facets that contain v and are not fracture facets
+// (fractureOfFacet[facet] >= 0), grouped: one group per copy of v. Keyed by a group's root,
+// each group in the order of `cells`.
+std::map<int, std::vector<Index>> sidesAround(Index v, const std::vector<Index>& cells,
+                                              const MeshTopology& topo,
+                                              const std::vector<int>& fractureOfFacet) {
+  UnionFind uf(static_cast<int>(cells.size()));
+  for (std::size_t p = 0; p < cells.size(); ++p)
+    for (int k = 0; k < topo.verticesPerCell(); ++k) {
+      if (topo.cellVertex(cells[p], k) == v) continue;  // the facet opposite v lacks it
+      const Index side = topo.cellFacet(cells[p], k);
+      if (fractureOfFacet[side] >= 0 || topo.numCellsOf(side) != 2) continue;
+      const Index c0 = topo.cellOf(side, 0).cell, c1 = topo.cellOf(side, 1).cell;
+      const Index other = c0 == cells[p] ? c1 : c0;
+      const auto q = std::find(cells.begin(), cells.end(), other) - cells.begin();
+      uf.unite(static_cast<int>(p), static_cast<int>(q));
+    }
+  std::map<int, std::vector<Index>> groups;
+  for (std::size_t p = 0; p < cells.size(); ++p)
+    groups[uf.find(static_cast<int>(p))].push_back(cells[p]);
+  return groups;
+}
+
+// The edges (a < b) of the boundary facets of a 3D mesh: where a surface's edge lies on ∂Ω.
+std::set<std::pair<Index, Index>> outerBoundaryEdges(const MeshTopology& topo) {
+  std::set<std::pair<Index, Index>> edges;
+  for (Index f = 0; f < topo.numFacets(); ++f)
+    if (topo.isBoundary(f))
+      for (int k = 0; k < 3; ++k)
+        edges.insert(std::minmax(topo.facetVertex(f, k), topo.facetVertex(f, (k + 1) % 3)));
+  return edges;
+}
+
+SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs);
 
 }  // namespace
 
@@ -52,6 +89,32 @@ Index FractureGeometry::numDuplicated() const {
   return n;
 }
 
+Index FractureGeometry::numOfKind(FractureNodeKind k) const {
+  return static_cast<Index>(std::count(kind.begin(), kind.end(), k));
+}
+
+double FractureGeometry::area(const std::vector<Point>& points) const {
+  double a = 0;
+  for (const auto& t : triangles)
+    a += 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+  return a;
+}
+
+double FractureGeometry::tipLineLength(const Mesh& unsplit) const {
+  if (triangles.empty()) return 0.0;
+  const auto topology = unsplit.topology();
+  const MeshTopology& topo = *topology;
+  std::map<std::pair<Index, Index>, int> uses;  // edge of the surface -> its triangles
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+  const std::set<std::pair<Index, Index>> outer = outerBoundaryEdges(topo);
+  double length = 0;
+  for (const auto& [edge, count] : uses)
+    if (count == 1 && !outer.count(edge))
+      length += (unsplit.points[edge.second] - unsplit.points[edge.first]).norm();
+  return length;
+}
+
 Index SplitMesh::numOriginalPoints() const {
   Index n = 0;
   for (Index o : origin) n = std::max(n, o + 1);
@@ -59,12 +122,9 @@ Index SplitMesh::numOriginalPoints() const {
 }
 
 SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& specs) {
+  if (mesh.dim == 3) return splitSurfaces(mesh, specs);
   const std::string& file = mesh.source;
   const Index nPoints = mesh.numPoints();
-  if (mesh.dim != 2)
-    throw InputError(file,
-                     "the mesh is 3D (tetrahedra): splitting fracture nodes of a 3D mesh "
-                     "is not supported yet; expected a 2D triangle mesh");
 
   // Triangle sides -> the (at most two) triangles they bound.
   const auto topology = mesh.topology();
@@ -258,7 +318,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       const Vector2 a = mesh.points[g.node[i == 0 ? 0 : i - 1]].head<2>();
       const Vector2 b = mesh.points[g.node[i + 1 == n ? n - 1 : i + 1]].head<2>();
       g.tangent[i] = (b - a).normalized();
-      g.normal[i] = normalFromTangent(g.tangent[i]);
+      const Vector2 normal = normalFromTangent(g.tangent[i]);
+      g.normal[i] = Point(normal.x(), normal.y(), 0.0);
       g.arclength[i] = i == 0 ? 0.0
                               : g.arclength[i - 1] + (mesh.points[g.node[i]].head<2>() -
                                                       mesh.points[g.node[i - 1]].head<2>())
@@ -271,21 +332,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     g.kind.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const Index v = g.node[i];
-      const std::vector<Index>& tris = fan[v];
-      UnionFind uf(static_cast<int>(tris.size()));
-      for (std::size_t p = 0; p < tris.size(); ++p)
-        for (Index w : mesh.cell(tris[p])) {
-          if (w == v) continue;
-          const Index side = topo.findFacet({v, w});
-          if (fractureOfEdge[side] >= 0 || topo.numCellsOf(side) != 2) continue;
-          const Index t0 = topo.cellOf(side, 0).cell, t1 = topo.cellOf(side, 1).cell;
-          const Index other = t0 == tris[p] ? t1 : t0;
-          const auto q = std::find(tris.begin(), tris.end(), other) - tris.begin();
-          uf.unite(static_cast<int>(p), static_cast<int>(q));
-        }
-      std::map<int, std::vector<Index>> groups;  // root -> triangles of one side
-      for (std::size_t p = 0; p < tris.size(); ++p)
-        groups[uf.find(static_cast<int>(p))].push_back(tris[p]);
+      const std::map<int, std::vector<Index>> groups = sidesAround(v, fan[v], topo, fractureOfEdge);
 
       if (groups.size() == 1) {
         if (nodeEdges[v].size() != 1)
@@ -379,5 +426,335 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
   }
   return out;
 }
+
+}  // namespace friction
+
+namespace friction {
+
+namespace {
+
+// 3D: fault surfaces of triangles inside a tetrahedral mesh. Same rule as in 2D (one copy per
+// group of tetrahedra around a node that stay connected through facets that contain the node
+// and are not fracture facets); the surface is checked (manifold, orientable, open, one piece)
+// and oriented first, since the sides Ω⁺ and Ω⁻ come from its orientation.
+SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs) {
+  const std::string& file = mesh.source;
+  const Index nPoints = mesh.numPoints();
+  const auto topology = mesh.topology();
+  const MeshTopology& topo = *topology;
+  auto at = [&](Index v) { return formatPoint(mesh.points[v], 3); };
+  auto triangleText = [&](Index a, Index b, Index c) { return at(a) + "-" + at(b) + "-" + at(c); };
+  if (!topo.overSharedFacets().empty()) {
+    const Index f = topo.overSharedFacets().front();
+    throw InputError(file, "the mesh is not a valid 3D tetrahedral mesh: the triangle " +
+                               triangleText(topo.facetVertex(f, 0), topo.facetVertex(f, 1),
+                                            topo.facetVertex(f, 2)) +
+                               " is a face of " + std::to_string(topo.numCellsOf(f)) +
+                               " tetrahedra (at most 2 expected)");
+  }
+  auto entry = [&](const FractureSpec& spec) {
+    return "fracture '" + spec.name + "' (label " + std::to_string(spec.label) + ")";
+  };
+  auto hasTwin = [&](Index v) {
+    for (Index w = 0; w < nPoints; ++w)
+      if (w != v && (mesh.points[w] - mesh.points[v]).norm() <= 1e-12 * (1 + mesh.points[v].norm()))
+        return true;
+    return false;
+  };
+
+  // 1. Each fracture's triangles: interior facets of the mesh, each of one fracture.
+  std::vector<std::vector<std::array<Index, 3>>> tris(specs.size());
+  std::vector<int> fractureOfFacet(static_cast<std::size_t>(topo.numFacets()), -1);
+  std::vector<int> triangleOfFacet(static_cast<std::size_t>(topo.numFacets()), -1);  // in tris
+  for (std::size_t f = 0; f < specs.size(); ++f) {
+    const FractureSpec& spec = specs[f];
+    for (Index e = 0; e < mesh.numFacets(); ++e) {
+      if (mesh.facetLabel[e] != spec.label) continue;
+      const Index a = mesh.facetVertex(e, 0), b = mesh.facetVertex(e, 1),
+                  c = mesh.facetVertex(e, 2);
+      const Index side = topo.findFacet({a, b, c});
+      if (side >= 0 && fractureOfFacet[side] >= 0) {
+        if (fractureOfFacet[side] == static_cast<int>(f)) continue;  // listed twice in one patch
+        throw InputError(spec.where, "fractures '" + specs[fractureOfFacet[side]].name + "' and '" +
+                                         spec.name + "' share the triangle " +
+                                         triangleText(a, b, c) + " of " + file +
+                                         ": a fracture patch must be listed once");
+      }
+      if (side < 0)
+        throw InputError(file, entry(spec) + ": its triangle " + triangleText(a, b, c) +
+                                   " is not a face of any tetrahedron");
+      if (topo.isBoundary(side)) {
+        if (hasTwin(a) || hasTwin(b) || hasTwin(c))
+          throw InputError(file, entry(spec) + " is already split in this mesh (its triangle " +
+                                     triangleText(a, b, c) +
+                                     " is a face of one tetrahedron and its nodes have "
+                                     "coincident copies); give splitFractureNodes the unsplit "
+                                     "mesh");
+        throw InputError(file, entry(spec) + ": its triangle " + triangleText(a, b, c) +
+                                   " lies on the outer boundary of the mesh; a fracture must be "
+                                   "inside the body (a face of two tetrahedra)");
+      }
+      fractureOfFacet[side] = static_cast<int>(f);
+      triangleOfFacet[side] = static_cast<int>(tris[f].size());
+      tris[f].push_back({a, b, c});
+    }
+    if (tris[f].empty()) throw InputError(spec.where, entry(spec) + " has no triangles in " + file);
+  }
+
+  // 2. Node -> fracture; two fractures on one node is a junction.
+  std::vector<int> fractureOfNode(static_cast<std::size_t>(nPoints), -1);
+  for (std::size_t f = 0; f < specs.size(); ++f)
+    for (const auto& t : tris[f])
+      for (Index v : t) {
+        if (fractureOfNode[v] >= 0 && fractureOfNode[v] != static_cast<int>(f))
+          throw InputError(file, "fractures '" + specs[fractureOfNode[v]].name + "' and '" +
+                                     specs[f].name + "' meet at " + at(v) +
+                                     ": junctions of fractures are not supported (mesh them so "
+                                     "that they do not meet)");
+        fractureOfNode[v] = static_cast<int>(f);
+      }
+
+  // 3. Each surface: manifold, open, orientable, one piece; oriented (SignConventions.hpp).
+  auto cross = [&](const std::array<Index, 3>& t) {
+    return Point(
+        (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]));
+  };
+  std::vector<std::map<std::pair<Index, Index>, std::vector<int>>> edgesOf(specs.size());
+  for (std::size_t f = 0; f < specs.size(); ++f) {
+    const FractureSpec& spec = specs[f];
+    std::vector<std::array<Index, 3>>& tri = tris[f];
+    const int nt = static_cast<int>(tri.size());
+
+    // Edges -> triangles: manifold (at most two per edge), open (some edge of one), one
+    // piece (connected through edges).
+    auto& edgeTris = edgesOf[f];
+    for (int i = 0; i < nt; ++i)
+      for (int k = 0; k < 3; ++k)
+        edgeTris[std::minmax(tri[i][k], tri[i][(k + 1) % 3])].push_back(i);
+    bool open = false;
+    for (const auto& [edge, list] : edgeTris) {
+      if (list.size() > 2)
+        throw InputError(file, entry(spec) + " is not a manifold surface: its edge " +
+                                   at(edge.first) + "-" + at(edge.second) + " is an edge of " +
+                                   std::to_string(list.size()) +
+                                   " of its triangles (at most 2 expected; junctions and "
+                                   "branching surfaces are not supported)");
+      open = open || list.size() == 1;
+    }
+    if (!open)
+      throw InputError(spec.where, entry(spec) + " is a closed surface in " + file +
+                                       "; only surfaces with an edge (a tip line or an edge "
+                                       "on the outer boundary) are supported");
+
+    // Orient the triangles consistently: walk across edges from the first triangle (file
+    // orientation); a neighbour must run through the shared edge the other way.
+    std::vector<int> flip(nt, -1);                    // 0 as in the file, 1 reversed
+    auto runsInFile = [&](int i, Index a, Index b) {  // does triangle i run a -> b in the file?
+      for (int k = 0; k < 3; ++k)
+        if (tri[i][k] == a && tri[i][(k + 1) % 3] == b) return true;
+      return false;
+    };
+    std::vector<int> stack{0};
+    flip[0] = 0;
+    int reached = 1;
+    while (!stack.empty()) {
+      const int i = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        // Oriented, i runs a -> b (reversed, b -> a): j must run the other way.
+        const Index a = tri[i][k], b = tri[i][(k + 1) % 3];
+        for (int j : edgeTris[std::minmax(a, b)]) {
+          if (j == i) continue;
+          const int want = (runsInFile(j, a, b) == (flip[i] == 0)) ? 1 : 0;
+          if (flip[j] < 0) {
+            flip[j] = want;
+            ++reached;
+            stack.push_back(j);
+          } else if (flip[j] != want) {
+            throw InputError(file, entry(spec) +
+                                       " is not an orientable surface (a Moebius strip?): its "
+                                       "two sides cannot be told apart; found at the edge " +
+                                       at(a) + "-" + at(b));
+          }
+        }
+      }
+    }
+    if (reached != nt) {
+      int other = 0;
+      while (flip[other] >= 0) ++other;
+      throw InputError(spec.where, entry(spec) + " is made of several pieces in " + file +
+                                       " (not joined through triangle edges): one contains " +
+                                       at(tri[0][0]) + ", another " + at(tri[other][0]) +
+                                       "; give each piece its own label and list each as a "
+                                       "fracture");
+    }
+    for (int i = 0; i < nt; ++i)
+      if (flip[i]) std::swap(tri[i][1], tri[i][2]);
+
+    // Global sign (SignConventions.hpp): the area-weighted mean normal's component of
+    // largest magnitude is negative (a tie goes to the earlier axis). Where the normals
+    // cancel exactly (mean = 0) the orientation of the first triangle in the file is kept.
+    Point mean = Point::Zero();
+    for (const auto& t : tri) mean += cross(t);
+    int axis = 0;
+    for (int c = 1; c < 3; ++c)
+      if (std::abs(mean[c]) > std::abs(mean[axis])) axis = c;
+    if (mean[axis] > 0)
+      for (auto& t : tri) std::swap(t[1], t[2]);
+  }
+
+  // 4. A tetrahedron with all four vertices on one fracture has no vertex off it.
+  for (Index t = 0; t < mesh.numCells(); ++t) {
+    const auto tet = mesh.cell(t);
+    const int f0 = fractureOfNode[tet[0]];
+    if (f0 < 0) continue;
+    bool all = true;
+    for (int k = 1; k < 4; ++k) all = all && fractureOfNode[tet[k]] == f0;
+    if (all)
+      throw InputError(file, "tetrahedron " + std::to_string(t + 1) + " " + at(tet[0]) + " " +
+                                 at(tet[1]) + " " + at(tet[2]) + " " + at(tet[3]) +
+                                 " has all four vertices on " + entry(specs[f0]) +
+                                 ", so it cannot be assigned to one side; refining the mesh "
+                                 "near the fracture (a smaller element size there) removes it");
+  }
+
+  // Node -> incident tetrahedra, for the fracture nodes only.
+  std::unordered_map<Index, std::vector<Index>> fan;
+  for (Index t = 0; t < mesh.numCells(); ++t)
+    for (Index v : mesh.cell(t))
+      if (fractureOfNode[v] >= 0) fan[v].push_back(t);
+
+  SplitMesh out;
+  out.mesh.source = mesh.source;
+  out.mesh.format = mesh.format;
+  out.mesh.dim = 3;
+  out.mesh.points = mesh.points;
+  out.mesh.cellVertices = mesh.cellVertices;
+  out.mesh.cellRegion = mesh.cellRegion;
+  out.mesh.labelNames = mesh.labelNames;
+  out.mesh.regionNames = mesh.regionNames;
+  out.origin.resize(nPoints);
+  std::iota(out.origin.begin(), out.origin.end(), 0);
+
+  for (std::size_t f = 0; f < specs.size(); ++f) {
+    const FractureSpec& spec = specs[f];
+    const std::vector<std::array<Index, 3>>& tri = tris[f];
+    const auto& edgeTris = edgesOf[f];
+    // 5. Nodes in ascending order, their normals (sum of the adjacent triangles' cross
+    //    products: area-weighted) and whether they lie on the surface's edge.
+    FractureGeometry g;
+    g.name = spec.name;
+    g.label = spec.label;
+    std::map<Index, std::size_t> local;
+    for (const auto& t : tri)
+      for (Index v : t) local.emplace(v, 0);
+    for (auto& [v, i] : local) {
+      i = g.node.size();
+      g.node.push_back(v);
+    }
+    const std::size_t n = g.node.size();
+    g.normal.assign(n, Point::Zero());
+    for (const auto& t : tri) {
+      const Point c = cross(t);
+      for (Index v : t) g.normal[local[v]] += c;
+    }
+    for (Point& p : g.normal) p.normalize();
+    std::vector<char> onEdge(n, 0);
+    for (const auto& [edge, list] : edgeTris)
+      if (list.size() == 1) onEdge[local[edge.first]] = onEdge[local[edge.second]] = 1;
+
+    // 6. Split each node: union its tetrahedra across facets through it that are not fracture
+    //    facets.
+    g.plus.resize(n);
+    g.minus.resize(n);
+    g.kind.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Index v = g.node[i];
+      const std::map<int, std::vector<Index>> groups =
+          sidesAround(v, fan[v], topo, fractureOfFacet);
+
+      if (groups.size() == 1) {
+        if (!onEdge[i])
+          throw InputError(file, entry(spec) + " at " + at(v) +
+                                     ": the tetrahedra around this node are not separated by "
+                                     "the fracture (is the mesh conforming to the fracture?)");
+        g.kind[i] = FractureNodeKind::tip;
+        g.plus[i] = g.minus[i] = v;
+        continue;
+      }
+      if (groups.size() > 2)
+        throw InputError(file, entry(spec) + " at " + at(v) +
+                                   ": the fracture cuts the tetrahedra around this node into " +
+                                   std::to_string(groups.size()) +
+                                   " groups (2 expected); the mesh is not a manifold here");
+      g.kind[i] = onEdge[i] ? FractureNodeKind::boundary : FractureNodeKind::interior;
+
+      // Which group is Ω⁺: a tetrahedron of the group with a fracture triangle through v;
+      // Ω⁺ is where its fourth vertex lies against the triangle's oriented normal.
+      int sideOf[2] = {0, 0};
+      int gi = 0;
+      for (const auto& [root, list] : groups) {
+        for (Index t : list) {
+          for (int k = 0; k < 4 && sideOf[gi] == 0; ++k) {
+            const Index side = topo.cellFacet(t, k);
+            if (fractureOfFacet[side] != static_cast<int>(f) || topo.cellVertex(t, k) == v)
+              continue;
+            const auto& tr = tri[triangleOfFacet[side]];  // oriented
+            const double s =
+                (mesh.points[topo.cellVertex(t, k)] - mesh.points[tr[0]]).dot(cross(tr));
+            sideOf[gi] = s < 0 ? +1 : -1;
+          }
+          if (sideOf[gi] != 0) break;
+        }
+        ++gi;
+      }
+      if (sideOf[0] == 0 || sideOf[1] == 0 || sideOf[0] == sideOf[1])
+        throw InputError(file, entry(spec) + " at " + at(v) +
+                                   ": cannot tell the two sides of the fracture apart (folded "
+                                   "or inverted tetrahedra next to it?)");
+
+      // The Ω⁺ copy keeps the node number; the Ω⁻ copy is appended.
+      const Index copy = static_cast<Index>(out.mesh.points.size());
+      out.mesh.points.push_back(mesh.points[v]);
+      out.origin.push_back(v);
+      gi = 0;
+      for (const auto& [root, list] : groups) {
+        if (sideOf[gi++] < 0)
+          for (Index t : list)
+            for (Index& x : out.mesh.cell(t))
+              if (x == v) x = copy;
+      }
+      g.plus[i] = v;
+      g.minus[i] = copy;
+    }
+    g.triangles = tri;
+    out.fractures.push_back(std::move(g));
+  }
+
+  // 7. Boundary patches follow the copies their tetrahedron uses.
+  for (Index e = 0; e < mesh.numFacets(); ++e) {
+    const auto fv = mesh.facet(e);
+    const Index side = topo.findFacet({fv[0], fv[1], fv[2]});
+    if (side >= 0 && fractureOfFacet[side] >= 0) continue;
+    if (side < 0)
+      throw InputError(file, "triangle " + triangleText(fv[0], fv[1], fv[2]) + " with label " +
+                                 std::to_string(mesh.facetLabel[e]) +
+                                 " is not a face of any tetrahedron");
+    const Index t = topo.cellOf(side, 0).cell;
+    const auto orig = mesh.cell(t);
+    const auto split = out.mesh.cell(t);
+    std::array<Index, 3> ne{fv[0], fv[1], fv[2]};
+    for (Index& x : ne)
+      for (int k = 0; k < 4; ++k)
+        if (orig[k] == x) {
+          x = split[k];
+          break;
+        }
+    out.mesh.addFacet({ne[0], ne[1], ne[2]}, mesh.facetLabel[e]);
+  }
+  return out;
+}
+
+}  // namespace
 
 }  // namespace friction

@@ -1,9 +1,12 @@
 // Splitting mesh nodes along fractures (docs/method.md): every node on a fracture gets one copy
-// per group of its triangles that stay connected once the mesh is cut along the fracture
-// edges. A tip inside the body therefore stays single (the jump vanishes there); a node
-// where a fracture reaches the outer boundary is duplicated. Signs: SignConventions.hpp.
+// per group of its cells (triangles in 2D, tetrahedra in 3D) that stay connected once the mesh
+// is cut along the fracture facets (edges in 2D, triangles in 3D). A tip inside the body (a
+// point in 2D, the tip line of a fault surface in 3D) therefore stays single (the jump
+// vanishes there); a node where a fracture reaches the outer boundary is duplicated. Signs:
+// SignConventions.hpp.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -22,29 +25,46 @@ struct FractureSpec {
 
 /// How a fracture node relates to the rest of the mesh.
 enum class FractureNodeKind {
-  interior,  ///< between two fracture edges: duplicated
-  boundary,  ///< an end of the fracture on the outer boundary: duplicated
-  tip        ///< an end inside the body: single (plus == minus)
+  interior,  ///< inside the fracture (2D: between two fracture edges): duplicated
+  boundary,  ///< on the fracture's edge (2D: an end) where it meets the outer boundary:
+             ///< duplicated
+  tip        ///< on the fracture's edge inside the body (2D: an end; 3D: the tip line):
+             ///< single (plus == minus)
 };
 const char* toString(FractureNodeKind kind);
 
-/// One fracture of the split mesh; every array has one entry per fracture node, in
-/// arclength order.
+/// One fracture of the split mesh; every per-node array has one entry per fracture node. Node
+/// order: 2D, along the curve (arclength order, SignConventions.hpp); 3D, by ascending node
+/// number of the unsplit mesh. The Ω⁺ copy keeps the unsplit node number (plus == node).
 struct FractureGeometry {
   std::string name;
   int label = 0;
-  std::vector<Index> node;        ///< node number in the unsplit mesh
-  std::vector<Index> plus;        ///< copy used by triangles in Ω⁺ (split-mesh node number)
-  std::vector<Index> minus;       ///< copy used by triangles in Ω⁻ (== plus at tips)
-  std::vector<Vector2> normal;    ///< unit n_Γ, from Ω⁺ to Ω⁻
-  std::vector<Vector2> tangent;   ///< unit t_Γ, along growing arclength
-  std::vector<double> arclength;  ///< s, from 0 at the first node [length units of the mesh]
+  std::vector<Index> node;       ///< node number in the unsplit mesh
+  std::vector<Index> plus;       ///< copy used by cells in Ω⁺ (split-mesh node number)
+  std::vector<Index> minus;      ///< copy used by cells in Ω⁻ (== plus at tips)
+  std::vector<Point> normal;     ///< unit n_Γ, from Ω⁺ to Ω⁻ (z = 0 in 2D)
+  std::vector<Vector2> tangent;  ///< 2D: unit t_Γ, along growing arclength; 3D: empty
+  /// 2D: s, from 0 at the first node [length units of the mesh]; 3D: empty (no curve to
+  /// walk).
+  std::vector<double> arclength;
   std::vector<FractureNodeKind> kind;
+  /// 3D: the fracture's triangles, by unsplit node numbers (== their Ω⁺ copies), ordered so
+  /// that the right-hand normal (b − a) × (c − a) is n_Γ. 2D: empty (the edges join
+  /// consecutive nodes).
+  std::vector<std::array<Index, 3>> triangles;
 
   Index numNodes() const { return static_cast<Index>(node.size()); }
+  /// 2D: the length of the curve; 3D: 0 (see area() and tipLineLength()).
   double length() const { return arclength.empty() ? 0.0 : arclength.back(); }
   Index numTips() const;
   Index numDuplicated() const;
+  Index numOfKind(FractureNodeKind kind) const;
+  /// 3D: the area of the triangles (points: the mesh's or the split mesh's, whose first
+  /// points are the unsplit ones). 0 in 2D.
+  double area(const std::vector<Point>& points) const;
+  /// 3D: the length of the tip line: the edges of the surface's own boundary (edges of one of
+  /// its triangles) that are not edges of a boundary face of the unsplit mesh. 0 in 2D.
+  double tipLineLength(const Mesh& unsplit) const;
 };
 
 /// What a split mesh was made from, so that the solver can refuse one made from another mesh
@@ -59,9 +79,9 @@ struct SplitMeshRecord {
 };
 
 /// A mesh whose fracture nodes are split. mesh.points holds the unsplit points first (the Ω⁺
-/// copy keeps the original number) and the Ω⁻ copies after them; mesh.facetVertices holds the
-/// boundary patches only (fracture edges live in `fractures`), renumbered to the copies their
-/// triangle uses.
+/// copy keeps the original number) and the Ω⁻ copies after them (by fracture, then in the
+/// fracture's node order); mesh.facetVertices holds the boundary patches only (fracture facets
+/// live in `fractures`), renumbered to the copies their cell uses.
 struct SplitMesh {
   Mesh mesh;
   std::vector<Index> origin;  ///< per split-mesh node, its node number in the unsplit mesh
@@ -73,11 +93,13 @@ struct SplitMesh {
 };
 
 /// Split the mesh along the given fractures. Refuses, with an InputError naming the mesh file
-/// (and the FractureSpec's location where it helps): a fracture with no edges; branching
-/// edges or fractures that meet (junctions are not supported); a fracture made of several
-/// disjoint curves or of a closed curve; a triangle whose three vertices all lie on one
-/// fracture; a fracture edge that is not a side of two triangles (already split, or on the
-/// outer boundary).
+/// (and the FractureSpec's location where it helps):
+/// * both dimensions: a fracture with no facets; a cell whose vertices all lie on one
+///   fracture; a fracture facet that is not a facet of two cells (already split, or on the
+///   outer boundary); fractures that meet (junctions are not supported);
+/// * 2D: branching edges; a fracture made of several disjoint curves or of a closed curve;
+/// * 3D: a non-manifold surface (an edge of more than two of its triangles); a non-orientable
+///   one; a closed one; one made of several pieces (not joined through edges).
 SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& fractures);
 
 }  // namespace friction

@@ -33,6 +33,59 @@ const char* const resplit =
     " (constant/splitMesh is written by splitFractureNodes: split again with "
     "splitFractureNodes -case <case> -overwrite)";
 
+// The 3D part of a fracture's entry (after node, plus, minus, kind): unit normals and the
+// triangles, each a face of the split mesh through its plus copies and through its minus
+// copies (the two lips of the cut).
+template <class IsFace>
+void readSurface(const Dictionary& f, FractureGeometry& g, const SplitMesh& s,
+                 const IsFace& isFace) {
+  g.normal = f.getPointList("normal");
+  const std::size_t n = g.node.size();
+  for (const auto& [key, size] : std::map<std::string, std::size_t>{{"plus", g.plus.size()},
+                                                                    {"minus", g.minus.size()},
+                                                                    {"kind", g.kind.size()},
+                                                                    {"normal", g.normal.size()}})
+    if (size != n)
+      f.fail(key, "key '" + key + "': " + std::to_string(size) +
+                      " entries, expected one per fracture node (" + std::to_string(n) + ")");
+  std::map<Index, std::size_t> local;  // plus copy -> fracture node
+  for (std::size_t i = 0; i < n; ++i) {
+    if (s.origin[g.plus[i]] != g.node[i] || s.origin[g.minus[i]] != g.node[i])
+      f.fail("plus", "fracture node " + std::to_string(i) +
+                         ": 'plus' and 'minus' must be copies of 'node' (see 'origin')");
+    if ((g.plus[i] == g.minus[i]) != (g.kind[i] == FractureNodeKind::tip))
+      f.fail("kind",
+             "fracture node " + std::to_string(i) + ": exactly the tips have plus == minus");
+    if (!(std::abs(g.normal[i].norm() - 1) <= 1e-9))
+      f.fail("normal", "fracture node " + std::to_string(i) + ": 'normal' must be a unit vector" +
+                           std::string(resplit));
+    if (!local.emplace(g.plus[i], i).second)
+      f.fail("node",
+             "fracture node " + std::to_string(i) + ": listed twice" + std::string(resplit));
+  }
+  if (n < 3) f.fail("node", "key 'node': expected at least three fracture nodes (one triangle)");
+  for (const auto& t : f.getIntTupleList<3>("triangles")) {
+    std::array<std::size_t, 3> k{};
+    for (int j = 0; j < 3; ++j) {
+      const auto it = local.find(static_cast<Index>(t[j]));
+      if (it == local.end())
+        f.fail("triangles", "key 'triangles': " + std::to_string(t[j]) +
+                                " is not the plus copy of a node of this fracture" +
+                                std::string(resplit));
+      k[j] = it->second;
+    }
+    if (!isFace(g.plus[k[0]], g.plus[k[1]], g.plus[k[2]]) ||
+        !isFace(g.minus[k[0]], g.minus[k[1]], g.minus[k[2]]))
+      f.fail("triangles", "key 'triangles': (" + std::to_string(t[0]) + " " + std::to_string(t[1]) +
+                              " " + std::to_string(t[2]) +
+                              "): its 'plus' and its 'minus' copies must each be a face of a "
+                              "tetrahedron (the two sides of the cut)" +
+                              std::string(resplit));
+    g.triangles.push_back({g.plus[k[0]], g.plus[k[1]], g.plus[k[2]]});
+  }
+  if (g.triangles.empty()) f.fail("triangles", "key 'triangles': expected at least one triangle");
+}
+
 }  // namespace
 
 void writeSplitMesh(const SplitMesh& split, const std::string& path, int precision) {
@@ -42,31 +95,55 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
   w.setPrecision(precision);
   w.entryString("source", m.source);
   w.entryString("format", m.format);
-  FRICTION_ASSERT(m.dim == 2, "writeSplitMesh: a split mesh is 2D (the splitter refuses 3D)");
-  std::vector<Vector2> points;
-  points.reserve(m.points.size());
-  for (const Point& p : m.points) points.push_back(p.head<2>());
-  w.entry("points", points);
+  FRICTION_ASSERT(m.dim == 2 || m.dim == 3, "writeSplitMesh: a mesh is 2D or 3D");
+  const bool is3D = m.dim == 3;
+  if (is3D) {
+    // A 2D file has no 'dimension' (2 when absent), so that it reads as before.
+    w.entry("dimension", 3);
+    w.entry("points", m.points);
+  } else {
+    std::vector<Vector2> points;
+    points.reserve(m.points.size());
+    for (const Point& p : m.points) points.push_back(p.head<2>());
+    w.entry("points", points);
+  }
   w.entry("origin", toInts(split.origin));
-  std::vector<std::array<int, 3>> tris;
-  tris.reserve(m.cellRegion.size());
-  for (Index t = 0; t < m.numCells(); ++t)
-    tris.push_back({m.cellVertex(t, 0), m.cellVertex(t, 1), m.cellVertex(t, 2)});
-  w.entry("triangles", tris);
+  if (is3D) {
+    std::vector<std::array<int, 4>> tets;
+    tets.reserve(m.cellRegion.size());
+    for (Index t = 0; t < m.numCells(); ++t)
+      tets.push_back(
+          {m.cellVertex(t, 0), m.cellVertex(t, 1), m.cellVertex(t, 2), m.cellVertex(t, 3)});
+    w.entry("tetrahedra", tets);
+  } else {
+    std::vector<std::array<int, 3>> tris;
+    tris.reserve(m.cellRegion.size());
+    for (Index t = 0; t < m.numCells(); ++t)
+      tris.push_back({m.cellVertex(t, 0), m.cellVertex(t, 1), m.cellVertex(t, 2)});
+    w.entry("triangles", tris);
+  }
   w.entry("regions", m.cellRegion);
 
   w.beginDict("patches");
   for (const auto& [label, name] : m.labelNames) {
-    std::vector<std::array<int, 2>> edges;
-    for (Index e = 0; e < m.numFacets(); ++e)
-      if (m.facetLabel[e] == label) edges.push_back({m.facetVertex(e, 0), m.facetVertex(e, 1)});
     const bool isFracture =
         std::any_of(split.fractures.begin(), split.fractures.end(),
                     [&, l = label](const FractureGeometry& g) { return g.label == l; });
-    if (isFracture) continue;  // its edges live in 'fractures'
+    if (isFracture) continue;  // its facets live in 'fractures'
     w.beginDict(name);
     w.entry("label", label);
-    w.entry("edges", edges);
+    if (is3D) {
+      std::vector<std::array<int, 3>> triangles;
+      for (Index e = 0; e < m.numFacets(); ++e)
+        if (m.facetLabel[e] == label)
+          triangles.push_back({m.facetVertex(e, 0), m.facetVertex(e, 1), m.facetVertex(e, 2)});
+      w.entry("triangles", triangles);
+    } else {
+      std::vector<std::array<int, 2>> edges;
+      for (Index e = 0; e < m.numFacets(); ++e)
+        if (m.facetLabel[e] == label) edges.push_back({m.facetVertex(e, 0), m.facetVertex(e, 1)});
+      w.entry("edges", edges);
+    }
     w.endDict();
   }
   w.endDict();
@@ -81,9 +158,18 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
     std::vector<std::string> kinds;
     for (FractureNodeKind k : g.kind) kinds.push_back(toString(k));
     w.entryWords("kind", kinds);
-    w.entry("arclength", g.arclength);
-    w.entry("normal", g.normal);
-    w.entry("tangent", g.tangent);
+    if (is3D) {
+      w.entry("normal", g.normal);
+      std::vector<std::array<int, 3>> triangles;
+      for (const auto& t : g.triangles) triangles.push_back({t[0], t[1], t[2]});
+      w.entry("triangles", triangles);
+    } else {
+      w.entry("arclength", g.arclength);
+      std::vector<Vector2> normal;
+      for (const Point& p : g.normal) normal.push_back(p.head<2>());
+      w.entry("normal", normal);
+      w.entry("tangent", g.tangent);
+    }
     w.endDict();
   }
   w.endDict();
@@ -104,7 +190,20 @@ SplitMesh readSplitMesh(const std::string& path) {
   Mesh& m = s.mesh;
   m.source = dict.getWord("source");
   m.format = dict.getWord("format");
-  for (const Vector2& p : dict.getVectorList("points")) m.points.emplace_back(p.x(), p.y(), 0.0);
+  m.dim = 2;
+  if (dict.found("dimension")) {
+    const long d = dict.getInt("dimension", Bounds::nonNegative());
+    if (d != 2 && d != 3)
+      dict.fail("dimension", "key 'dimension': " + std::to_string(d) + " (expected 2 or 3)");
+    m.dim = static_cast<int>(d);
+  }
+  const bool is3D = m.dim == 3;
+  const char* const cellKey = is3D ? "tetrahedra" : "triangles";
+  const std::string cell = cellName(m.dim);
+  if (is3D)
+    m.points = dict.getPointList("points");
+  else
+    for (const Vector2& p : dict.getVectorList("points")) m.points.emplace_back(p.x(), p.y(), 0.0);
   const Index nPoints = m.numPoints();
 
   auto checkIndex = [&](const Dictionary& d, const std::string& key, long i) -> Index {
@@ -130,35 +229,43 @@ SplitMesh readSplitMesh(const std::string& path) {
                               std::to_string(numOriginal - 1) +
                               " (the unsplit points come first, each its own origin)" + resplit);
 
-  for (const auto& t : dict.getIntTupleList<3>("triangles")) {
-    m.cellVertices.insert(m.cellVertices.end(),
-                          {checkIndex(dict, "triangles", t[0]), checkIndex(dict, "triangles", t[1]),
-                           checkIndex(dict, "triangles", t[2])});
-    const double area = m.signedMeasure(m.numCells() - 1);
-    if (!std::isfinite(area))
-      dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numCells() - 1) +
-                                 " has an area that is not a finite number (coordinates too "
-                                 "large in 'points'?)");
-    if (!(area > 0))
-      dict.fail("triangles", "key 'triangles': triangle " + std::to_string(m.numCells() - 1) +
-                                 " is clockwise or degenerate (expected counter-clockwise)");
-  }
+  auto addCell = [&](std::initializer_list<long> t) {
+    for (long v : t) m.cellVertices.push_back(checkIndex(dict, cellKey, v));
+    const double measure = m.signedMeasure(m.numCells() - 1);
+    const std::string which =
+        "key '" + std::string(cellKey) + "': " + cell + " " + std::to_string(m.numCells() - 1);
+    if (!std::isfinite(measure))
+      dict.fail(cellKey, which + " has " + (is3D ? "a volume" : "an area") +
+                             " that is not a finite number (coordinates too large in "
+                             "'points'?)");
+    if (!(measure > 0))
+      dict.fail(cellKey, which + (is3D ? " is inverted or degenerate (expected a positive "
+                                         "volume)"
+                                       : " is clockwise or degenerate (expected "
+                                         "counter-clockwise)"));
+  };
+  if (is3D)
+    for (const auto& t : dict.getIntTupleList<4>("tetrahedra")) addCell({t[0], t[1], t[2], t[3]});
+  else
+    for (const auto& t : dict.getIntTupleList<3>("triangles")) addCell({t[0], t[1], t[2]});
   if (m.cellVertices.empty())
-    dict.fail("triangles", "key 'triangles': expected at least one triangle");
+    dict.fail(cellKey, "key '" + std::string(cellKey) + "': expected at least one " + cell);
   {
-    std::vector<std::pair<std::array<Index, 3>, Index>> sorted;
+    const int nv = m.verticesPerCell();
+    std::vector<std::pair<std::array<Index, 4>, Index>> sorted;
     for (Index t = 0; t < m.numCells(); ++t) {
-      std::array<Index, 3> k{m.cellVertex(t, 0), m.cellVertex(t, 1), m.cellVertex(t, 2)};
-      std::sort(k.begin(), k.end());
+      std::array<Index, 4> k{-1, -1, -1, -1};
+      for (int j = 0; j < nv; ++j) k[j] = m.cellVertex(t, j);
+      std::sort(k.begin(), k.begin() + nv);
       sorted.emplace_back(k, t);
     }
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t i = 1; i < sorted.size(); ++i)
       if (sorted[i].first == sorted[i - 1].first)
-        dict.fail("triangles",
-                  "key 'triangles': triangles " + std::to_string(sorted[i - 1].second) + " and " +
-                      std::to_string(sorted[i].second) +
-                      " have the same vertices (expected each triangle once)" + resplit);
+        dict.fail(cellKey, "key '" + std::string(cellKey) + "': " + cell + "s " +
+                               std::to_string(sorted[i - 1].second) + " and " +
+                               std::to_string(sorted[i].second) + " have the same vertices " +
+                               "(expected each " + cell + " once)" + resplit);
   }
   // A point no triangle uses would be a node without stiffness (and no row in the
   // split-to-unsplit map the solver builds cell by cell).
@@ -166,17 +273,18 @@ SplitMesh readSplitMesh(const std::string& path) {
   for (Index v : m.cellVertices) used[v] = 1;
   for (Index i = 0; i < nPoints; ++i)
     if (!used[i])
-      dict.fail("points", "key 'points': point " + std::to_string(i) +
-                              " is used by no triangle (expected every point to be a vertex of "
-                              "a triangle)" +
-                              resplit);
+      dict.fail("points", "key 'points': point " + std::to_string(i) + " is used by no " + cell +
+                              " (expected every point to be a vertex of a " + cell + ")" + resplit);
   // Built here once, kept by the mesh for the solver (boundary conditions, FE spaces).
   const auto topology = m.topology();
   const auto isSide = [&](Index a, Index b) { return topology->findFacet({a, b}) >= 0; };
+  const auto isFace = [&](Index a, Index b, Index c) {
+    return topology->findFacet({a, b, c}) >= 0;
+  };
   for (long r : dict.getIntList("regions")) m.cellRegion.push_back(static_cast<int>(r));
   if (static_cast<Index>(m.cellRegion.size()) != m.numCells())
     dict.fail("regions", "key 'regions': " + std::to_string(m.cellRegion.size()) +
-                             " entries, expected one per triangle (" +
+                             " entries, expected one per " + cell + " (" +
                              std::to_string(m.numCells()) + ")");
 
   const Dictionary& patches = dict.subDict("patches");
@@ -184,6 +292,20 @@ SplitMesh readSplitMesh(const std::string& path) {
     const Dictionary& p = patches.subDict(name);
     const int label = static_cast<int>(p.getInt("label", Bounds::nonNegative()));
     m.labelNames[label] = name;
+    if (is3D) {
+      for (const auto& e : p.getIntTupleList<3>("triangles")) {
+        const Index a = checkIndex(p, "triangles", e[0]), b = checkIndex(p, "triangles", e[1]),
+                    c = checkIndex(p, "triangles", e[2]);
+        m.addFacet({a, b, c}, label);
+        if (!isFace(a, b, c))
+          p.fail("triangles", "key 'triangles': the triangle (" + std::to_string(e[0]) + " " +
+                                  std::to_string(e[1]) + " " + std::to_string(e[2]) +
+                                  ") is not a face of any tetrahedron (expected the patch's "
+                                  "triangles to be tetrahedron faces)" +
+                                  resplit);
+      }
+      continue;
+    }
     for (const auto& e : p.getIntTupleList<2>("edges")) {
       const Index a = checkIndex(p, "edges", e[0]), b = checkIndex(p, "edges", e[1]);
       m.addFacet({a, b}, label);
@@ -218,10 +340,15 @@ SplitMesh readSplitMesh(const std::string& path) {
                            "' is not a node kind (expected interior, "
                            "boundary or tip)");
     }
-    g.arclength = f.getScalarList("arclength");
-    g.normal = f.getVectorList("normal");
-    g.tangent = f.getVectorList("tangent");
     const std::size_t n = g.node.size();
+    if (is3D) {
+      readSurface(f, g, s, isFace);
+      s.fractures.push_back(std::move(g));
+      continue;
+    }
+    g.arclength = f.getScalarList("arclength");
+    for (const Vector2& v : f.getVectorList("normal")) g.normal.emplace_back(v.x(), v.y(), 0.0);
+    g.tangent = f.getVectorList("tangent");
     for (const auto& [key, size] :
          std::map<std::string, std::size_t>{{"plus", g.plus.size()},
                                             {"minus", g.minus.size()},
@@ -243,7 +370,7 @@ SplitMesh readSplitMesh(const std::string& path) {
       const double tol = 1e-9;
       if (!(std::abs(g.tangent[i].norm() - 1) <= tol) ||
           !(std::abs(g.normal[i].norm() - 1) <= tol) ||
-          !((g.normal[i] - normalFromTangent(g.tangent[i])).norm() <= tol))
+          !((g.normal[i].head<2>() - normalFromTangent(g.tangent[i])).norm() <= tol))
         f.fail("normal", "fracture node " + std::to_string(i) +
                              ": 'normal' and 'tangent' must be unit vectors with normal = "
                              "(t_y, -t_x) (SignConventions.hpp)" +

@@ -34,7 +34,7 @@ Topology topologyOf(const Mesh& mesh, int fractureLabel) {
              g.kind.back(),
              g.length(),
              test::connectedComponents(s.mesh),
-             g.normal[g.numNodes() / 2],
+             g.normal[g.numNodes() / 2].head<2>(),
              {}};
   for (std::size_t e = 0; e < s.mesh.facetLabel.size(); ++e)
     t.patchLength[s.mesh.labelNames.at(s.mesh.facetLabel[e])] +=

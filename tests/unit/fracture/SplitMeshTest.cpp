@@ -32,7 +32,8 @@ void checkSides(const SplitMesh& s) {
         const auto& tri = s.mesh.cell(t);
         for (Index v : tri) {
           if (s.origin[v] != g.node[i]) continue;
-          const double side = (centroid(s.mesh, t) - s.mesh.points[v].head<2>()).dot(g.normal[i]);
+          const double side =
+              (centroid(s.mesh, t) - s.mesh.points[v].head<2>()).dot(g.normal[i].head<2>());
           if (g.plus[i] == g.minus[i]) continue;  // a tip serves both sides
           if (side < -1e-12) {
             CHECK(v == g.plus[i]);
@@ -155,7 +156,7 @@ TEST_CASE("an inclined fracture has a consistent unit normal pointing from plus 
   REQUIRE(g.numNodes() == 5);
   for (Index i = 0; i < g.numNodes(); ++i) {
     CHECK(g.normal[i].norm() == Approx(1.0));
-    CHECK(g.normal[i].dot(g.tangent[i]) == Approx(0.0).margin(1e-15));
+    CHECK(g.normal[i].head<2>().dot(g.tangent[i]) == Approx(0.0).margin(1e-15));
     // t = (−n_y, n_x)
     CHECK(g.tangent[i].x() == Approx(-g.normal[i].y()));
     CHECK(g.tangent[i].y() == Approx(g.normal[i].x()));
