@@ -268,8 +268,8 @@ PY
   ((rc == 0)) || fail "current split mesh: exit code $rc"
   ;;
 tetrahedralMesh)
-  # A 3D mesh (gmsh -3, a cube with an embedded fault square) is read and checked, and its
-  # summary printed; splitting it is refused (exit 1, nothing written).
+  # A 3D mesh (gmsh -3, a cube with an embedded fault square) is read, checked, split and
+  # summarised; frictionSolver refuses the 3D split mesh.
   copyCase paperBenchmark; c=$work/paperBenchmark
   cat >"$c/constant/mesh/cube.geo" <<'GEO'
 lc = 0.5;
@@ -292,13 +292,32 @@ GEO
     -e '/^patches/,/^}/c\patches { outside 1; fault 5; }' -e 's/^fractures .*/fractures (fault);/' \
     "$c/system/meshDict"
   run -case "$c"
-  ((rc == 1)) || fail "exit code $rc (expected 1)"
+  ((rc == 0)) || fail "exit code $rc"
   expect "$out" "(gmsh .msh 4.1, 3D)"
   expect "$out" "volume:      1"
   expect "$out" "fault           5"
   expect "$out" "unlabelled boundary triangles: 0"
-  expect "$out" "cube.msh: the mesh is 3D (tetrahedra): splitting fracture nodes of a 3D mesh is not supported yet"
-  [[ -e $c/constant/splitMesh ]] && fail "constant/splitMesh written"
+  # The square [1/4, 3/4]² at z = 1/2 lies inside the cube: its rim is the tip line (single
+  # nodes), only its inner nodes are duplicated; n_Γ = (0, 0, −1) (Ω⁺ above).
+  expect "$out" "Fracture fault (label 5)"
+  expect "$out" "area:         0.25"
+  expect "$out" "tip line:     2 (length of its edge inside the body)"
+  expect "$out" "boundary 0; tips"
+  expect "$out" "normal:       (0 0 -1) area-weighted mean"
+  line=$(grep "nodes:" <<<"$out" | head -1)
+  [[ $line =~ nodes:\ +([0-9]+)\ \(duplicated\ ([0-9]+):\ interior\ ([0-9]+),\ boundary\ 0\;\ tips\ ([0-9]+)\) ]] ||
+    fail "bad nodes line: $line"
+  ((BASH_REMATCH[1] == BASH_REMATCH[2] + BASH_REMATCH[4] && BASH_REMATCH[2] == BASH_REMATCH[3] &&
+    BASH_REMATCH[2] > 0 && BASH_REMATCH[4] > 0)) || fail "node counts do not add up: $line"
+  line=$(grep -A2 "^Split mesh" <<<"$out" | grep "points:")
+  [[ $line == *"(+${BASH_REMATCH[2]})"* ]] || fail "split mesh points: $line"
+  [[ -f $c/constant/splitMesh ]] || fail "constant/splitMesh not written"
+  grep -q "^dimension *3;" "$c/constant/splitMesh" || fail "constant/splitMesh lacks 'dimension 3;'"
+  # The solver refuses a 3D split mesh at the start (exit 1, nothing written).
+  solve -case "$c"
+  ((rc == 1)) || fail "frictionSolver on a 3D split mesh: exit code $rc (expected 1)"
+  expect "$out" "is a 3D split mesh"
+  [[ -n $(timeFolders "$c") ]] && fail "frictionSolver wrote a time folder"
   # The work folders hold 2D results that are compared across builds: leave none here.
   rm -rf "$work"/*
   ;;

@@ -116,38 +116,48 @@ void printFractures3D(const Mesh& mesh, const SplitMesh& split) {
             << "    volume:     " << s.mesh.totalMeasure() << "\n\n";
 }
 
-// 3D: volumes, patch areas, and per fault surface its area, tip-line length and nodes.
-void printSummary3D(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {
+// 3D: what was read (sizes, patches), before the fault surfaces.
+void printSummary3(const Mesh& mesh) {
+  const CellSizes sizes = cellSizes(mesh);
+  const auto centroid = [&](Index c) {
+    Point x = Point::Zero();
+    for (Index v : mesh.cell(c)) x += mesh.points[v] / 4.0;
+    return formatPoint(x, 3);
+  };
   std::cout << std::setprecision(6);
-  std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ")\n"
-            << "    points:     " << mesh.numPoints() << "\n"
-            << "    tetrahedra: " << mesh.numCells() << "\n"
-            << "    volume:     " << mesh.totalMeasure() << "\n\n";
-
+  std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ", 3D)\n"
+            << "    points:      " << mesh.numPoints() << "\n"
+            << "    tetrahedra:  " << mesh.numCells() << "\n"
+            << "    volume:      " << sizes.total << "\n"
+            << "    smallest:    " << sizes.smallest << " at " << centroid(sizes.smallestCell)
+            << "\n"
+            << "    largest:     " << sizes.largest << " at " << centroid(sizes.largestCell)
+            << "\n\n";
   std::cout << "Patches\n    " << std::left << std::setw(16) << "name" << std::setw(8) << "label"
-            << std::setw(11) << "triangles" << std::setw(14) << "area"
-            << "type\n";
+            << std::setw(11) << "triangles"
+            << "area\n";
   for (const auto& [label, name] : mesh.labelNames) {
     int count = 0;
     double area = 0;
     for (Index e = 0; e < mesh.numFacets(); ++e)
       if (mesh.facetLabel[e] == label) {
         ++count;
-        const Point& a = mesh.points[mesh.facetVertex(e, 0)];
-        area += 0.5 * (mesh.points[mesh.facetVertex(e, 1)] - a)
-                          .cross(mesh.points[mesh.facetVertex(e, 2)] - a)
+        const auto v = mesh.facet(e);
+        area += 0.5 * (mesh.points[v[1]] - mesh.points[v[0]])
+                          .cross(mesh.points[v[2]] - mesh.points[v[0]])
                           .norm();
       }
     std::cout << "    " << std::setw(16) << name << std::setw(8) << label << std::setw(11) << count
-              << std::setw(14) << area << (fractureLabels.count(label) ? "fracture" : "boundary")
-              << "\n";
+              << area << "\n";
   }
   std::cout << std::right << "\n";
-  printFractures3D(mesh, split);
 }
 
 void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {
-  if (mesh.dim == 3) return printSummary3D(mesh, split, fractureLabels);
+  if (mesh.dim == 3) {
+    printSummary3(mesh);
+    return printFractures3D(mesh, split);
+  }
   std::cout << std::setprecision(6);
   std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ")\n"
             << "    points:    " << mesh.numPoints() << "\n"
@@ -203,43 +213,6 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
             << "    area:      " << s.mesh.totalMeasure() << "\n\n";
 }
 
-// A 3D mesh is read and checked, but not split yet: what was read, before the refusal.
-void printSummary3(const Mesh& mesh) {
-  const CellSizes sizes = cellSizes(mesh);
-  const auto centroid = [&](Index c) {
-    Point x = Point::Zero();
-    for (Index v : mesh.cell(c)) x += mesh.points[v] / 4.0;
-    return formatPoint(x, 3);
-  };
-  std::cout << std::setprecision(6);
-  std::cout << "Mesh: " << mesh.source << " (" << mesh.format << ", 3D)\n"
-            << "    points:      " << mesh.numPoints() << "\n"
-            << "    tetrahedra:  " << mesh.numCells() << "\n"
-            << "    volume:      " << sizes.total << "\n"
-            << "    smallest:    " << sizes.smallest << " at " << centroid(sizes.smallestCell)
-            << "\n"
-            << "    largest:     " << sizes.largest << " at " << centroid(sizes.largestCell)
-            << "\n\n";
-  std::cout << "Patches\n    " << std::left << std::setw(16) << "name" << std::setw(8) << "label"
-            << std::setw(11) << "triangles"
-            << "area\n";
-  for (const auto& [label, name] : mesh.labelNames) {
-    int count = 0;
-    double area = 0;
-    for (Index e = 0; e < mesh.numFacets(); ++e)
-      if (mesh.facetLabel[e] == label) {
-        ++count;
-        const auto v = mesh.facet(e);
-        area += 0.5 * (mesh.points[v[1]] - mesh.points[v[0]])
-                          .cross(mesh.points[v[2]] - mesh.points[v[0]])
-                          .norm();
-      }
-    std::cout << "    " << std::setw(16) << name << std::setw(8) << label << std::setw(11) << count
-              << area << "\n";
-  }
-  std::cout << std::right << "\n";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -288,10 +261,6 @@ int main(int argc, char** argv) {
 
     // 6. Split, summarise, write (atomically: a failed run leaves no output). A 3D mesh is
     //    summarised and checked; splitFractures then refuses it (not supported yet).
-    if (mesh.dim == 3) {
-      printSummary3(mesh);
-      printChecks(mesh, settings, findings);
-    }
     SplitMesh split = splitFractures(mesh, specs);
     split.madeFrom = std::move(madeFrom);
     std::set<int> fractureLabels;

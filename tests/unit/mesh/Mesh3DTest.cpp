@@ -264,13 +264,7 @@ TEST_CASE("mesh 3D: what cannot do 3D yet refuses a 3D mesh with an InputError",
   TempDir dir;
   const Mesh m = readMesh(dir.write("cube.mesh", medit()));
   const std::string path = dir.file("cube.mesh");
-  try {
-    splitFractures(m, {{"fault", 7, {}}});
-    FAIL("splitFractures should refuse a 3D mesh");
-  } catch (const InputError& e) {
-    CHECK(e.location().file == path);
-    CHECK_THAT(e.message(), Catch::Contains("not supported yet"));
-  }
+  // splitFractures splits 3D meshes (tests/unit/fracture/SplitMesh3DTest.cpp).
   try {
     LagrangeSpace space(m, 1);
     (void)space;
