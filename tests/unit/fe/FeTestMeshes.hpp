@@ -9,9 +9,18 @@
 #include <stdexcept>
 #include <string>
 
+#include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/mesh/Mesh.hpp"
 
 namespace friction::test {
+
+/// A 2D field as the assembler's VectorField (z ignored on the way in, 0 on the way out).
+inline VectorField planar(std::function<Vector2(const Vector2&)> f) {
+  return [f](const Point& p) {
+    const Vector2 v = f(p.head<2>());
+    return Point(v.x(), v.y(), 0.0);
+  };
+}
 
 /// Deterministic value in [−0.5, 0.5] for node k (a hash, not a random generator, so that
 /// the meshes do not depend on the standard library's engines).
