@@ -83,7 +83,10 @@ Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V, const Mate
   }
   std::vector<Index> adjStart(static_cast<std::size_t>(nn) + 1, 0);
   std::vector<Index> adj;
-  adj.reserve(static_cast<std::size_t>(nn) * (npc == 3 ? 7 : 12));
+  // Typical node degrees (the node itself included): P1 / P2 triangles 7 / 12, tetrahedra 15 /
+  // about 30; only a capacity hint.
+  adj.reserve(static_cast<std::size_t>(nn) *
+              (dim == 2 ? (npc == 3 ? 7 : 12) : (npc == 4 ? 15 : 30)));
   std::vector<Index> scratch;
   for (Index n = 0; n < nn; ++n) {
     scratch.clear();

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "FeTestMeshes.hpp"
+#include "friction/core/InputError.hpp"
 #include "friction/fe/DirichletConditions.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fe/Simplex.hpp"
@@ -128,6 +129,19 @@ TEST_CASE("fe 3D space numbers P1 and P2 nodes on tetrahedra", "[fe][3d]") {
     const int perSide = V->degree() * n + 1;
     REQUIRE(patch.size() == static_cast<std::size_t>(perSide * perSide));
     for (Index node : patch) REQUIRE(V->point(node).x() == 0.0);
+  }
+}
+
+TEST_CASE("fe 3D space refuses a labelled triangle that is no tetrahedron's face", "[fe][3d]") {
+  Mesh mesh = test::unitCubeMesh(1);
+  mesh.addFacet({1, 2, 4}, 9);  // (1,0,0), (0,1,0), (0,0,1): cuts through the cube
+  try {
+    const LagrangeSpace V(mesh, 1);
+    FAIL("no error for a triangle that is not a face");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("unitCube1") &&
+                             Catch::Contains("labelled triangle 12 (nodes 1, 2, 4, label 9) "
+                                             "is not a face of any tetrahedron"));
   }
 }
 
