@@ -138,7 +138,7 @@ Eigen::VectorXd BoundaryConditions::neumannLoad(const LagrangeSpace& space, doub
       const double w1[2] = {0.5, 0.5}, w2[3] = {1.0 / 6, 2.0 / 3, 1.0 / 6};
       for (int k = 0; k < nodes.size; ++k) {
         const double w = (nodes.size == 2 ? w1[k] : w2[k]) * length;
-        F.segment<2>(LagrangeSpace::dof(nodes[k], 0)) += w * g;
+        F.segment<2>(space.dof(nodes[k], 0)) += w * g;
       }
     }
   }

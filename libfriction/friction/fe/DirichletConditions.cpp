@@ -6,15 +6,6 @@
 
 namespace friction {
 
-namespace {
-
-bool fixesComponent(FixedComponents which, int component) {
-  return which == FixedComponents::all || (which == FixedComponents::x && component == 0) ||
-         (which == FixedComponents::y && component == 1);
-}
-
-}  // namespace
-
 DirichletConditions::DirichletConditions(const LagrangeSpace& space)
     : space_(&space),
       fixed_(static_cast<std::size_t>(space.numDofs()), 0),
@@ -25,14 +16,14 @@ DirichletConditions::DirichletConditions(const LagrangeSpace& space)
 Index DirichletConditions::fixPatch(int label, FixedComponents components) {
   const std::vector<Index> nodes = space_->patchNodes(label);
   for (Index n : nodes)
-    for (int c = 0; c < 2; ++c)
-      if (fixesComponent(components, c)) fixed_[LagrangeSpace::dof(n, c)] = 1;
+    for (int c = 0; c < space_->dim(); ++c)
+      if (fixesComponent(components, c)) fixed_[space_->dof(n, c)] = 1;
   // A label fixed twice with different components fixes their union.
   auto it = patchComponents_.find(label);
   if (it == patchComponents_.end())
     patchComponents_.emplace(label, components);
-  else if (it->second != components)
-    it->second = FixedComponents::all;
+  else
+    it->second = it->second | components;
   renumber();
   return static_cast<Index>(nodes.size());
 }
@@ -56,8 +47,12 @@ void DirichletConditions::renumber() {
   }
 }
 
+void DirichletConditions::setPatchValue(int label, const Point& value) {
+  setPatchValue(label, VectorField([value](const Point&) { return value; }));
+}
+
 void DirichletConditions::setPatchValue(int label, const Vector2& value) {
-  setPatchValue(label, VectorField([value](const Vector2&) { return value; }));
+  setPatchValue(label, Point(value.x(), value.y(), 0.0));
 }
 
 void DirichletConditions::setPatchValue(int label, const VectorField& value) {
@@ -65,9 +60,9 @@ void DirichletConditions::setPatchValue(int label, const VectorField& value) {
   FRICTION_ASSERT(it != patchComponents_.end(), "setPatchValue on a patch that is not fixed");
   if (it == patchComponents_.end()) return;
   for (Index n : space_->patchNodes(label)) {
-    const Vector2 v = value(space_->coordinate(n));
-    for (int c = 0; c < 2; ++c)
-      if (fixesComponent(it->second, c)) values_[LagrangeSpace::dof(n, c)] = v[c];
+    const Point v = value(space_->point(n));
+    for (int c = 0; c < space_->dim(); ++c)
+      if (fixesComponent(it->second, c)) values_[space_->dof(n, c)] = v[c];
   }
 }
 

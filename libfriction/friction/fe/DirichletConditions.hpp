@@ -20,8 +20,17 @@
 
 namespace friction {
 
-/// Which displacement components a condition prescribes.
-enum class FixedComponents { x, y, all };
+/// Which displacement components a condition prescribes: a set of x, y, z (combine with |);
+/// `all` is every component of the mesh's dimension.
+enum class FixedComponents : unsigned { x = 1, y = 2, z = 4, all = 7 };
+
+inline FixedComponents operator|(FixedComponents a, FixedComponents b) {
+  return static_cast<FixedComponents>(static_cast<unsigned>(a) | static_cast<unsigned>(b));
+}
+/// Whether the set fixes component c (0 = x, 1 = y, 2 = z).
+inline bool fixesComponent(FixedComponents set, int c) {
+  return (static_cast<unsigned>(set) >> c) & 1u;
+}
 
 class DirichletConditions {
  public:
@@ -30,9 +39,10 @@ class DirichletConditions {
 
   // --- which dofs are fixed (decides K_ff; do this before building a ReducedSystem) ---
 
-  /// Fix the given components of every node on the edges with this label (vertices and, for
-  /// P2, midpoints). Returns the number of nodes on the patch: 0 means the label has no
-  /// edges, which the caller (who knows the file and line) reports.
+  /// Fix the given components of every node on the facets with this label (vertices and, for
+  /// P2, midpoints); components beyond the mesh's dimension are ignored. Returns the number
+  /// of nodes on the patch: 0 means the label has no facets, which the caller (who knows the
+  /// file and line) reports.
   Index fixPatch(int label, FixedComponents components);
   /// Fix one dof.
   void fixDof(Index dof);
@@ -51,8 +61,10 @@ class DirichletConditions {
   // --- prescribed values [m] (may change every time step; K_ff does not) ---
 
   /// Set the prescribed value of every node on the patch, for the components this patch
-  /// fixes (fixPatch); the other component is left alone. A node on two patches that fix the
-  /// same component keeps the value set last. The patch must have been fixed (debug assert).
+  /// fixes (fixPatch); the other components are left alone. A node on two patches that fix
+  /// the same component keeps the value set last. The patch must have been fixed (debug
+  /// assert). Any dimension (z ignored in 2D), and the same for 2D code.
+  void setPatchValue(int label, const Point& value);
   void setPatchValue(int label, const Vector2& value);
   /// Same with a value depending on the node position.
   void setPatchValue(int label, const VectorField& value);

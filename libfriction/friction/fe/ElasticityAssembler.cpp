@@ -14,10 +14,7 @@ namespace friction {
 
 namespace {
 
-constexpr int kMaxNodes = SimplexNodes<2>::max;
-
-/// The mesh's dimension: the element kernels are instantiated for it once per call.
-int meshDimension(const Mesh&) { return 2; }
+constexpr int kMaxNodes = SimplexNodes<3>::max;
 
 /// The cell's simplex from the mesh (the one place that reads cell vertices).
 template <int dim>
@@ -28,6 +25,34 @@ Simplex<2> cellGeometry<2>(const Mesh& mesh, Index cell) {
   std::array<Vector2, 3> vertex;
   for (int i = 0; i < 3; ++i) vertex[i] = mesh.points[mesh.cellVertex(cell, i)].head<2>();
   return Simplex<2>(vertex);
+}
+
+template <>
+Simplex<3> cellGeometry<3>(const Mesh& mesh, Index cell) {
+  std::array<Point, 4> vertex;
+  for (int i = 0; i < 4; ++i) vertex[i] = mesh.points[mesh.cellVertex(cell, i)];
+  return Simplex<3>(vertex);
+}
+
+/// x as the kernels of the dimension see it, and back.
+template <int dim>
+SimplexPoint<dim> local(const Point& x) {
+  return x.head<dim>();
+}
+template <int dim>
+Point global(const SimplexPoint<dim>& x) {
+  if constexpr (dim == 2)
+    return Point(x.x(), x.y(), 0.0);
+  else
+    return x;
+}
+
+/// Run body<dim>() for the mesh's dimension: the one dispatch of each call.
+template <class Body>
+decltype(auto) dispatch(const Mesh& mesh, Body&& body) {
+  FRICTION_ASSERT(mesh.dim == 2 || mesh.dim == 3, "the mesh's dimension has no element kernels");
+  if (mesh.dim == 3) return body(std::integral_constant<int, 3>());
+  return body(std::integral_constant<int, 2>());
 }
 
 /// λ of the element law: λ* (plane strain or stress) in 2D, the 3D material's λ in 3D.
@@ -58,7 +83,10 @@ Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V, const Mate
   }
   std::vector<Index> adjStart(static_cast<std::size_t>(nn) + 1, 0);
   std::vector<Index> adj;
-  adj.reserve(static_cast<std::size_t>(nn) * (npc == 3 ? 7 : 12));
+  // Typical node degrees (the node itself included): P1 / P2 triangles 7 / 12, tetrahedra 15 /
+  // about 30; only a capacity hint.
+  adj.reserve(static_cast<std::size_t>(nn) *
+              (dim == 2 ? (npc == 3 ? 7 : 12) : (npc == 4 ? 15 : 30)));
   std::vector<Index> scratch;
   for (Index n = 0; n < nn; ++n) {
     scratch.clear();
@@ -116,59 +144,186 @@ Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V, const Mate
   return K;
 }
 
+template <int dim>
+Eigen::VectorXd assembleBodyForce(const LagrangeSpace& V, const VectorField& f) {
+  const SimplexQuadrature<dim> rule = simplexQuadrature<dim>(5);
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(V.numDofs());
+  const auto field = [&f](const SimplexPoint<dim>& x) -> SimplexPoint<dim> {
+    return local<dim>(f(global<dim>(x)));
+  };
+  for (Index c = 0; c < V.numCells(); ++c) {
+    const NodeList nodes = V.cellNodes(c);
+    addBodyLoad<dim>(
+        V.degree(), cellGeometry<dim>(V.mesh(), c), rule, field,
+        [&](int i, const SimplexPoint<dim>& load) { F.segment<dim>(dim * nodes[i]) += load; });
+  }
+  return F;
+}
+
+/// The vertices of facet k of a flat list (d per facet) as the kernels see them.
+template <int dim>
+SimplexFacet<dim> facetGeometry(const LagrangeSpace& V, const Index* vertices) {
+  std::array<SimplexPoint<dim>, dim> x;
+  for (int i = 0; i < dim; ++i) x[i] = local<dim>(V.point(vertices[i]));
+  return SimplexFacet<dim>(x);
+}
+
+template <int dim>
+Eigen::VectorXd assembleTraction(const LagrangeSpace& V, int label, const VectorField& g) {
+  // 2D: 4-point Gauss–Legendre on each edge; 3D: a degree-7 triangle rule (P2 times a
+  // quadratic traction stays exact).
+  const SimplexQuadrature<dim - 1> rule = simplexQuadrature<dim - 1>(7);
+  const auto field = [&g](const SimplexPoint<dim>& x) -> SimplexPoint<dim> {
+    return local<dim>(g(global<dim>(x)));
+  };
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(V.numDofs());
+  for (Index f : V.labelledFacets(label)) {
+    const Index* vertices = &V.mesh().facetVertices[static_cast<std::size_t>(f) * dim];
+    const NodeList nodes = V.facetNodes(vertices);
+    addFacetLoad<dim>(
+        V.degree(), facetGeometry<dim>(V, vertices), rule, field,
+        [&](int i, const SimplexPoint<dim>& load) { F.segment<dim>(dim * nodes[i]) += load; });
+  }
+  return F;
+}
+
+template <int dim>
+ErrorNorms computeErrorNorms(const LagrangeSpace& V, const Eigen::VectorXd& u,
+                             const VectorField& exact, const TensorField& exactGradient) {
+  using Vec = SimplexPoint<dim>;
+  using Mat = Eigen::Matrix<double, dim, dim>;
+  const SimplexQuadrature<dim> rule = simplexQuadrature<dim>(8);
+  double l2 = 0.0, h1 = 0.0;
+  double phi[kMaxNodes];
+  Vec grad[kMaxNodes];
+  for (Index c = 0; c < V.numCells(); ++c) {
+    const Simplex<dim> g = cellGeometry<dim>(V.mesh(), c);
+    const NodeList nodes = V.cellNodes(c);
+    for (int q = 0; q < rule.size(); ++q) {
+      const auto& l = rule.barycentric[q];
+      basisValues<dim>(V.degree(), l, phi);
+      basisGradients<dim>(V.degree(), l, g, grad);
+      Vec uh = Vec::Zero();
+      Mat Gh = Mat::Zero();
+      for (int i = 0; i < nodes.size; ++i) {
+        const Vec ui = u.segment<dim>(dim * nodes[i]);
+        uh += phi[i] * ui;
+        Gh += ui * grad[i].transpose();
+      }
+      const Point x = global<dim>(g.point(l));
+      const double w = g.measure * rule.weights[q];
+      l2 += w * (local<dim>(exact(x)) - uh).squaredNorm();
+      h1 += w * (exactGradient(x).template topLeftCorner<dim, dim>() - Gh).squaredNorm();
+    }
+  }
+  return {std::sqrt(l2), std::sqrt(h1)};
+}
+
+template <int dim>
+Eigen::Matrix<double, dim, dim> gradientAt(const LagrangeSpace& V, const Eigen::VectorXd& u,
+                                           Index cell, const SimplexPoint<dim>& x) {
+  const Simplex<dim> g = cellGeometry<dim>(V.mesh(), cell);
+  const NodeList nodes = V.cellNodes(cell);
+  SimplexPoint<dim> grad[kMaxNodes];
+  basisGradients<dim>(V.degree(), g.barycentric(x), g, grad);
+  Eigen::Matrix<double, dim, dim> G = Eigen::Matrix<double, dim, dim>::Zero();
+  for (int i = 0; i < nodes.size; ++i) G += u.segment<dim>(dim * nodes[i]) * grad[i].transpose();
+  return G;
+}
+
+template <int dim>
+SimplexPoint<dim> displacementAt(const LagrangeSpace& V, const Eigen::VectorXd& u, Index cell,
+                                 const SimplexPoint<dim>& x) {
+  const Simplex<dim> g = cellGeometry<dim>(V.mesh(), cell);
+  const NodeList nodes = V.cellNodes(cell);
+  double phi[kMaxNodes];
+  basisValues<dim>(V.degree(), g.barycentric(x), phi);
+  SimplexPoint<dim> value = SimplexPoint<dim>::Zero();
+  for (int i = 0; i < nodes.size; ++i) value += phi[i] * u.segment<dim>(dim * nodes[i]);
+  return value;
+}
+
 }  // namespace
 
 ElasticityAssembler::ElasticityAssembler(const LagrangeSpace& space, const Material& material)
     : space_(&space), material_(&material) {}
 
 Eigen::SparseMatrix<double> ElasticityAssembler::stiffness() const {
-  switch (meshDimension(space_->mesh())) {
-    case 2:
-      return assembleStiffness<2>(*space_, *material_);
-    default:
-      FRICTION_ASSERT(false, "the mesh's dimension has no element kernels");
-      return {};
-  }
+  return dispatch(space_->mesh(), [&](auto d) {
+    return assembleStiffness<decltype(d)::value>(*space_, *material_);
+  });
+}
+
+Eigen::VectorXd ElasticityAssembler::bodyForce(const Point& f) const {
+  return bodyForce(VectorField([f](const Point&) { return f; }));
 }
 
 Eigen::VectorXd ElasticityAssembler::bodyForce(const Vector2& f) const {
-  return bodyForce(VectorField([f](const Vector2&) { return f; }));
+  return bodyForce(Point(f.x(), f.y(), 0.0));
 }
 
 Eigen::VectorXd ElasticityAssembler::bodyForce(const VectorField& f) const {
-  const LagrangeSpace& V = *space_;
-  FRICTION_ASSERT(meshDimension(V.mesh()) == 2, "a 2D body force on a 2D mesh");
-  const SimplexQuadrature<2> rule = simplexQuadrature<2>(5);
-  Eigen::VectorXd F = Eigen::VectorXd::Zero(V.numDofs());
-  for (Index c = 0; c < V.numCells(); ++c) {
-    const NodeList nodes = V.cellNodes(c);
-    addBodyLoad<2>(V.degree(), cellGeometry<2>(V.mesh(), c), rule, f,
-                   [&](int i, const Vector2& load) { F.segment<2>(2 * nodes[i]) += load; });
-  }
-  return F;
+  return dispatch(space_->mesh(),
+                  [&](auto d) { return assembleBodyForce<decltype(d)::value>(*space_, f); });
+}
+
+Eigen::VectorXd ElasticityAssembler::traction(int label, const Point& g) const {
+  return traction(label, VectorField([g](const Point&) { return g; }));
 }
 
 Eigen::VectorXd ElasticityAssembler::traction(int label, const Vector2& g) const {
-  return traction(label, VectorField([g](const Vector2&) { return g; }));
+  return traction(label, Point(g.x(), g.y(), 0.0));
 }
 
 Eigen::VectorXd ElasticityAssembler::traction(int label, const VectorField& g) const {
+  return dispatch(space_->mesh(),
+                  [&](auto d) { return assembleTraction<decltype(d)::value>(*space_, label, g); });
+}
+
+Eigen::VectorXd ElasticityAssembler::lumpedFacetMass(
+    const std::vector<Index>& facetVertices) const {
   const LagrangeSpace& V = *space_;
-  const SimplexQuadrature<1> rule = simplexQuadrature<1>(7);  // 4-point Gauss–Legendre
-  Eigen::VectorXd F = Eigen::VectorXd::Zero(V.numDofs());
-  for (const auto& e : V.labelledEdges(label)) {
-    const NodeList nodes = V.edgeNodes(e[0], e[1]);
-    const Vector2& a = V.coordinate(e[0]);
-    const Vector2& b = V.coordinate(e[1]);
-    addFacetLoad<2>(V.degree(), SimplexFacet<2>({a, b}), rule, g,
-                    [&](int i, const Vector2& load) { F.segment<2>(2 * nodes[i]) += load; });
-  }
-  return F;
+  return dispatch(V.mesh(), [&](auto d) {
+    constexpr int dim = decltype(d)::value;
+    FRICTION_ASSERT(facetVertices.size() % dim == 0, "d vertices per facet");
+    const double* w = facetLumpedMass<dim>(V.degree());
+    Eigen::VectorXd m = Eigen::VectorXd::Zero(V.numNodes());
+    for (std::size_t k = 0; k < facetVertices.size(); k += dim) {
+      const double measure = facetGeometry<dim>(V, &facetVertices[k]).measure;
+      const NodeList nodes = V.facetNodes(&facetVertices[k]);
+      for (int i = 0; i < nodes.size; ++i) m[nodes[i]] += w[i] * measure;
+    }
+    return m;
+  });
+}
+
+Eigen::SparseMatrix<double> ElasticityAssembler::consistentFacetMass(
+    const std::vector<Index>& facetVertices) const {
+  const LagrangeSpace& V = *space_;
+  return dispatch(V.mesh(), [&](auto d) {
+    constexpr int dim = decltype(d)::value;
+    FRICTION_ASSERT(facetVertices.size() % dim == 0, "d vertices per facet");
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(facetVertices.size() / dim *
+                     static_cast<std::size_t>(V.nodesPerFacet() * V.nodesPerFacet()));
+    for (std::size_t k = 0; k < facetVertices.size(); k += dim) {
+      const double measure = facetGeometry<dim>(V, &facetVertices[k]).measure;
+      const NodeList nodes = V.facetNodes(&facetVertices[k]);
+      for (int i = 0; i < nodes.size; ++i)
+        for (int j = 0; j < nodes.size; ++j)
+          triplets.emplace_back(nodes[i], nodes[j],
+                                measure * facetConsistentMass<dim>(V.degree(), i, j));
+    }
+    Eigen::SparseMatrix<double> M(V.numNodes(), V.numNodes());
+    M.setFromTriplets(triplets.begin(), triplets.end());
+    return M;
+  });
 }
 
 Eigen::VectorXd ElasticityAssembler::lumpedEdgeMass(
     const std::vector<std::array<Index, 2>>& edges) const {
   const LagrangeSpace& V = *space_;
+  FRICTION_ASSERT(V.dim() == 2, "lumpedEdgeMass: a 2D mesh");
   // Trapezoid (P1) and Simpson (P2) weights: the row sums of the consistent mass, and the
   // nodal quadrature that keeps the friction law node by node (docs/method.md §4).
   const double* w = facetLumpedMass<2>(V.degree());
@@ -184,6 +339,7 @@ Eigen::VectorXd ElasticityAssembler::lumpedEdgeMass(
 Eigen::SparseMatrix<double> ElasticityAssembler::consistentEdgeMass(
     const std::vector<std::array<Index, 2>>& edges) const {
   const LagrangeSpace& V = *space_;
+  FRICTION_ASSERT(V.dim() == 2, "consistentEdgeMass: a 2D mesh");
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(edges.size() * static_cast<std::size_t>(V.nodesPerEdge() * V.nodesPerEdge()));
   for (const auto& e : edges) {
@@ -199,28 +355,51 @@ Eigen::SparseMatrix<double> ElasticityAssembler::consistentEdgeMass(
   return M;
 }
 
+Point ElasticityAssembler::displacement(const Eigen::VectorXd& u, Index cell,
+                                        const Point& x) const {
+  return dispatch(space_->mesh(), [&](auto d) {
+    constexpr int dim = decltype(d)::value;
+    return global<dim>(displacementAt<dim>(*space_, u, cell, local<dim>(x)));
+  });
+}
+
+Eigen::Matrix3d ElasticityAssembler::displacementGradient(const Eigen::VectorXd& u, Index cell,
+                                                          const Point& x) const {
+  return dispatch(space_->mesh(), [&](auto d) {
+    constexpr int dim = decltype(d)::value;
+    Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
+    G.topLeftCorner<dim, dim>() = gradientAt<dim>(*space_, u, cell, local<dim>(x));
+    return G;
+  });
+}
+
+Eigen::Matrix3d ElasticityAssembler::strain(const Eigen::VectorXd& u, Index cell,
+                                            const Point& x) const {
+  const Eigen::Matrix3d G = displacementGradient(u, cell, x);
+  return 0.5 * (G + G.transpose());
+}
+
+Eigen::Matrix3d ElasticityAssembler::stress(const Eigen::VectorXd& u, Index cell,
+                                            const Point& x) const {
+  const Eigen::Matrix3d e = strain(u, cell, x);
+  if (space_->dim() == 3) return material_->stress3d(e);
+  const Eigen::Matrix2d e2 = e.topLeftCorner<2, 2>();
+  Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+  sigma.topLeftCorner<2, 2>() = material_->stress(e2);
+  sigma(2, 2) = material_->outOfPlaneStress(e2);
+  return sigma;
+}
+
 Vector2 ElasticityAssembler::displacement(const Eigen::VectorXd& u, Index cell,
                                           const Vector2& x) const {
-  const LagrangeSpace& V = *space_;
-  const Simplex<2> g = cellGeometry<2>(V.mesh(), cell);
-  const NodeList nodes = V.cellNodes(cell);
-  double phi[kMaxNodes];
-  basisValues<2>(V.degree(), g.barycentric(x), phi);
-  Vector2 value = Vector2::Zero();
-  for (int i = 0; i < nodes.size; ++i) value += phi[i] * u.segment<2>(2 * nodes[i]);
-  return value;
+  FRICTION_ASSERT(space_->dim() == 2, "2D evaluation on a 2D mesh");
+  return displacementAt<2>(*space_, u, cell, x);
 }
 
 Eigen::Matrix2d ElasticityAssembler::displacementGradient(const Eigen::VectorXd& u, Index cell,
                                                           const Vector2& x) const {
-  const LagrangeSpace& V = *space_;
-  const Simplex<2> g = cellGeometry<2>(V.mesh(), cell);
-  const NodeList nodes = V.cellNodes(cell);
-  Vector2 grad[kMaxNodes];
-  basisGradients<2>(V.degree(), g.barycentric(x), g, grad);
-  Eigen::Matrix2d G = Eigen::Matrix2d::Zero();
-  for (int i = 0; i < nodes.size; ++i) G += u.segment<2>(2 * nodes[i]) * grad[i].transpose();
-  return G;
+  FRICTION_ASSERT(space_->dim() == 2, "2D evaluation on a 2D mesh");
+  return gradientAt<2>(*space_, u, cell, x);
 }
 
 Eigen::Matrix2d ElasticityAssembler::strain(const Eigen::VectorXd& u, Index cell,
@@ -236,32 +415,9 @@ Eigen::Matrix2d ElasticityAssembler::stress(const Eigen::VectorXd& u, Index cell
 
 ErrorNorms ElasticityAssembler::errorNorms(const Eigen::VectorXd& u, const VectorField& exact,
                                            const TensorField& exactGradient) const {
-  const LagrangeSpace& V = *space_;
-  const SimplexQuadrature<2> rule = simplexQuadrature<2>(8);
-  double l2 = 0.0, h1 = 0.0;
-  double phi[kMaxNodes];
-  Vector2 grad[kMaxNodes];
-  for (Index c = 0; c < V.numCells(); ++c) {
-    const Simplex<2> g = cellGeometry<2>(V.mesh(), c);
-    const NodeList nodes = V.cellNodes(c);
-    for (int q = 0; q < rule.size(); ++q) {
-      const auto& l = rule.barycentric[q];
-      basisValues<2>(V.degree(), l, phi);
-      basisGradients<2>(V.degree(), l, g, grad);
-      Vector2 uh = Vector2::Zero();
-      Eigen::Matrix2d Gh = Eigen::Matrix2d::Zero();
-      for (int i = 0; i < nodes.size; ++i) {
-        const Vector2 ui = u.segment<2>(2 * nodes[i]);
-        uh += phi[i] * ui;
-        Gh += ui * grad[i].transpose();
-      }
-      const Vector2 x = g.point(l);
-      const double w = g.measure * rule.weights[q];
-      l2 += w * (exact(x) - uh).squaredNorm();
-      h1 += w * (exactGradient(x) - Gh).squaredNorm();
-    }
-  }
-  return {std::sqrt(l2), std::sqrt(h1)};
+  return dispatch(space_->mesh(), [&](auto d) {
+    return computeErrorNorms<decltype(d)::value>(*space_, u, exact, exactGradient);
+  });
 }
 
 }  // namespace friction

@@ -1,9 +1,11 @@
-// ElasticityAssembler: the global stiffness matrix, load vectors, boundary-edge mass
-// matrices and point evaluation of stress and strain for P1 / P2 plane elasticity
-// (docs/method.md §1, §4; the edge mass is the M of the traction recovery (53)).
+// ElasticityAssembler: the global stiffness matrix, load vectors, facet mass matrices and
+// point evaluation of stress and strain for P1 / P2 elasticity on triangles (plane strain or
+// stress) and tetrahedra (docs/method.md §1, §4, §7; the facet mass is the M of the traction
+// recovery (53)). Each call dispatches once on the mesh's dimension to the element kernels of
+// Simplex.hpp.
 //
 // Conventions: K u = F with u the interleaved nodal displacements of LagrangeSpace
-// [m], F the nodal forces [N per m of thickness], K = ∫ ε(φ_i) : C : ε(φ_j) [N/m per m].
+// [m], F the nodal forces [N; N per m of thickness in 2D], K = ∫ ε(φ_i) : C : ε(φ_j) [N/m].
 // K is returned in full symmetric storage (both triangles, column-major, compressed), so it
 // can be multiplied directly and handed to either SparseFactor backend (which read the lower
 // triangle).
@@ -21,15 +23,17 @@
 
 namespace friction {
 
-/// A vector field of position x [m], e.g. a body force [N/m³] or a traction [Pa].
-using VectorField = std::function<Vector2(const Vector2&)>;
-/// A tensor field of position, e.g. a displacement gradient G(i, j) = ∂u_i/∂x_j.
-using TensorField = std::function<Eigen::Matrix2d(const Vector2&)>;
+/// A vector field of position x [m], e.g. a body force [N/m³] or a traction [Pa]; in 2D it
+/// is called with z = 0 and its z component is ignored.
+using VectorField = std::function<Point(const Point&)>;
+/// A tensor field of position, e.g. a displacement gradient G(i, j) = ∂u_i/∂x_j; in 2D its
+/// top-left 2 × 2 block is used.
+using TensorField = std::function<Eigen::Matrix3d(const Point&)>;
 
 /// Errors of a discrete displacement against an exact one.
 struct ErrorNorms {
-  double l2 = 0.0;          ///< ‖u − u_h‖_{L²(Ω)} [m²] (displacement [m] times √area)
-  double h1Seminorm = 0.0;  ///< ‖∇(u − u_h)‖_{L²(Ω)} [m]
+  double l2 = 0.0;          ///< ‖u − u_h‖_{L²(Ω)} [m · m^(d/2)]
+  double h1Seminorm = 0.0;  ///< ‖∇(u − u_h)‖_{L²(Ω)} [m^(d/2)]
 };
 
 class ElasticityAssembler {
@@ -45,40 +49,62 @@ class ElasticityAssembler {
   /// cost is linear in the mesh size.
   Eigen::SparseMatrix<double> stiffness() const;
 
-  /// Load vector of a constant body force f [N/m³]: F_i = ∫_Ω f · φ_i.
+  /// Load vector of a constant body force f [N/m³]: F_i = ∫_Ω f · φ_i (any dimension; z
+  /// ignored in 2D), and the same for 2D code.
+  Eigen::VectorXd bodyForce(const Point& f) const;
   Eigen::VectorXd bodyForce(const Vector2& f) const;
-  /// Load vector of a body force f(x) [N/m³], by a degree-5 triangle rule.
+  /// Load vector of a body force f(x) [N/m³], by a degree-5 rule per cell.
   Eigen::VectorXd bodyForce(const VectorField& f) const;
 
-  /// Load vector of a constant traction g [Pa] on the edges with this label:
+  /// Load vector of a constant traction g [Pa] on the facets with this label:
   /// F_i = ∫_patch g · φ_i. The traction is the force per area applied to the body (for an
   /// outward normal n and a stress σ at the boundary, g = σ n).
+  Eigen::VectorXd traction(int label, const Point& g) const;
   Eigen::VectorXd traction(int label, const Vector2& g) const;
-  /// Same for a traction g(x) [Pa], by a 4-point Gauss–Legendre rule on each edge.
+  /// Same for a traction g(x) [Pa], by a 4-point Gauss–Legendre rule on each edge (2D) or a
+  /// degree-7 rule on each triangle (3D).
   Eigen::VectorXd traction(int label, const VectorField& g) const;
 
-  /// Lumped (nodal-quadrature) scalar mass of a set of triangle sides (a, b), one weight per
-  /// space node [m]: trapezoid weights L/2 at the ends for P1, Simpson weights L/6, 4L/6, L/6
-  /// at (a, mid, b) for P2; zero at nodes off the edges. The weights of each edge sum to its
-  /// length L. Apply it per displacement component.
+  /// Lumped (nodal-quadrature) scalar mass of a set of facets, one weight per space node
+  /// [m^(d−1)], given by their vertices (d per facet, each a facet of some cell): the weights
+  /// of Simplex.hpp's facetLumpedMass times the facet's measure — trapezoid / Simpson on 2D
+  /// edges; 1/3 each (P1) or A/12 per vertex and A/4 per mid-edge node (P2, P1-iso-P2
+  /// nodal quadrature, all positive) on triangles. Zero at nodes off the facets; the weights
+  /// of each facet sum to its measure. Apply it per displacement component.
+  Eigen::VectorXd lumpedFacetMass(const std::vector<Index>& facetVertices) const;
+  /// Consistent scalar mass M_ij = ∫ φ_i φ_j over the same facets, numNodes × numNodes
+  /// [m^(d−1)], full symmetric storage.
+  Eigen::SparseMatrix<double> consistentFacetMass(const std::vector<Index>& facetVertices) const;
+
+  /// 2D: the lumped mass of a set of triangle sides (a, b) [m]: trapezoid weights L/2 at the
+  /// ends for P1, Simpson weights L/6, 4L/6, L/6 at (a, mid, b) for P2. Its row sums equal
+  /// those of consistentEdgeMass.
   Eigen::VectorXd lumpedEdgeMass(const std::vector<std::array<Index, 2>>& edges) const;
-  /// Consistent scalar mass M_ij = ∫ φ_i φ_j over the same edges, numNodes × numNodes [m],
-  /// full symmetric storage. Its row sums equal lumpedEdgeMass.
+  /// 2D: the consistent mass over the same edges [m], full symmetric storage.
   Eigen::SparseMatrix<double> consistentEdgeMass(
       const std::vector<std::array<Index, 2>>& edges) const;
 
-  /// u_h(x) [m] for x [m] in (or on) triangle `cell`; u is the full dof vector.
+  /// u_h(x) [m] for x [m] in (or on) cell `cell`; u is the full dof vector. Any dimension:
+  /// z = 0 in 2D.
+  Point displacement(const Eigen::VectorXd& u, Index cell, const Point& x) const;
+  /// ∇u_h(x), G(i, j) = ∂u_i/∂x_j (the third row and column 0 in 2D).
+  Eigen::Matrix3d displacementGradient(const Eigen::VectorXd& u, Index cell, const Point& x) const;
+  /// Small strain ε = sym ∇u_h at x (ε_zz = 0 in 2D: plane strain's, and the in-plane part
+  /// in plane stress).
+  Eigen::Matrix3d strain(const Eigen::VectorXd& u, Index cell, const Point& x) const;
+  /// Stress σ [Pa] at x: 3D Hooke's law; in 2D the in-plane stress with
+  /// σ_zz = Material::outOfPlaneStress.
+  Eigen::Matrix3d stress(const Eigen::VectorXd& u, Index cell, const Point& x) const;
+
+  /// The same on a 2D mesh with 2D types (σ in-plane only).
   Vector2 displacement(const Eigen::VectorXd& u, Index cell, const Vector2& x) const;
-  /// ∇u_h(x), G(i, j) = ∂u_i/∂x_j.
   Eigen::Matrix2d displacementGradient(const Eigen::VectorXd& u, Index cell,
                                        const Vector2& x) const;
-  /// Small strain ε = sym ∇u_h at x.
   Eigen::Matrix2d strain(const Eigen::VectorXd& u, Index cell, const Vector2& x) const;
-  /// In-plane stress σ [Pa] at x (σ_zz: Material::outOfPlaneStress of the strain).
   Eigen::Matrix2d stress(const Eigen::VectorXd& u, Index cell, const Vector2& x) const;
 
   /// ‖u − u_h‖_{L²} and |u − u_h|_{H¹} against an exact displacement and its gradient, by a
-  /// degree-8 rule per triangle (so that quadrature error stays well below the P2 error).
+  /// degree-8 rule per cell (so that quadrature error stays well below the P2 error).
   ErrorNorms errorNorms(const Eigen::VectorXd& u, const VectorField& exact,
                         const TensorField& exactGradient) const;
 

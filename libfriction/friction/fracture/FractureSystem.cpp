@@ -65,7 +65,7 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   for (Index i = 0; i < splitSpace_->numNodes(); ++i) {
     FRICTION_ASSERT(toUnsplit[i] >= 0, "every split node belongs to a cell");
     for (int c = 0; c < dim_; ++c)
-      pt.emplace_back(LagrangeSpace::dof(i, c), LagrangeSpace::dof(toUnsplit[i], c), 1.0);
+      pt.emplace_back(splitSpace_->dof(i, c), unsplitSpace_->dof(toUnsplit[i], c), 1.0);
   }
   P_ = fromTriplets(splitSpace_->numDofs(), unsplitSpace_->numDofs(), pt);
 
@@ -113,8 +113,8 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   for (Index k = 0; k < n; ++k) {
     if (nodes_[k].tip) continue;
     for (int c = 0; c < dim_; ++c) {
-      lt.emplace_back(LagrangeSpace::dof(nodes_[k].plus, c), dim_ * k + c, 0.5);
-      lt.emplace_back(LagrangeSpace::dof(nodes_[k].minus, c), dim_ * k + c, -0.5);
+      lt.emplace_back(splitSpace_->dof(nodes_[k].plus, c), dim_ * k + c, 0.5);
+      lt.emplace_back(splitSpace_->dof(nodes_[k].minus, c), dim_ * k + c, -0.5);
     }
   }
   L_ = fromTriplets(splitSpace_->numDofs(), dim_ * n, lt);
@@ -141,8 +141,8 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
       ControlNode& v = nodes_[k];
       v.onDirichlet = false;
       for (int c = 0; c < dim_; ++c) {
-        Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(
-            Pr, LagrangeSpace::dof(v.plus, c));
+        Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Pr,
+                                                                       splitSpace_->dof(v.plus, c));
         if (it && dirichlet_->isFixed(static_cast<Index>(it.col()))) v.onDirichlet = true;
       }
       if (v.tip || v.onDirichlet) mask_[k] = 0;
@@ -161,8 +161,8 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
       if (nodes_[k].tip) continue;  // a single node has no two sides to compare
       const double s = 0.5 / weights_[k];
       for (int c = 0; c < dim_; ++c) {
-        et.emplace_back(dim_ * k + c, LagrangeSpace::dof(nodes_[k].plus, c), s);
-        et.emplace_back(dim_ * k + c, LagrangeSpace::dof(nodes_[k].minus, c), -s);
+        et.emplace_back(dim_ * k + c, splitSpace_->dof(nodes_[k].plus, c), s);
+        et.emplace_back(dim_ * k + c, splitSpace_->dof(nodes_[k].minus, c), -s);
       }
     }
     const Eigen::SparseMatrix<double> E = fromTriplets(dim_ * n, splitSpace_->numDofs(), et);

@@ -110,8 +110,7 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
   s << "      <PointData Vectors=\"displacement\">\n";
   openArray(s, "Float64", "displacement", 3);
   for (Index n = 0; n < numNodes; ++n)
-    s << "          " << finite(u[LagrangeSpace::dof(n, 0)]) << " "
-      << finite(u[LagrangeSpace::dof(n, 1)]) << " 0\n";
+    s << "          " << finite(u[space.dof(n, 0)]) << " " << finite(u[space.dof(n, 1)]) << " 0\n";
   closeArray(s);
   s << "      </PointData>\n";
 

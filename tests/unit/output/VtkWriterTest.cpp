@@ -76,8 +76,8 @@ Eigen::VectorXd linearField(const LagrangeSpace& space, double t) {
     const double plus = yc > kFractureY ? 1.0 : 0.0;
     for (const Index n : space.cellNodes(c)) {
       const Vector2& x = space.coordinate(n);
-      u[LagrangeSpace::dof(n, 0)] = t * (kA[0] * x.x() + kA[1] * x.y() + kB[0] + plus * kC[0]);
-      u[LagrangeSpace::dof(n, 1)] = t * (kA[2] * x.x() + kA[3] * x.y() + kB[1] + plus * kC[1]);
+      u[space.dof(n, 0)] = t * (kA[0] * x.x() + kA[1] * x.y() + kB[0] + plus * kC[0]);
+      u[space.dof(n, 1)] = t * (kA[2] * x.x() + kA[3] * x.y() + kB[1] + plus * kC[1]);
     }
   }
   return u;
