@@ -3,7 +3,7 @@
 // labelled by cube face and an internal fault made of the 2 faces in the plane x = y; and a
 // real gmsh run of a cube with an embedded square. Counts, labels, names, orientation, the
 // refusals (negative or flat tetrahedra, vertices out of range, labelled triangles that are
-// no face, tetrahedra listed twice), the mesh checks and the refusals of what cannot do 3D yet.
+// no face, tetrahedra listed twice), the mesh checks and the FE spaces on a mesh read from a file.
 #include <catch2/catch.hpp>
 
 #include <Eigen/Geometry>
@@ -259,20 +259,18 @@ TEST_CASE("mesh 3D: bad tetrahedra and faces are refused at their line", "[mesh]
   }
 }
 
-TEST_CASE("mesh 3D: what cannot do 3D yet refuses a 3D mesh with an InputError",
-          "[mesh][3d][errors]") {
+TEST_CASE("mesh 3D: a tetrahedral mesh read from a file carries the FE spaces", "[mesh][3d]") {
   TempDir dir;
   const Mesh m = readMesh(dir.write("cube.mesh", medit()));
-  const std::string path = dir.file("cube.mesh");
-  // splitFractures splits 3D meshes (tests/unit/fracture/SplitMesh3DTest.cpp).
-  try {
-    LagrangeSpace space(m, 1);
-    (void)space;
-    FAIL("LagrangeSpace should refuse a 3D mesh");
-  } catch (const InputError& e) {
-    CHECK(e.location().file == path);
-    CHECK_THAT(e.message(), Catch::Contains("not supported yet"));
-  }
+  // P1: one node per point, three components. P2: plus one node per edge — the cube's 12
+  // edges, its 6 face diagonals and the one body diagonal of the six tetrahedra (Euler:
+  // 8 − 19 + 18 − 6 = 1).
+  const LagrangeSpace p1(m, 1), p2(m, 2);
+  CHECK(p1.numNodes() == 8);
+  CHECK(p1.numDofs() == 24);
+  CHECK(p2.numEdges() == 19);
+  CHECK(p2.numNodes() == 27);
+  CHECK(p2.numDofs() == 81);
 }
 
 TEST_CASE("mesh 3D: a gmsh cube with an embedded square reads with the square inside",
