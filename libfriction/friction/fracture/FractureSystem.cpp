@@ -2,6 +2,10 @@
 // traction recovery from the split residual (53). See FractureSystem.hpp.
 #include "friction/fracture/FractureSystem.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+
 #include "friction/core/Assert.hpp"
 #include "friction/fracture/SignConventions.hpp"
 
@@ -48,7 +52,8 @@ Mesh unsplitMeshOf(const SplitMesh& s) {
 }  // namespace
 
 FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Material& material)
-    : split_(split), material_(material), unsplitMesh_(unsplitMeshOf(split)) {
+    : split_(split), material_(material), dim_(split.mesh.dim), unsplitMesh_(unsplitMeshOf(split)) {
+  FRICTION_ASSERT(dim_ == 2 || dim_ == 3, "a 2D or 3D split mesh");
   splitSpace_ = std::make_unique<LagrangeSpace>(split_.mesh, degree);
   unsplitSpace_ = std::make_unique<LagrangeSpace>(unsplitMesh_, degree);
   splitAssembler_ = std::make_unique<ElasticityAssembler>(*splitSpace_, material_);
@@ -69,44 +74,11 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   }
   P_ = fromTriplets(splitSpace_->numDofs(), unsplitSpace_->numDofs(), pt);
 
-  // Control nodes in arclength order: vertices, and for P2 the edge midpoints between them.
-  std::vector<std::array<Index, 2>> plusEdges;
-  for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f) {
-    const FractureGeometry& g = split_.fractures[f];
-    for (Index i = 0; i < g.numNodes(); ++i) {
-      ControlNode v;
-      v.fracture = f;
-      v.plus = g.plus[i];
-      v.minus = g.minus[i];
-      v.x = split_.mesh.points[g.plus[i]].head<2>();
-      v.normal = frameVector(g.normal[i]);
-      v.tangent[0] = frameVector(g.tangent[i]);
-      v.arclength = g.arclength[i];
-      v.tip = g.kind[i] == FractureNodeKind::tip;
-      nodes_.push_back(v);
-      if (i + 1 == g.numNodes()) break;
-      plusEdges.push_back({g.plus[i], g.plus[i + 1]});
-      if (degree == 2) {
-        ControlNode m;
-        m.fracture = f;
-        m.plus = splitSpace_->midpointNode(g.plus[i], g.plus[i + 1]);
-        m.minus = splitSpace_->midpointNode(g.minus[i], g.minus[i + 1]);
-        m.x = splitSpace_->coordinate(m.plus);
-        const Vector2 e =
-            (split_.mesh.points[g.plus[i + 1]].head<2>() - split_.mesh.points[g.plus[i]].head<2>());
-        const Vector2 t = e.normalized();
-        m.tangent[0] = frameVector(t);
-        m.normal = frameVector(normalFromTangent(t));
-        m.arclength = 0.5 * (g.arclength[i] + g.arclength[i + 1]);
-        nodes_.push_back(m);
-      }
-    }
-  }
-  // Lumped mass of Γ: trapezoid (P1) or Simpson (P2) weights of the ⁺-side edges.
-  const Eigen::VectorXd w = splitAssembler_->lumpedEdgeMass(plusEdges);
+  if (dim_ == 2)
+    controlNodes2D(degree);
+  else
+    controlNodes3D(degree);
   const Index n = size();
-  weights_.resize(n);
-  for (Index k = 0; k < n; ++k) weights_[k] = w[nodes_[k].plus];
 
   // L: ±j/2 on the copies.
   Triplets lt;
@@ -121,6 +93,115 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   slip_ = Eigen::VectorXd::Zero(blockSize() * n);
   loadUnsplit_ = Eigen::VectorXd::Zero(unsplitSpace_->numDofs());
   sigmaLoad_ = Eigen::VectorXd::Zero(dim_ * n);
+}
+
+void FractureSystem::controlNodes2D(int degree) {
+  // Control nodes in arclength order: vertices, and for P2 the edge midpoints between them.
+  std::vector<std::array<Index, 2>> plusEdges;
+  for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f) {
+    const FractureGeometry& g = split_.fractures[f];
+    for (Index i = 0; i < g.numNodes(); ++i) {
+      ControlNode v;
+      v.fracture = f;
+      v.plus = g.plus[i];
+      v.minus = g.minus[i];
+      v.position = split_.mesh.points[g.plus[i]];
+      v.x = v.position.head<2>();
+      v.normal = frameVector(g.normal[i]);
+      v.tangent[0] = frameVector(g.tangent[i]);
+      v.arclength = g.arclength[i];
+      v.tip = g.kind[i] == FractureNodeKind::tip;
+      nodes_.push_back(v);
+      if (i + 1 == g.numNodes()) break;
+      plusEdges.push_back({g.plus[i], g.plus[i + 1]});
+      if (degree == 2) {
+        ControlNode m;
+        m.fracture = f;
+        m.plus = splitSpace_->midpointNode(g.plus[i], g.plus[i + 1]);
+        m.minus = splitSpace_->midpointNode(g.minus[i], g.minus[i + 1]);
+        m.position = splitSpace_->point(m.plus);
+        m.x = m.position.head<2>();
+        const Vector2 e =
+            (split_.mesh.points[g.plus[i + 1]].head<2>() - split_.mesh.points[g.plus[i]].head<2>());
+        const Vector2 t = e.normalized();
+        m.tangent[0] = frameVector(t);
+        m.normal = frameVector(normalFromTangent(t));
+        m.arclength = 0.5 * (g.arclength[i] + g.arclength[i + 1]);
+        nodes_.push_back(m);
+      }
+    }
+  }
+  // Lumped mass of Γ: trapezoid (P1) or Simpson (P2) weights of the ⁺-side edges.
+  const Eigen::VectorXd w = splitAssembler_->lumpedEdgeMass(plusEdges);
+  weights_.resize(size());
+  for (Index k = 0; k < size(); ++k) weights_[k] = w[nodes_[k].plus];
+}
+
+void FractureSystem::controlNodes3D(int degree) {
+  for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f) {
+    const FractureGeometry& g = split_.fractures[f];
+    std::vector<Index> local(static_cast<std::size_t>(split_.numOriginalPoints()), -1);
+    for (Index i = 0; i < g.numNodes(); ++i) {
+      local[g.node[i]] = i;
+      ControlNode v;
+      v.fracture = f;
+      v.plus = g.plus[i];
+      v.minus = g.minus[i];
+      v.position = split_.mesh.points[g.plus[i]];
+      v.x = v.position.head<2>();
+      v.normal = g.normal[i];
+      v.tangent = tangentBasis(v.normal);
+      v.tip = g.kind[i] == FractureNodeKind::tip;
+      nodes_.push_back(v);
+    }
+    if (degree != 2) continue;
+    // Each edge once, by ascending (smaller, larger) end: its midpoint's normal sums the
+    // right-hand normals (b − a) × (c − a) (twice the area times n_Γ) of its triangles.
+    std::map<std::array<Index, 2>, Point> edgeNormal;
+    for (const auto& t : g.triangles) {
+      const Point& a = split_.mesh.points[t[0]];
+      const Point an = (split_.mesh.points[t[1]] - a).cross(split_.mesh.points[t[2]] - a);
+      for (int e = 0; e < 3; ++e) {
+        const Index p = t[e], q = t[(e + 1) % 3];
+        auto it =
+            edgeNormal.emplace(std::array<Index, 2>{std::min(p, q), std::max(p, q)}, Point::Zero())
+                .first;
+        it->second += an;
+      }
+    }
+    for (const auto& [edge, sum] : edgeNormal) {
+      const Index a = local[edge[0]], b = local[edge[1]];
+      FRICTION_ASSERT(a >= 0 && b >= 0, "a fault triangle's vertices are fracture nodes");
+      ControlNode m;
+      m.fracture = f;
+      m.plus = splitSpace_->midpointNode(g.plus[a], g.plus[b]);
+      m.minus = splitSpace_->midpointNode(g.minus[a], g.minus[b]);
+      m.position = splitSpace_->point(m.plus);
+      m.x = m.position.head<2>();
+      m.normal = sum.normalized();
+      m.tangent = tangentBasis(m.normal);
+      // Single where both sides share the edge: on the tip line.
+      m.tip = m.plus == m.minus;
+      nodes_.push_back(m);
+    }
+  }
+  // Lumped mass of Γ from the ⁺-side triangles (the ⁺ copies keep the unsplit numbers):
+  // 1/3 of the area per vertex (P1); A/12 per vertex and A/4 per mid-edge node (P2,
+  // P1-iso-P2 nodal quadrature: positive, so M⁻¹ exists and the law holds node by node).
+  std::vector<Index> facets;
+  for (const FractureGeometry& g : split_.fractures)
+    for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
+  const Eigen::VectorXd w = splitAssembler_->lumpedFacetMass(facets);
+  weights_.resize(size());
+  for (Index k = 0; k < size(); ++k) weights_[k] = w[nodes_[k].plus];
+}
+
+void FractureSystem::setTangentBasis(Index node, const Eigen::Vector3d& t1) {
+  FRICTION_ASSERT(dim_ == 3, "a choice of tangent basis exists in 3D only");
+  ControlNode& v = nodes_[static_cast<std::size_t>(node)];
+  FRICTION_ASSERT(std::abs(t1.norm() - 1) < 1e-12 && std::abs(t1.dot(v.normal)) < 1e-12,
+                  "t1 is a unit vector of the tangent plane");
+  v.tangent = {t1, v.normal.cross(t1)};
 }
 
 int FractureSystem::numHeldOnDirichlet() const {

@@ -11,9 +11,12 @@
 //    basis t₁ … t_k (k = d − 1; 2D: t₁ = t_Γ).
 //  * The imposed jump at a node is Σ_c (s + β)_c t_c (primal) or Σ_c qt_c t_c + qn n_Γ (dual):
 //    d jump dofs per node, from k tangential components and one normal.
-// Control nodes are the fracture vertices (P1) and, for P2, also the midpoints of the
-// fracture edges, in arclength order. The jump is held at zero at tips (single nodes) and at
-// nodes on Dirichlet patches. Signs: SignConventions.hpp.
+// Control nodes: 2D, the fracture vertices (P1) and, for P2, also the midpoints of the
+// fracture edges, in arclength order. 3D (d from the mesh), per fracture: its nodes in the
+// splitter's order (ascending unsplit number), then for P2 the midpoints of its triangles'
+// edges, each edge once, by ascending (smaller, larger) unsplit end numbers. The jump is held at
+// zero at tips (single nodes: the tip line in 3D) and at nodes on Dirichlet patches. Signs and
+// the 3D frame: SignConventions.hpp.
 #pragma once
 
 #include <array>
@@ -35,16 +38,21 @@ namespace friction {
 
 /// One node where β is defined.
 struct ControlNode {
-  int fracture = 0;  ///< index into SplitMesh::fractures
-  Index plus = 0;    ///< node of the split space on the Ω⁺ side
-  Index minus = 0;   ///< node on the Ω⁻ side (== plus at a tip)
-  Vector2 x = Vector2::Zero();
+  int fracture = 0;                ///< index into SplitMesh::fractures
+  Index plus = 0;                  ///< node of the split space on the Ω⁺ side
+  Index minus = 0;                 ///< node on the Ω⁻ side (== plus at a tip)
+  Vector2 x = Vector2::Zero();     ///< the position's first two coordinates (2D callers)
+  Point position = Point::Zero();  ///< [m]
   /// The node's frame (SignConventions.hpp) as 3-vectors, z = 0 in 2D: n_Γ and the tangent
-  /// basis t₁ … t_k (k = d − 1; in 2D tangent[0] = t_Γ and tangent[1] is unused).
+  /// basis t₁ … t_k (k = d − 1; in 2D tangent[0] = t_Γ and tangent[1] is unused). 3D: n_Γ
+  /// of a vertex is the splitter's area-weighted normal; of a P2 mid-edge node, the normalised
+  /// area-weighted sum of the (one or two) fault triangles on its edge — the vertex rule
+  /// applied to the midpoint, and the triangles its Γ weight (A/4 from each) comes from, so
+  /// that on a flat piece it is that piece's exact normal; t₁, t₂ = tangentBasis(n_Γ).
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   std::array<Eigen::Vector3d, 2> tangent{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  double arclength = 0;      ///< [m]
-  double weight = 0;         ///< lumped mass of Γ [m]
+  double arclength = 0;      ///< [m] (2D; 0 in 3D)
+  double weight = 0;         ///< lumped mass of Γ [m^(d−1)]
   bool tip = false;          ///< single node: no jump
   bool onDirichlet = false;  ///< on a Dirichlet patch: jump held at zero
 };
@@ -81,6 +89,10 @@ class FractureSystem : public SlipResponse {
   int numAssemblies() const { return numAssemblies_; }
 
   const std::vector<ControlNode>& controlNodes() const { return nodes_; }
+  /// 3D: replace node i's tangent basis by (t₁, n_Γ × t₁), t₁ a unit vector normal to n_Γ —
+  /// another choice than tangentBasis()'s. Tangential components (β, τ, S) are then on the new
+  /// basis; the physics does not change (the laws are isotropic in the tangent plane).
+  void setTangentBasis(Index node, const Eigen::Vector3d& t1);
   /// Control nodes where the jump is held although the fracture is there (Dirichlet).
   int numHeldOnDirichlet() const;
 
@@ -114,6 +126,9 @@ class FractureSystem : public SlipResponse {
   const Eigen::VectorXd& lastUnsplitSolution() const { return x_; }
 
  private:
+  // nodes_ and weights_ (constructor): 2D along each curve, 3D from the fault triangles.
+  void controlNodes2D(int degree);
+  void controlNodes3D(int degree);
   // x and Σ (d per control node, interleaved) for jump vector j (d per control node).
   void solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma);
   // Σ·direction at a node of sigma (d entries per node), summed in component order.
@@ -121,7 +136,7 @@ class FractureSystem : public SlipResponse {
 
   const SplitMesh& split_;
   const Material& material_;
-  int dim_ = 2;  ///< the dimension of the split mesh (triangles)
+  int dim_ = 2;  ///< the dimension of the split mesh (2: triangles, 3: tetrahedra)
   Mesh unsplitMesh_;
   std::unique_ptr<LagrangeSpace> splitSpace_, unsplitSpace_;
   std::unique_ptr<ElasticityAssembler> splitAssembler_, unsplitAssembler_;
