@@ -303,6 +303,7 @@ GEO
   expect "$out" "area:         0.25"
   expect "$out" "tip line:     2 (length of its edge inside the body)"
   expect "$out" "boundary 0; tips"
+  expect "$out" "triangles with all three vertices on the tip line (no jump there)"
   expect "$out" "normal:       (0 0 -1) area-weighted mean"
   line=$(grep "nodes:" <<<"$out" | head -1)
   [[ $line =~ nodes:\ +([0-9]+)\ \(duplicated\ ([0-9]+):\ interior\ ([0-9]+),\ boundary\ 0\;\ tips\ ([0-9]+)\) ]] ||

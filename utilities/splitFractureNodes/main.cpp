@@ -104,6 +104,8 @@ void printFractures3D(const Mesh& mesh, const SplitMesh& split) {
               << "    nodes:        " << g.numNodes() << " (duplicated " << g.numDuplicated()
               << ": interior " << g.numOfKind(FractureNodeKind::interior) << ", boundary "
               << g.numOfKind(FractureNodeKind::boundary) << "; tips " << g.numTips() << ")\n"
+              << "    glued:        " << g.numGluedTriangles()
+              << " triangles with all three vertices on the tip line (no jump there)\n"
               << "    normal:       " << formatPoint(mean.normalized(), 3)
               << " area-weighted mean (from Omega+ to Omega-)\n\n";
   }

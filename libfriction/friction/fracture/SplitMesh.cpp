@@ -93,6 +93,18 @@ Index FractureGeometry::numOfKind(FractureNodeKind k) const {
   return static_cast<Index>(std::count(kind.begin(), kind.end(), k));
 }
 
+Index FractureGeometry::numGluedTriangles() const {
+  // A tip keeps one node (plus == minus); triangles are listed by ⁺ copies, which are the
+  // unsplit node numbers.
+  std::set<Index> tips;
+  for (Index i = 0; i < numNodes(); ++i)
+    if (kind[i] == FractureNodeKind::tip) tips.insert(plus[i]);
+  Index glued = 0;
+  for (const auto& t : triangles)
+    if (tips.count(t[0]) && tips.count(t[1]) && tips.count(t[2])) ++glued;
+  return glued;
+}
+
 double FractureGeometry::area(const std::vector<Point>& points) const {
   double a = 0;
   for (const auto& t : triangles)

@@ -65,6 +65,10 @@ struct FractureGeometry {
   /// 3D: the length of the tip line: the edges of the surface's own boundary (edges of one of
   /// its triangles) that are not edges of a boundary face of the unsplit mesh. 0 in 2D.
   double tipLineLength(const Mesh& unsplit) const;
+  /// 3D: triangles whose three vertices are all tips (on the tip line). Their two sides keep
+  /// the same nodes, so they carry no jump: the fault is one cell wide there and cannot slip
+  /// (refine across it). 0 in 2D.
+  Index numGluedTriangles() const;
 };
 
 /// What a split mesh was made from, so that the solver can refuse one made from another mesh

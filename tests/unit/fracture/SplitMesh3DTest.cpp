@@ -173,6 +173,22 @@ TEST_CASE("3D: a fault inside the box keeps its whole tip line single", "[split]
   // Two corner triangles (in the squares at (4/6, 1/6) and (1/6, 4/6)) have three tip
   // vertices: they stay glued.
   checkLips(s, 2 * 16 - 2);
+  CHECK(g.numGluedTriangles() == 2);
+}
+
+TEST_CASE("3D: a fault one cell wide has no node to split, and the summary counts it glued",
+          "[split][3d]") {
+  // One square of the plane z = 1/2 inside the box: its 4 nodes are all on the tip line.
+  const int n = 4;
+  Mesh m = boxMesh(n);
+  addPlaneFault(m, n, 2, 2, 1, 2, 1, 2, 7, "fault");
+  const SplitMesh s = splitFractures(m, {{"fault", 7, {}}});
+  const FractureGeometry& g = s.fractures.at(0);
+  REQUIRE(g.triangles.size() == 2);
+  CHECK(g.numTips() == 4);
+  CHECK(g.numDuplicated() == 0);
+  CHECK(g.numGluedTriangles() == 2);
+  CHECK(s.mesh.numPoints() == m.numPoints());
 }
 
 TEST_CASE("3D: n_Γ's sign follows the largest component of the mean normal", "[split][3d]") {
