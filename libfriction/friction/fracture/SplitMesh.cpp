@@ -53,6 +53,24 @@ std::map<int, std::vector<Index>> sidesAround(Index v, const std::vector<Index>&
   return groups;
 }
 
+// Split node v: the Ω⁺ copy keeps the node number, the Ω⁻ copy is appended to out's points,
+// and the cells of the group on the Ω⁻ side (sideOf < 0, in the order of `groups`) are
+// renumbered to it. Returns the Ω⁻ copy.
+Index appendMinusCopy(SplitMesh& out, const Mesh& mesh, Index v,
+                      const std::map<int, std::vector<Index>>& groups, const int* sideOf) {
+  const Index copy = static_cast<Index>(out.mesh.points.size());
+  out.mesh.points.push_back(mesh.points[v]);
+  out.origin.push_back(v);
+  int gi = 0;
+  for (const auto& [root, list] : groups) {
+    if (sideOf[gi++] < 0)
+      for (Index t : list)
+        for (Index& x : out.mesh.cell(t))
+          if (x == v) x = copy;
+  }
+  return copy;
+}
+
 // The edges (a < b) of the boundary facets of a 3D mesh: where a surface's edge lies on ∂Ω.
 std::set<std::pair<Index, Index>> outerBoundaryEdges(const MeshTopology& topo) {
   std::set<std::pair<Index, Index>> edges;
@@ -397,19 +415,8 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
                                    ": cannot tell the two sides of the fracture apart (folded "
                                    "or inverted triangles next to it?)");
 
-      // The Ω⁺ copy keeps the node number; the Ω⁻ copy is appended.
-      const Index copy = static_cast<Index>(out.mesh.points.size());
-      out.mesh.points.push_back(mesh.points[v]);
-      out.origin.push_back(v);
-      gi = 0;
-      for (const auto& [root, list] : groups) {
-        if (sideOf[gi++] < 0)
-          for (Index t : list)
-            for (Index& x : out.mesh.cell(t))
-              if (x == v) x = copy;
-      }
       g.plus[i] = v;
-      g.minus[i] = copy;
+      g.minus[i] = appendMinusCopy(out, mesh, v, groups, sideOf);
     }
     out.fractures.push_back(std::move(g));
   }
@@ -725,19 +732,8 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
                                    ": cannot tell the two sides of the fracture apart (folded "
                                    "or inverted tetrahedra next to it?)");
 
-      // The Ω⁺ copy keeps the node number; the Ω⁻ copy is appended.
-      const Index copy = static_cast<Index>(out.mesh.points.size());
-      out.mesh.points.push_back(mesh.points[v]);
-      out.origin.push_back(v);
-      gi = 0;
-      for (const auto& [root, list] : groups) {
-        if (sideOf[gi++] < 0)
-          for (Index t : list)
-            for (Index& x : out.mesh.cell(t))
-              if (x == v) x = copy;
-      }
       g.plus[i] = v;
-      g.minus[i] = copy;
+      g.minus[i] = appendMinusCopy(out, mesh, v, groups, sideOf);
     }
     g.triangles = tri;
     out.fractures.push_back(std::move(g));
