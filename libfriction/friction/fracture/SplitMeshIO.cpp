@@ -33,6 +33,25 @@ const char* const resplit =
     " (constant/splitMesh is written by splitFractureNodes: split again with "
     "splitFractureNodes -case <case> -overwrite)";
 
+// One entry per fracture node in every list of a fracture's entry (`sizes`: key -> length).
+void requireOnePerNode(const Dictionary& f, std::size_t n,
+                       const std::map<std::string, std::size_t>& sizes) {
+  for (const auto& [key, size] : sizes)
+    if (size != n)
+      f.fail(key, "key '" + key + "': " + std::to_string(size) +
+                      " entries, expected one per fracture node (" + std::to_string(n) + ")");
+}
+
+// Fracture node i's copies: both copies of its node, and the same node exactly at tips.
+void requireCopies(const Dictionary& f, const SplitMesh& s, const FractureGeometry& g,
+                   std::size_t i) {
+  if (s.origin[g.plus[i]] != g.node[i] || s.origin[g.minus[i]] != g.node[i])
+    f.fail("plus", "fracture node " + std::to_string(i) +
+                       ": 'plus' and 'minus' must be copies of 'node' (see 'origin')");
+  if ((g.plus[i] == g.minus[i]) != (g.kind[i] == FractureNodeKind::tip))
+    f.fail("kind", "fracture node " + std::to_string(i) + ": exactly the tips have plus == minus");
+}
+
 // The 3D part of a fracture's entry (after node, plus, minus, kind): unit normals and the
 // triangles, each a face of the split mesh through its plus copies and through its minus
 // copies (the two lips of the cut).
@@ -41,21 +60,14 @@ void readSurface(const Dictionary& f, FractureGeometry& g, const SplitMesh& s,
                  const IsFace& isFace) {
   g.normal = f.getPointList("normal");
   const std::size_t n = g.node.size();
-  for (const auto& [key, size] : std::map<std::string, std::size_t>{{"plus", g.plus.size()},
-                                                                    {"minus", g.minus.size()},
-                                                                    {"kind", g.kind.size()},
-                                                                    {"normal", g.normal.size()}})
-    if (size != n)
-      f.fail(key, "key '" + key + "': " + std::to_string(size) +
-                      " entries, expected one per fracture node (" + std::to_string(n) + ")");
+  requireOnePerNode(f, n,
+                    {{"plus", g.plus.size()},
+                     {"minus", g.minus.size()},
+                     {"kind", g.kind.size()},
+                     {"normal", g.normal.size()}});
   std::map<Index, std::size_t> local;  // plus copy -> fracture node
   for (std::size_t i = 0; i < n; ++i) {
-    if (s.origin[g.plus[i]] != g.node[i] || s.origin[g.minus[i]] != g.node[i])
-      f.fail("plus", "fracture node " + std::to_string(i) +
-                         ": 'plus' and 'minus' must be copies of 'node' (see 'origin')");
-    if ((g.plus[i] == g.minus[i]) != (g.kind[i] == FractureNodeKind::tip))
-      f.fail("kind",
-             "fracture node " + std::to_string(i) + ": exactly the tips have plus == minus");
+    requireCopies(f, s, g, i);
     if (!(std::abs(g.normal[i].norm() - 1) <= 1e-9))
       f.fail("normal", "fracture node " + std::to_string(i) + ": 'normal' must be a unit vector" +
                            std::string(resplit));
@@ -349,23 +361,15 @@ SplitMesh readSplitMesh(const std::string& path) {
     g.arclength = f.getScalarList("arclength");
     for (const Vector2& v : f.getVectorList("normal")) g.normal.emplace_back(v.x(), v.y(), 0.0);
     g.tangent = f.getVectorList("tangent");
-    for (const auto& [key, size] :
-         std::map<std::string, std::size_t>{{"plus", g.plus.size()},
-                                            {"minus", g.minus.size()},
-                                            {"kind", g.kind.size()},
-                                            {"arclength", g.arclength.size()},
-                                            {"normal", g.normal.size()},
-                                            {"tangent", g.tangent.size()}})
-      if (size != n)
-        f.fail(key, "key '" + key + "': " + std::to_string(size) +
-                        " entries, expected one per fracture node (" + std::to_string(n) + ")");
+    requireOnePerNode(f, n,
+                      {{"plus", g.plus.size()},
+                       {"minus", g.minus.size()},
+                       {"kind", g.kind.size()},
+                       {"arclength", g.arclength.size()},
+                       {"normal", g.normal.size()},
+                       {"tangent", g.tangent.size()}});
     for (std::size_t i = 0; i < n; ++i) {
-      if (s.origin[g.plus[i]] != g.node[i] || s.origin[g.minus[i]] != g.node[i])
-        f.fail("plus", "fracture node " + std::to_string(i) +
-                           ": 'plus' and 'minus' must be copies of 'node' (see 'origin')");
-      if ((g.plus[i] == g.minus[i]) != (g.kind[i] == FractureNodeKind::tip))
-        f.fail("kind",
-               "fracture node " + std::to_string(i) + ": exactly the tips have plus == minus");
+      requireCopies(f, s, g, i);
       // The solver takes the frame as written: it must be one (SignConventions.hpp).
       const double tol = 1e-9;
       if (!(std::abs(g.tangent[i].norm() - 1) <= tol) ||
