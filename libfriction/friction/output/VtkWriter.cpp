@@ -95,10 +95,15 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
     throw std::invalid_argument("writeVtu: u has " + std::to_string(u.size()) +
                                 " values, the space " + std::to_string(space.numDofs()) + " dofs");
   const Mesh& mesh = space.mesh();
+  const bool is3d = space.dim() == 3;
+  if (is3d && initialStress)
+    throw std::invalid_argument(
+        "writeVtu: an initial stress is a 2D field (Matrix2d); it is not defined on a 3D mesh");
   const Index numNodes = space.numNodes();
   const Index numCells = space.numCells();
   const int perCell = space.nodesPerCell();
-  const int cellType = space.degree() == 1 ? kVtkTriangle : kVtkQuadraticTriangle;
+  const int cellType = is3d ? (space.degree() == 1 ? kVtkTetra : kVtkQuadraticTetra)
+                            : (space.degree() == 1 ? kVtkTriangle : kVtkQuadraticTriangle);
   const Material& material = assembler.material();
 
   std::ostringstream s;
@@ -109,8 +114,13 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 
   s << "      <PointData Vectors=\"displacement\">\n";
   openArray(s, "Float64", "displacement", 3);
-  for (Index n = 0; n < numNodes; ++n)
-    s << "          " << finite(u[space.dof(n, 0)]) << " " << finite(u[space.dof(n, 1)]) << " 0\n";
+  for (Index n = 0; n < numNodes; ++n) {
+    s << "          " << finite(u[space.dof(n, 0)]) << " " << finite(u[space.dof(n, 1)]);
+    if (is3d)
+      s << " " << finite(u[space.dof(n, 2)]) << "\n";
+    else
+      s << " 0\n";
+  }
   closeArray(s);
   s << "      </PointData>\n";
 
@@ -124,18 +134,33 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
             " ComponentName3=\"XY\" ComponentName4=\"YZ\" ComponentName5=\"XZ\"");
   for (Index c = 0; c < numCells; ++c) {
     const auto t = mesh.cell(c);
-    const Vector2 centroid =
-        (mesh.points[t[0]].head<2>() + mesh.points[t[1]].head<2>() + mesh.points[t[2]].head<2>()) /
-        3.0;
-    Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
-    if (initialStress) sigma += initialStress(centroid);
-    const double szz = material.outOfPlaneStress(assembler.strain(u, c, centroid));
-    const double sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
-    s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
-      << finite(sxy) << " 0 0\n";
-    const double vonMises = std::sqrt(
-        0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-        3.0 * sxy * sxy);
+    double sxx, syy, szz, sxy, syz = 0.0, sxz = 0.0;
+    if (is3d) {
+      const Point centroid =
+          (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]] + mesh.points[t[3]]) / 4.0;
+      const Eigen::Matrix3d sigma = assembler.stress(u, c, centroid);
+      sxx = sigma(0, 0), syy = sigma(1, 1), szz = sigma(2, 2);
+      sxy = sigma(0, 1), syz = sigma(1, 2), sxz = sigma(0, 2);
+      s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
+        << finite(sxy) << " " << finite(syz) << " " << finite(sxz) << "\n";
+    } else {
+      // The 2D types and formulas as before the 3D branch existed: the files stay the same
+      // byte for byte.
+      const Vector2 centroid = (mesh.points[t[0]].head<2>() + mesh.points[t[1]].head<2>() +
+                                mesh.points[t[2]].head<2>()) /
+                               3.0;
+      Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
+      if (initialStress) sigma += initialStress(centroid);
+      szz = material.outOfPlaneStress(assembler.strain(u, c, centroid));
+      sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
+      s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
+        << finite(sxy) << " 0 0\n";
+    }
+    const double normal =
+        0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx));
+    // 2D: the expression (and so the rounding) of the files written before 3D existed.
+    const double vonMises = is3d ? std::sqrt(normal + 3.0 * (sxy * sxy + syz * syz + sxz * sxz))
+                                 : std::sqrt(normal + 3.0 * sxy * sxy);
     vm << "          " << finite(vonMises) << "\n";
     const int r = static_cast<std::size_t>(c) < mesh.cellRegion.size()
                       ? mesh.cellRegion[static_cast<std::size_t>(c)]
@@ -154,8 +179,12 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
   s << "      <Points>\n";
   openArray(s, "Float64", "", 3);
   for (Index n = 0; n < numNodes; ++n) {
-    const Vector2& x = space.coordinate(n);
-    s << "          " << x.x() << " " << x.y() << " 0\n";
+    const Point& x = space.point(n);
+    s << "          " << x.x() << " " << x.y() << " ";
+    if (is3d)
+      s << x.z() << "\n";
+    else
+      s << "0\n";
   }
   closeArray(s);
   s << "      </Points>\n";

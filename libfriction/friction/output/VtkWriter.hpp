@@ -38,25 +38,34 @@ namespace friction {
 constexpr int kVtkPolyLine = 4;
 constexpr int kVtkTriangle = 5;
 constexpr int kVtkQuadraticTriangle = 22;
+constexpr int kVtkTetra = 10;
+constexpr int kVtkQuadraticTetra = 24;
 
 /// Integer code of a fracture-node state in the .vtp "state" array: 0 stick, 1 slip,
 /// 2 open, 3 tip. Throws std::invalid_argument for any other string (the solver writes only these).
 int vtkStateCode(const std::string& state);
 
-/// Write the displacement and stress of `u` on the mesh of `space` as a VTK XML unstructured
-/// grid (ASCII) at `path`; the folder must exist (OutputError otherwise, naming path).
-///  * points: every node of `space` (P2: the vertices, then the edge midpoints), z = 0 [m];
-///  * cells: VTK_TRIANGLE (5) for P1, VTK_QUADRATIC_TRIANGLE (22) for P2 with its six nodes
-///    in LagrangeSpace's local order v0 v1 v2 mid01 mid12 mid20, which is VTK's;
-///  * point data "displacement" [m], 3 components, z = 0;
+/// Write the displacement and stress of `u` on the mesh of `space` (2D or 3D) as a VTK XML
+/// unstructured grid (ASCII) at `path`; the folder must exist (OutputError otherwise, naming
+/// path).
+///  * points: every node of `space` (P2: the vertices, then the edge midpoints), (x, y, z)
+///    [m], z = 0 in 2D;
+///  * cells: 2D: VTK_TRIANGLE (5) for P1, VTK_QUADRATIC_TRIANGLE (22) for P2 with its six
+///    nodes in LagrangeSpace's local order v0 v1 v2 mid01 mid12 mid20, which is VTK's;
+///    3D: VTK_TETRA (10) for P1, VTK_QUADRATIC_TETRA (24) for P2 with its ten nodes in
+///    LagrangeSpace's local order v0 v1 v2 v3 mid01 mid12 mid20 mid03 mid13 mid23, which is
+///    VTK's (fe/Simplex.hpp);
+///  * point data "displacement" [m], 3 components (z = 0 in 2D);
 ///  * cell data "stress" [Pa], 6 components xx yy zz xy yz xz (VTK's symmetric-tensor order),
-///    at the cell centroid; σ_zz from Material::outOfPlaneStress (λ tr ε in plane strain, 0 in
-///    plane stress), σ_yz = σ_xz = 0; "vonMises" [Pa] of that 3D stress (so it includes σ_zz
-///    in plane strain); "region" (Int32), the mesh's region number per triangle.
+///    at the cell centroid. 3D: the full stress of 3D Hooke's law. 2D: σ_zz from
+///    Material::outOfPlaneStress (λ tr ε in plane strain, 0 in plane stress), σ_yz = σ_xz = 0;
+///    "vonMises" [Pa] of that 3D stress (so it includes σ_zz in plane strain); "region"
+///    (Int32), the mesh's region number per cell.
 /// `space` must be the space `assembler` was built on and `u` its interleaved dof vector
-/// (2 · numNodes values [m]). `precision`: significant digits of every number.
+/// (dim · numNodes values [m]). `precision`: significant digits of every number.
 /// `initialStress`, if given, is an in-situ stress σ⁰(x) [Pa] added to the in-plane stress
-/// (effect initialStress; its σ_zz is taken as 0).
+/// (effect initialStress; its σ_zz is taken as 0). It is a 2D field: on a 3D space it throws
+/// std::invalid_argument (a caller's error; nothing is written).
 void writeVtu(const std::string& path, const LagrangeSpace& space,
               const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
               const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress = {});

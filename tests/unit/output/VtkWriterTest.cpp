@@ -1,7 +1,8 @@
 // The VTK XML output (output/VtkWriter) read back by VTK itself: readVtk.py, run with Debian's
 // /usr/bin/python3 and python3-vtk9, reads the .pvd, .vtu and .vtp files and checks counts,
 // cell types and node order, connectivity, the displacement on both sides of a fracture, the
-// exact stress of a linear field and the fracture arrays (see readVtk.py for the list).
+// exact stress of a linear field and the fracture arrays (see readVtk.py for the list); on a
+// tetrahedral box (P1 and P2) also VTK's own cell edges and cell volumes.
 // A missing /usr/bin/python3 or vtk module fails the test: etc/debian-packages lists them.
 #include <catch2/catch.hpp>
 
@@ -10,9 +11,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
+#include "../fe/FeTestMeshes.hpp"
 #include "../fracture/TestMeshes.hpp"
 #include "friction/core/InputError.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
@@ -98,6 +102,19 @@ std::string readFile(const fs::path& p) {
   return s.str();
 }
 
+/// Run readVtk.py on `pvd` with `arguments`; its output goes to dir/readVtk.log.
+int runReadVtk(const fs::path& dir, const std::string& pvd, const std::string& arguments,
+               std::string& log) {
+  REQUIRE(fs::exists("/usr/bin/python3"));  // Debian's, which sees python3-vtk9
+  const fs::path script = fs::path(FRICTION_SOURCE_DIR) / "tests/unit/output/readVtk.py";
+  REQUIRE(fs::exists(script));
+  const std::string cmd = "/usr/bin/python3 '" + script.string() + "' '" + pvd + "'" + arguments +
+                          " > '" + (dir / "readVtk.log").string() + "' 2>&1";
+  const int status = std::system(cmd.c_str());
+  log = cmd + "\n" + readFile(dir / "readVtk.log");
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 int countOf(const std::string& text, const std::string& what) {
   int n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -152,21 +169,16 @@ TEST_CASE("VTK output of a linear field on a split mesh reads back in VTK with e
   for (const auto& e : fs::recursive_directory_iterator(caseDir / "VTK"))
     CHECK(e.path().filename().string().rfind(".", 0) != 0);
 
-  REQUIRE(fs::exists("/usr/bin/python3"));  // Debian's, which sees python3-vtk9
-  const fs::path script = fs::path(FRICTION_SOURCE_DIR) / "tests/unit/output/readVtk.py";
-  REQUIRE(fs::exists(script));
-  std::ostringstream cmd;
-  cmd.precision(17);
-  cmd << "/usr/bin/python3 '" << script.string() << "' '" << series.pvdPath() << "'"
-      << " --E " << kE << " --nu " << kNu << (planeStress ? " --planeStress" : "") << " --A "
-      << kA[0] << " " << kA[1] << " " << kA[2] << " " << kA[3] << " --b " << kB[0] << " " << kB[1]
-      << " --jump " << kC[0] << " " << kC[1] << " --fractureY " << kFractureY << " --points "
-      << wantPoints << " --cells 32 --degree " << degree << " --fracturePoints " << kFracturePoints
-      << " --times 2"
-      << " > '" << (dir / "readVtk.log").string() << "' 2>&1";
-  const int status = std::system(cmd.str().c_str());
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  INFO(cmd.str() << "\n" << readFile(dir / "readVtk.log"));
+  std::ostringstream args;
+  args.precision(17);
+  args << " --E " << kE << " --nu " << kNu << (planeStress ? " --planeStress" : "") << " --A "
+       << kA[0] << " " << kA[1] << " " << kA[2] << " " << kA[3] << " --b " << kB[0] << " " << kB[1]
+       << " --jump " << kC[0] << " " << kC[1] << " --fractureY " << kFractureY << " --points "
+       << wantPoints << " --cells 32 --degree " << degree << " --fracturePoints " << kFracturePoints
+       << " --times 2";
+  std::string log;
+  const int code = runReadVtk(dir, series.pvdPath(), args.str(), log);
+  INFO(log);
   REQUIRE(code == 0);
   fs::remove_all(dir);
 }
@@ -196,5 +208,89 @@ TEST_CASE("VTK writers refuse what they cannot write and unknown fracture states
   CHECK(pvd.find("file=\"x&quot;y.vtp\"") != std::string::npos);
   CHECK(pvd.find("name=\"&lt;f&gt;\"") != std::string::npos);
   CHECK(pvd.find("timestep=\"0.25\" group=\"\" part=\"1\"") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+namespace {
+
+// 3D: u(x) = t (a + G x) on a jittered tetrahedral unit cube; G has a symmetric and a skew
+// part (the skew part must not stress the body).
+const double kG[9] = {2.0e-3,  -2.0e-4, 5.0e-4,   //
+                      7.0e-4,  -3.0e-3, 1.5e-3,   //
+                      -6.0e-4, 9.0e-4,  1.2e-3};  // G(i, j), row by row
+const double kA3[3] = {1.0e-2, -2.0e-2, 3.0e-3};  // [m]
+
+Eigen::VectorXd linearField3d(const LagrangeSpace& space, double t) {
+  Eigen::VectorXd u(space.numDofs());
+  for (Index n = 0; n < space.numNodes(); ++n) {
+    const Point& x = space.point(n);
+    for (int i = 0; i < 3; ++i)
+      u[space.dof(n, i)] =
+          t * (kA3[i] + kG[3 * i] * x.x() + kG[3 * i + 1] * x.y() + kG[3 * i + 2] * x.z());
+  }
+  return u;
+}
+
+}  // namespace
+
+TEST_CASE("VTK output of a linear field on tetrahedra reads back in VTK with exact values",
+          "[output][vtk][3d]") {
+  const int degree = GENERATE(1, 2);
+  INFO("degree " << degree);
+
+  Mesh mesh = test::unitCubeMesh(2, 0.3);
+  // Regions 1 2 3 by cell number (readVtk.py --dim 3 expects 1 + c % 3).
+  mesh.cellRegion.resize(static_cast<std::size_t>(mesh.numCells()));
+  for (Index c = 0; c < mesh.numCells(); ++c)
+    mesh.cellRegion[static_cast<std::size_t>(c)] = 1 + static_cast<int>(c % 3);
+  const LagrangeSpace space(mesh, degree);
+  const Material material = Material::fromYoungPoisson(kE, kNu, false);
+  const ElasticityAssembler assembler(space, material);
+  REQUIRE(space.dim() == 3);
+
+  // 2³ cubes x 6 tetrahedra; P1 points 3³; P2 adds one node per edge, counted here from the
+  // cells themselves.
+  std::set<std::pair<Index, Index>> edges;
+  for (Index c = 0; c < mesh.numCells(); ++c) {
+    const auto v = mesh.cell(c);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) edges.insert(std::minmax(v[i], v[j]));
+  }
+  const Index wantPoints = degree == 1 ? 27 : 27 + static_cast<Index>(edges.size());
+  REQUIRE(mesh.numCells() == 48);
+  REQUIRE(space.numNodes() == wantPoints);
+
+  const fs::path dir = freshTempDir("tet" + std::to_string(degree));
+  VtkSeries series((dir / "box").string());
+  for (const double t : {0.5, 1.0}) {
+    std::ostringstream name;
+    name << t;
+    series.write(t, name.str(), space, assembler, linearField3d(space, t), {}, 17);
+  }
+
+  std::ostringstream args;
+  args.precision(17);
+  args << " --dim 3 --E " << kE << " --nu " << kNu << " --G";
+  for (const double g : kG) args << " " << g;
+  args << " --b " << kA3[0] << " " << kA3[1] << " " << kA3[2] << " --points " << wantPoints
+       << " --cells 48 --degree " << degree << " --fracturePoints 0 --times 2";
+  std::string log;
+  const int code = runReadVtk(dir, series.pvdPath(), args.str(), log);
+  INFO(log);
+  REQUIRE(code == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("writeVtu refuses a 2D initial stress on a tetrahedral mesh", "[output][vtk][3d]") {
+  const Mesh mesh = test::unitCubeMesh(1);
+  const LagrangeSpace space(mesh, 1);
+  const ElasticityAssembler assembler(space, Material::fromYoungPoisson(kE, kNu, false));
+  const fs::path dir = freshTempDir("tetInitial");
+  const fs::path path = dir / "a.vtu";
+  const auto sigma0 = [](const Vector2&) { return Eigen::Matrix2d::Identity().eval(); };
+  CHECK_THROWS_AS(
+      writeVtu(path.string(), space, assembler, Eigen::VectorXd::Zero(space.numDofs()), 8, sigma0),
+      std::invalid_argument);
+  CHECK_FALSE(fs::exists(path));
   fs::remove_all(dir);
 }
