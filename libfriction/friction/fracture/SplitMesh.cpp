@@ -53,6 +53,23 @@ std::map<int, std::vector<Index>> sidesAround(Index v, const std::vector<Index>&
   return groups;
 }
 
+// The split mesh before any node is split: the mesh's points, cells and names, every node
+// its own origin; the patches are added by the caller.
+SplitMesh unsplitCopy(const Mesh& mesh) {
+  SplitMesh out;
+  out.mesh.source = mesh.source;
+  out.mesh.format = mesh.format;
+  out.mesh.dim = mesh.dim;
+  out.mesh.points = mesh.points;
+  out.mesh.cellVertices = mesh.cellVertices;
+  out.mesh.cellRegion = mesh.cellRegion;
+  out.mesh.labelNames = mesh.labelNames;
+  out.mesh.regionNames = mesh.regionNames;
+  out.origin.resize(mesh.points.size());
+  std::iota(out.origin.begin(), out.origin.end(), 0);
+  return out;
+}
+
 // Split node v: the Ω⁺ copy keeps the node number, the Ω⁻ copy is appended to out's points,
 // and the cells of the group on the Ω⁻ side (sideOf < 0, in the order of `groups`) are
 // renumbered to it. Returns the Ω⁻ copy.
@@ -289,17 +306,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
     for (Index v : mesh.cell(t))
       if (nodeEdges.count(v)) fan[v].push_back(t);
 
-  SplitMesh out;
-  out.mesh.source = mesh.source;
-  out.mesh.format = mesh.format;
-  out.mesh.dim = mesh.dim;
-  out.mesh.points = mesh.points;
-  out.mesh.cellVertices = mesh.cellVertices;
-  out.mesh.cellRegion = mesh.cellRegion;
-  out.mesh.labelNames = mesh.labelNames;
-  out.mesh.regionNames = mesh.regionNames;
-  out.origin.resize(nPoints);
-  std::iota(out.origin.begin(), out.origin.end(), 0);
+  SplitMesh out = unsplitCopy(mesh);
 
   // 4. Per fracture: order the nodes along the curve, then split each node.
   for (std::size_t f = 0; f < specs.size(); ++f) {
@@ -643,17 +650,7 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
     for (Index v : mesh.cell(t))
       if (fractureOfNode[v] >= 0) fan[v].push_back(t);
 
-  SplitMesh out;
-  out.mesh.source = mesh.source;
-  out.mesh.format = mesh.format;
-  out.mesh.dim = 3;
-  out.mesh.points = mesh.points;
-  out.mesh.cellVertices = mesh.cellVertices;
-  out.mesh.cellRegion = mesh.cellRegion;
-  out.mesh.labelNames = mesh.labelNames;
-  out.mesh.regionNames = mesh.regionNames;
-  out.origin.resize(nPoints);
-  std::iota(out.origin.begin(), out.origin.end(), 0);
+  SplitMesh out = unsplitCopy(mesh);
 
   for (std::size_t f = 0; f < specs.size(); ++f) {
     const FractureSpec& spec = specs[f];
