@@ -95,18 +95,23 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   sigmaLoad_ = Eigen::VectorXd::Zero(dim_ * n);
 }
 
+ControlNode FractureSystem::vertexNode(int f, const FractureGeometry& g, Index i) const {
+  ControlNode v;
+  v.fracture = f;
+  v.plus = g.plus[i];
+  v.minus = g.minus[i];
+  v.position = split_.mesh.points[g.plus[i]];
+  v.x = v.position.head<2>();
+  return v;
+}
+
 void FractureSystem::controlNodes2D(int degree) {
   // Control nodes in arclength order: vertices, and for P2 the edge midpoints between them.
   std::vector<std::array<Index, 2>> plusEdges;
   for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f) {
     const FractureGeometry& g = split_.fractures[f];
     for (Index i = 0; i < g.numNodes(); ++i) {
-      ControlNode v;
-      v.fracture = f;
-      v.plus = g.plus[i];
-      v.minus = g.minus[i];
-      v.position = split_.mesh.points[g.plus[i]];
-      v.x = v.position.head<2>();
+      ControlNode v = vertexNode(f, g, i);
       v.normal = frameVector(g.normal[i]);
       v.tangent[0] = frameVector(g.tangent[i]);
       v.arclength = g.arclength[i];
@@ -143,12 +148,7 @@ void FractureSystem::controlNodes3D(int degree) {
     std::vector<Index> local(static_cast<std::size_t>(split_.numOriginalPoints()), -1);
     for (Index i = 0; i < g.numNodes(); ++i) {
       local[g.node[i]] = i;
-      ControlNode v;
-      v.fracture = f;
-      v.plus = g.plus[i];
-      v.minus = g.minus[i];
-      v.position = split_.mesh.points[g.plus[i]];
-      v.x = v.position.head<2>();
+      ControlNode v = vertexNode(f, g, i);
       v.normal = g.normal[i];
       v.tangent = tangentBasis(v.normal);
       v.tip = g.kind[i] == FractureNodeKind::tip;

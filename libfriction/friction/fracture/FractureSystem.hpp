@@ -127,6 +127,8 @@ class FractureSystem : public SlipResponse {
 
  private:
   // nodes_ and weights_ (constructor): 2D along each curve, 3D from the fault triangles.
+  /// Fracture f's node i as a control node: its copies and position (the frame is the caller's).
+  ControlNode vertexNode(int f, const FractureGeometry& g, Index i) const;
   void controlNodes2D(int degree);
   void controlNodes3D(int degree);
   // x and Σ (d per control node, interleaved) for jump vector j (d per control node).

@@ -78,27 +78,38 @@ def fractureRows(m):
     return rows
 
 
-def checkVtu(path, t, a):
+def readCells(path, a, per, wantType):
+    """The grid at path with its counts, point coordinates and cells checked (per nodes of VTK
+    type wantType each, connectivity in range, every point used): (g, name, pts, conn, offs), or
+    None when there is nothing more to check."""
     g = read(vtkXMLUnstructuredGridReader, path)
     name = os.path.basename(path)
     nP, nC = g.GetNumberOfPoints(), g.GetNumberOfCells()
     check(nP == a.points, f"{name}: {nP} points (expected {a.points})")
     check(nC == a.cells, f"{name}: {nC} cells (expected {a.cells})")
     if nP == 0 or nC == 0:
-        return
+        return None
     pts = vtk_to_numpy(g.GetPoints().GetData())
     conn = vtk_to_numpy(g.GetCells().GetConnectivityArray())
     offs = vtk_to_numpy(g.GetCells().GetOffsetsArray())
     types = vtk_to_numpy(g.GetCellTypesArray())
-    per = 3 if a.degree == 1 else 6
-    wantType = 5 if a.degree == 1 else 22
     check(all(int(x) == wantType for x in types), f"{name}: every cell has VTK type {wantType}")
     check(len(offs) == nC + 1 and all(offs[i + 1] - offs[i] == per for i in range(nC)),
           f"{name}: every cell has {per} nodes")
     if not check(len(conn) == per * nC and conn.min() >= 0 and conn.max() < nP,
                  f"{name}: connectivity in range [0, {nP}) (min {conn.min()}, max {conn.max()})"):
-        return
+        return None
     check(len(set(int(x) for x in conn)) == nP, f"{name}: every point is used by a cell")
+    return g, name, pts, conn, offs
+
+
+def checkVtu(path, t, a):
+    per = 3 if a.degree == 1 else 6
+    got = readCells(path, a, per, 5 if a.degree == 1 else 22)
+    if got is None:
+        return
+    g, name, pts, conn, offs = got
+    nP, nC = g.GetNumberOfPoints(), g.GetNumberOfCells()
 
     disp = g.GetPointData().GetArray("displacement")
     stress = g.GetCellData().GetArray("stress")
@@ -173,26 +184,12 @@ def checkVtu(path, t, a):
 
 
 def checkVtu3d(path, t, a):
-    g = read(vtkXMLUnstructuredGridReader, path)
-    name = os.path.basename(path)
-    nP, nC = g.GetNumberOfPoints(), g.GetNumberOfCells()
-    check(nP == a.points, f"{name}: {nP} points (expected {a.points})")
-    check(nC == a.cells, f"{name}: {nC} cells (expected {a.cells})")
-    if nP == 0 or nC == 0:
-        return
-    pts = vtk_to_numpy(g.GetPoints().GetData())
-    conn = vtk_to_numpy(g.GetCells().GetConnectivityArray())
-    offs = vtk_to_numpy(g.GetCells().GetOffsetsArray())
-    types = vtk_to_numpy(g.GetCellTypesArray())
     per = 4 if a.degree == 1 else 10
-    wantType = 10 if a.degree == 1 else 24
-    check(all(int(x) == wantType for x in types), f"{name}: every cell has VTK type {wantType}")
-    check(len(offs) == nC + 1 and all(offs[i + 1] - offs[i] == per for i in range(nC)),
-          f"{name}: every cell has {per} nodes")
-    if not check(len(conn) == per * nC and conn.min() >= 0 and conn.max() < nP,
-                 f"{name}: connectivity in range [0, {nP}) (min {conn.min()}, max {conn.max()})"):
+    got = readCells(path, a, per, 10 if a.degree == 1 else 24)
+    if got is None:
         return
-    check(len(set(int(x) for x in conn)) == nP, f"{name}: every point is used by a cell")
+    g, name, pts, conn, offs = got
+    nP, nC = g.GetNumberOfPoints(), g.GetNumberOfCells()
 
     # Cell validity as VTK sees it: volumes (for P2 by VTK's own subdivision of the quadratic
     # cell) positive and filling the unit cube; for P2 each of VTK's quadratic edges has its
