@@ -162,7 +162,7 @@ TEST_CASE("3D fixedDisplacement fixes exactly the components listed", "[case][bc
   }
   SECTION("all three components without 'components'") {
     const BoundaryConditions all(
-        zeroD("z0 { type fixedDisplacement; value (0 0 0.01); }\n", {"z0"}), mesh, {});
+        zeroD("z0 { type fixedDisplacement; value uniform (0 0 0.01); }\n", {"z0"}), mesh, {});
     const LagrangeSpace V(mesh, 1);
     DirichletConditions dirichlet(V);
     all.fix(dirichlet);
@@ -197,6 +197,14 @@ TEST_CASE("3D 0/D: wrong component counts and words are errors naming the key", 
     const std::string message = errorOf(zeroD(std::string(b.entry) + "\n", {"x0"}), mesh);
     CHECK(message.find(b.message) != std::string::npos);
     CHECK(message.rfind("0/D:", 0) == 0);
+  }
+  SECTION("a pressure patch's triangle that no tetrahedron has") {
+    Mesh bad = mesh;
+    // (1 0 0) (0 1 0) (0 0 1): every Kuhn tetrahedron has the corners 0 and 7, this has neither.
+    bad.addFacet({1, 2, 4}, 2);
+    CHECK(errorOf(zeroD("x1 { type pressure; pressure 1; }\n", {"x1"}), bad) ==
+          "unitCube1: the triangle (1 0 0) (0 1 0) (0 0 1) of patch 'x1' is not a face of any "
+          "tetrahedron");
   }
   SECTION("every boundary patch (triangles) must be listed") {
     const Dictionary d = Dictionary::parse(
