@@ -132,7 +132,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
         skippedEffects_.push_back(key);
         continue;
       }
-      effects_.push_back(Effect::New(key, e, names, caseDir));
+      effects_.push_back(Effect::New(key, e, names, caseDir, split_.mesh.dim));
     }
     ed.checkAllRead();
   }
@@ -948,7 +948,8 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
     if (hasInitialStress)
       sigma0 = [this](const Vector2& x) {
         Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
-        for (const auto& e : effects_) s += e->initialStress(x);
+        for (const auto& e : effects_)
+          s += e->initialStress(Point(x.x(), x.y(), 0.0)).topLeftCorner<2, 2>();
         return s;
       };
     vtk_->write(r.time, time_->timeName(r.time), sys.splitSpace(), sys.splitAssembler(), u,
