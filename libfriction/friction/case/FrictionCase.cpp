@@ -866,11 +866,14 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   const int precision = time_->writePrecision();
   TimeFolder folder(caseDir_, time_->timeName(r.time));
   const FractureSystem& sys = *system_;
+  const LagrangeSpace& space = sys.splitSpace();
+  const int dim = sys.dimension();
 
   // Displacement at the split-mesh points (P2: the vertices, which come first).
   const Eigen::VectorXd u = sys.lastSplitDisplacement();
-  std::vector<Vector2> points(split_.mesh.points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) points[i] = u.segment<2>(2 * i);
+  std::vector<Point> points(split_.mesh.points.size(), Point::Zero());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int c = 0; c < dim; ++c) points[i][c] = u[space.dof(static_cast<Index>(i), c)];
   writeDisplacementField(folder.file("D"), points, precision);
 
   std::ostringstream status;
@@ -878,45 +881,79 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
          << " backSubstitutions " << r.backSubstitutions << " J " << r.J << " relResidual "
          << r.relResidual << " maxExcessST " << r.maxExcessST << " equilibrium " << r.equilibrium;
   const auto& nodes = sys.controlNodes();
-  // The tables hold one tangential component per node (2D, k = 1). For k > 1 they will give
-  // the components on t₁ … t_k of slip, slip increment, τ and residual, and the magnitudes
-  // |slip| and |τ| (ST = |τ| / −σ'_n); the frame is written once per fracture.
-  FRICTION_ASSERT(sys.blockSize() == 1, "fracture tables of k > 1 components are not defined");
+  // k tangential components per node (k = d − 1), node-major in last_.tau, last_.D, slip_, beta.
+  const int kb = sys.blockSize();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<VtkSeries::Fracture> vtkFractures;
   for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
-    std::vector<FractureRow> rows;
+    VtkSeries::Fracture out{split_.fractures[f].name, {}};
+    std::vector<FractureRow>& rows = out.rows;
+    std::map<Index, Index> rowOfPlus;  // the Ω⁺ copy of a control node -> its row
     for (std::size_t k = 0; k < nodes.size(); ++k) {
       if (nodes[k].fracture != static_cast<int>(f)) continue;
-      const double sn = last_.sigmaN[k], tau = last_.tau[k];
+      const bool tip = nodes[k].tip;
       const bool held = sys.freeMask()[k] == 0;
-      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const Eigen::Index at = kb * static_cast<Eigen::Index>(k);
       FractureRow row;
       row.s = nodes[k].arclength;
-      row.x = nodes[k].x.x();
-      row.y = nodes[k].x.y();
-      row.slip = slip_[k];
-      row.slipIncrement = beta[k];
-      // At a tip (single node) the two sides are not told apart: no traction is recovered,
-      // and the table says so (nan, state tip) rather than show a zero that plots would draw.
-      row.sigmaN = nodes[k].tip ? nan : sn;
-      row.tau = nodes[k].tip ? nan : tau;
-      // Slip tendency on the effective normal stress σ_n + p (p = 0 without fracturePressure).
+      row.position = nodes[k].position;
+      row.normal = nodes[k].normal;
+      row.tangent = nodes[k].tangent;
+      for (int c = 0; c < kb; ++c) {
+        row.slip[c] = slip_[at + c];
+        row.slipIncrement[c] = beta[at + c];
+        // At a tip (single node) the two sides are not told apart: no traction is recovered,
+        // and the table says so (nan, state tip) rather than show a zero that plots would draw.
+        row.tau[c] = tip ? nan : last_.tau[at + c];
+        row.residual[c] = tip ? nan : last_.D[at + c];
+      }
+      const double sn = last_.sigmaN[k];
+      row.sigmaN = tip ? nan : sn;
+      // Slip tendency |τ| / −σ'_n on the effective normal stress σ'_n = σ_n + p (p = 0 without
+      // fracturePressure); |τ| of k = 1 is |τ₁| exactly (blockNorm).
       const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
-      row.ST = nodes[k].tip ? nan : effective < 0 ? std::abs(tau) / -effective : 0.0;
-      row.residual = nodes[k].tip ? nan : last_.D[k];
+      const double tauNorm = blockNorm(last_.tau.segment(at, kb));
+      row.ST = tip ? nan : effective < 0 ? tauNorm / -effective : 0.0;
       // Nodes on Dirichlet patches have their jump held at zero: they stick. The law's bound
       // ρ ≤ 0 frees a node; it is open only where σ'_n ≥ 0 — compressed (frictionless, μ_f = 0)
       // it slides freely.
       const SlipState law = last_.node[k].state;
-      row.state = nodes[k].tip             ? "tip"
+      row.state = tip                      ? "tip"
                   : held                   ? "stick"
                   : law == SlipState::open ? (effective >= 0 ? "open" : "slip")
                                            : toString(law);
+      rowOfPlus[nodes[k].plus] = static_cast<Index>(rows.size());
       rows.push_back(row);
     }
     writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), rows,
-                       status.str(), precision);
-    vtkFractures.push_back({split_.fractures[f].name, std::move(rows)});
+                       status.str(), precision, dim);
+    // 3D: the fault triangles as row indices for the .vtp. A vertex's row is found by its Ω⁺
+    // copy (the unsplit number, as in the triangles), a P2 midpoint's by the split-space node
+    // of the edge between the Ω⁺ copies, as FractureSystem made those control nodes.
+    const FractureGeometry& g = split_.fractures[f];
+    out.nodesPerTriangle = space.degree() == 2 ? 6 : 3;
+    const auto row = [&rowOfPlus](Index plus) {
+      const auto it = rowOfPlus.find(plus);
+      FRICTION_ASSERT(it != rowOfPlus.end(), "a fault triangle's node is a control node");
+      return it->second;
+    };
+    std::map<Index, Index> plusOf;  // unsplit number -> Ω⁺ copy
+    for (Index i = 0; i < g.numNodes(); ++i) plusOf[g.node[i]] = g.plus[i];
+    for (const auto& t : g.triangles) {
+      std::array<Index, 6> tri{};
+      std::array<Index, 3> plus{};
+      for (int j = 0; j < 3; ++j) {
+        const auto it = plusOf.find(t[j]);
+        FRICTION_ASSERT(it != plusOf.end(), "a fault triangle's vertices are fracture nodes");
+        plus[j] = it->second;
+        tri[j] = row(plus[j]);
+      }
+      if (out.nodesPerTriangle == 6)
+        for (int j = 0; j < 3; ++j)
+          tri[3 + j] = row(space.midpointNode(plus[j], plus[(j + 1) % 3]));
+      out.triangles.push_back(tri);
+    }
+    vtkFractures.push_back(std::move(out));
   }
   DictionaryWriter st("dictionary", "solverStatus");
   st.entryWord("status", toString(r.report.status));
@@ -942,14 +979,14 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   // it restarts from the time before, which drops this time's VTK files and .pvd entry.
   if (time_->writeVTK()) {
     if (!vtk_) vtk_ = std::make_unique<VtkSeries>(caseDir_);
-    std::function<Eigen::Matrix2d(const Vector2&)> sigma0;
+    std::function<Eigen::Matrix3d(const Point&)> sigma0;
     bool hasInitialStress = false;
     for (const auto& e : effects_) hasInitialStress |= e->type() == "initialStress";
     if (hasInitialStress)
-      sigma0 = [this](const Vector2& x) {
-        Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
-        for (const auto& e : effects_)
-          s += e->initialStress(Point(x.x(), x.y(), 0.0)).topLeftCorner<2, 2>();
+      sigma0 = [this](const Point& x) {
+        // 2D: the in-plane block, σ⁰_zz = 0 (Effect.hpp).
+        Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
+        for (const auto& e : effects_) s += e->initialStress(x);
         return s;
       };
     vtk_->write(r.time, time_->timeName(r.time), sys.splitSpace(), sys.splitAssembler(), u,
