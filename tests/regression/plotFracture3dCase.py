@@ -13,8 +13,9 @@ Usage: plotFracture3dCase.py CASE SHAPE
              normals, '# frame per node'), the same slip as a function of the radius in the
              plane of the disc, at time 1
   rectangle  a flat 2 m x 1 m rectangle (21 x 11 nodes, the border tips), time 1
-sigmaN and tauMagnitude are linear in x y z (compressed everywhere), so a linear interpolation
-reproduces them to round-off; ST = tauMagnitude / -sigmaN.
+sigmaN and tauMagnitude are linear in x y z of the point of the disc's plane under the node
+(the node itself on the disc and the rectangle), so linear in the map coordinates, and a
+linear interpolation reproduces them to round-off; ST = tauMagnitude / -sigmaN.
 Prints nothing; the test recomputes the analytic values from the constants below.
 """
 import os
@@ -83,18 +84,21 @@ def rows(shape, scale):
             n /= np.linalg.norm(n)
         t1, t2 = tangentBasis(n)
         # The slip direction is fixed in the plane of (T1, T2); on the cap it is that vector
-        # made tangent to the sphere, so that its projection on the map plane is the disc's.
+        # made tangent to the sphere (along N, so that its projection on the map plane keeps
+        # the disc's direction) and normalised (so that |slip| is the penny's).
         d = np.cos(ANGLE) * T1 + np.sin(ANGLE) * T2
         if shape == "cap":
             d = d - (d.dot(n) / n.dot(N)) * N
-        slipXYZ = mag * d if shape != "cap" else mag * d
+            d /= np.linalg.norm(d)
+        slipXYZ = mag * d
         s1, s2 = slipXYZ.dot(t1), slipXYZ.dot(t2)
         slipXYZ = s1 * t1 + s2 * t2
         if tip:
             traction = ["nan"] * 6
             state = "tip"
         else:
-            sn, tm = sigmaN(p), tauMagnitude(p)
+            flat = C + u * T1 + v * T2  # on the cap too: linear in the map coordinates
+            sn, tm = sigmaN(flat), tauMagnitude(flat)
             tau = -tm * np.array([s1, s2]) / np.hypot(s1, s2) if mag > 0 else [tm, 0.0]
             traction = [sn, tau[0], tau[1], tm, tm / -sn, 1e-12]
             state = "slip" if np.hypot(u, v) < 0.8 * A else "stick"

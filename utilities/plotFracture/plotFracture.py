@@ -517,7 +517,8 @@ class Fault3d:
         if line is None:
             # Through the centroid along t1, across the whole fault.
             a, b = last.u.min(), last.u.max()
-            self.line = (self.plane.origin + a * self.plane.t1, self.plane.origin + b * self.plane.t1)
+            o, t1 = self.plane.origin, self.plane.t1
+            self.line = (o + a * t1, o + b * t1)
             self.lineText = "through the centroid along t1"
         else:
             self.line = line
