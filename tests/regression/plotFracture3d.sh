@@ -179,6 +179,17 @@ mid = slip[len(slip) // 2]  # the centre node, exact: K A
 assert abs(mid - case.K * case.A) < 1e-12, (mid, case.K * case.A)
 PY
 
+# A fault that folds over itself in its mean plane (here a node row written twice: the
+# second copy lands on the first in the map): drawn, with a warning saying so.
+f=$work/folded
+"$python" "$make" "$f" disc && rm -rf "$f/0.5" || fail "cannot write the folded case"
+awk 'NR == 5 { print } { print }' "$f/1/fractures/fault.dat" >"$f/new" &&
+  mv "$f/new" "$f/1/fractures/fault.dat"
+out=$("$python" "$plot" -case "$f" 2>&1) || fail "folded: $out"
+grep -qF "the fault folds over itself in its mean plane (0 node normals at 90 degrees or more \
+from it, 1 nodes on top of others)" <<<"$out" || fail "folded: no warning: $out"
+isPng "$f/postProcessing/fracture_fault.png" || fail "folded: no maps PNG"
+
 # Bad input: exit 1, a message naming the file or the option, nothing written.
 bad() {  # name, expected message, then the plot command's arguments
   local name=$1 want=$2 err rc; shift 2

@@ -448,6 +448,18 @@ class FaultMaps:
         slip = np.column_stack([table["slipX"], table["slipY"], table["slipZ"]])
         self.slipU, self.slipV = slip @ plane.t1, slip @ plane.t2
         self.tri = triangulate(self.u, self.v, table["path"], "nodes")
+        # The projection on one plane is one-to-one only where the surface does not turn
+        # past 90 degrees from it; nodes projected onto others drop out of the triangulation.
+        normals = np.column_stack([table["nx"], table["ny"], table["nz"]])
+        turned = int(np.count_nonzero(normals @ plane.n <= 0))
+        used = np.zeros(len(self.u), dtype=bool)
+        used[self.tri.get_masked_triangles().ravel()] = True
+        self.foldWarning = None
+        if turned or not used.all():
+            self.foldWarning = (f"{table['path']}: the fault folds over itself in its mean plane "
+                                f"({turned} node normals at 90 degrees or more from it, "
+                                f"{np.count_nonzero(~used)} nodes on top of others): its maps "
+                                "and profile overlap there")
         self.keep = np.array([s != "tip" for s in table["state"]])
         for key in ("sigmaN", "tauMagnitude", "ST"):
             self.keep &= np.isfinite(table[key])
@@ -514,6 +526,8 @@ class Fault3d:
         self.plane = MapPlane(self.tables[-1])
         self.maps = [FaultMaps(table, self.plane) for table in self.tables]
         last = self.maps[-1]
+        if last.foldWarning:
+            print(f"plotFracture: warning: {last.foldWarning}", file=sys.stderr)
         if line is None:
             # Through the centroid along t1, across the whole fault.
             a, b = last.u.min(), last.u.max()
@@ -640,8 +654,11 @@ def fmtPoint(p):
 
 def main(argv):
     # OpenFOAM-style single-dash options: -help as well as -h.
-    ap = argparse.ArgumentParser(prog="plotFracture", description=__doc__.split("\n")[0],
-                                 add_help=False)
+    ap = argparse.ArgumentParser(
+        prog="plotFracture", description=__doc__.split("\n")[0], add_help=False,
+        epilog="2D tables: ST (or tractions) and slip along the arclength. 3D tables: maps of "
+        "slip magnitude (arrows: slip), ST and node states over each fault, and a profile "
+        "along -line. Details: the header of this script and README.md (plotFracture).")
     ap.add_argument("-h", "-help", "--help", action="help", help="print this help and exit")
     ap.add_argument("-case", required=True, help="case folder")
     ap.add_argument("-fracture", help="fracture name (default: every fracture)")
