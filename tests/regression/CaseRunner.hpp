@@ -60,11 +60,17 @@ class Case {
  public:
   /// Copy cases/<name> to <work>/<label> (fresh), without anything a run made: the case's
   /// own Allclean removes it (an earlier ./Allrun leaves time folders, VTK/, logs in cases/).
+  /// A name "tests:<case>" copies tests/regression/cases/<case> (cases only the tests use).
   Case(const std::string& name, const std::string& label)
       : dir_(fs::path(FRICTION_WORK_DIR) / label) {
     fs::remove_all(dir_);
     fs::create_directories(dir_.parent_path());
-    fs::copy(fs::path(FRICTION_SOURCE_DIR) / "cases" / name, dir_, fs::copy_options::recursive);
+    const fs::path source =
+        name.rfind("tests:", 0) == 0
+            ? fs::path(FRICTION_SOURCE_DIR) / "tests" / "regression" / "cases" / name.substr(6)
+            : fs::path(FRICTION_SOURCE_DIR) / "cases" / name;
+    REQUIRE(fs::is_directory(source));
+    fs::copy(source, dir_, fs::copy_options::recursive);
     REQUIRE(std::system(("'" + (dir_ / "Allclean").string() + "' > /dev/null").c_str()) == 0);
   }
 

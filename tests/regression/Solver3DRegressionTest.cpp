@@ -1,0 +1,247 @@
+// frictionSolver on a 3D case (tests/regression/cases/faultInCube: the unit cube of
+// tetrahedra, a square fault inside with its tip line all round, the lid moved sideways and
+// down): the known answers of docs/method.md in 3D, the Coulomb conditions node by node,
+// every optimizer, restart, and the 3D table's own consistency.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "CaseRunner.hpp"
+
+using namespace friction::regression;
+
+namespace {
+
+const char* const kCase = "tests:faultInCube";
+
+/// Every file below `dir` (relative path → content), skipping the logs.
+std::map<std::string, std::string> outputs(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    const std::string rel = fs::relative(e.path(), dir).string();
+    if (rel.rfind("log.", 0) == 0) continue;
+    files[rel] = readText(e.path());
+  }
+  return files;
+}
+
+double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
+
+/// Rows of the table in a given state.
+int count(const Table& t, const std::string& state) {
+  return static_cast<int>(std::count(t.state.begin(), t.state.end(), state));
+}
+
+}  // namespace
+
+TEST_CASE("3D: the table is the solve's own: frame, vectors, magnitudes, Coulomb node by node",
+          "[regression][3d]") {
+  Case c(kCase, "3d-coulomb");
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  CHECK_THAT(c.log(), Catch::Contains("tetrahedra") && Catch::Contains(", 3D\n"));
+  const Table t = c.namedTable("1", "fault");
+  // The fault is the plane z = 1/2, Ω⁺ above: n_Γ = (0, 0, −1) and one frame for every node.
+  REQUIRE(t.comments.size() >= 2);
+  CHECK(t.comments[0].rfind("# status converged", 0) == 0);
+  CHECK(t.comments[1].rfind("# frame n (0 0 -1) t1 ", 0) == 0);
+  const double mu = 0.2;
+  int slipping = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    INFO("row " << i << ", state " << t.state[i]);
+    CHECK(t.at(i, "z") == Approx(0.5).margin(1e-12));
+    CHECK(t.at(i, "nz") == -1.0);
+    // The slip vector in x y z lies in the fault plane, and its length is |(slip1, slip2)|.
+    CHECK(std::abs(t.at(i, "slipZ")) <= 1e-15);
+    const double s = norm2(t.at(i, "slip1"), t.at(i, "slip2"));
+    CHECK(t.at(i, "slipMagnitude") == Approx(s).epsilon(1e-9));
+    CHECK(norm2(t.at(i, "slipX"), t.at(i, "slipY")) == Approx(s).epsilon(1e-9));
+    if (t.state[i] == "tip") {
+      // The tip line is single: no jump, no traction values.
+      CHECK(s == 0.0);
+      CHECK(std::isnan(t.at(i, "sigmaN")));
+      continue;
+    }
+    const double tau = norm2(t.at(i, "tau1"), t.at(i, "tau2"));
+    CHECK(t.at(i, "tauMagnitude") == Approx(tau).epsilon(1e-9));
+    REQUIRE(t.at(i, "sigmaN") < 0);  // the lid pushes down
+    CHECK(t.at(i, "ST") == Approx(tau / -t.at(i, "sigmaN")).epsilon(1e-9));
+    if (t.state[i] == "slip") {
+      ++slipping;
+      // Coulomb: |τ| = μ|σ_n| (to the solver's tolerance 1e-10 on ‖D‖/‖Σ‖, and the table's
+      // ten digits), and the slip is opposite to τ (docs/method.md, sign conventions).
+      CHECK(tau == Approx(mu * -t.at(i, "sigmaN")).epsilon(1e-7));
+      const double cosine =
+          (t.at(i, "slip1") * t.at(i, "tau1") + t.at(i, "slip2") * t.at(i, "tau2")) / (s * tau);
+      CHECK(cosine == Approx(-1).margin(1e-6));
+    } else {
+      CHECK(t.state[i] == "stick");
+      CHECK(tau <= mu * -t.at(i, "sigmaN") * (1 + 1e-9));
+    }
+  }
+  // The lid's shear exceeds the friction of the fault: most non-tip nodes slip. A loop over
+  // no slipping node would check nothing.
+  CHECK(slipping >= 10);
+  CHECK(count(t, "tip") >= 10);
+  CHECK(count(t, "open") == 0);
+}
+
+TEST_CASE("3D known answers: mu_f = 2 sticks everywhere, equal to the unsplit solve",
+          "[regression][3d][known]") {
+  Case plain(kCase, "3d-unsplit");
+  plain.edit("system/meshDict", "fractures \\(fault\\);", "fractures ();");
+  plain.edit("constant/fractureProperties", "fault\\s*\\{[^}]*\\}", "");
+  REQUIRE(plain.solve() == 0);
+  Case c(kCase, "3d-mu2");
+  c.edit("constant/fractureProperties", "frictionCoefficient 0.2;", "frictionCoefficient 2;");
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  const Table t = c.namedTable("1", "fault");
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    CHECK(t.at(i, "slipMagnitude") == 0.0);
+    CHECK((t.state[i] == "stick" || t.state[i] == "tip"));
+  }
+  CHECK(count(t, "stick") > 0);
+  // The unsplit points come first in the split mesh: their displacement lines agree to the
+  // last digit with the unsplit solve (same factor, same right-hand side, a zero jump).
+  const auto lines = [](const std::string& s) {
+    std::vector<std::string> v;
+    std::istringstream in(s);
+    for (std::string l; std::getline(in, l);)
+      if (!l.empty() && l[0] == '(' && l.back() == ')' && l.find(' ') != std::string::npos)
+        v.push_back(l);
+    return v;
+  };
+  const auto a = lines(readText(plain.dir() / "1" / "D"));
+  const auto b = lines(readText(c.dir() / "1" / "D"));
+  REQUIRE(a.size() > 500);
+  REQUIRE(b.size() > a.size());
+  int differ = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) differ += a[i] != b[i];
+  CHECK(differ == 0);
+}
+
+TEST_CASE("3D known answers: zero load, frictionless and tension", "[regression][3d][known]") {
+  SECTION("zero load: slip and tractions exactly 0") {
+    Case c(kCase, "3d-zeroLoad");
+    c.edit("0/D", "\\(1 \\(0.002 0.001 -0.001\\)\\)", "(1 (0 0 0))");
+    REQUIRE(c.solve() == 0);
+    const Table t = c.namedTable("1", "fault");
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      CHECK(t.at(i, "slipMagnitude") == 0.0);
+      if (t.state[i] == "tip") continue;
+      CHECK(t.at(i, "tauMagnitude") == 0.0);
+      CHECK(t.at(i, "sigmaN") == 0.0);
+    }
+  }
+  SECTION("frictionless: |tau| = 0 on the fault") {
+    Case c(kCase, "3d-frictionless");
+    c.edit("constant/fractureProperties", "law +coulomb;\\s*frictionCoefficient 0.2;",
+           "law frictionless;");
+    REQUIRE(c.solve() == 0);
+    const Table t = c.namedTable("1", "fault");
+    double tauMax = 0, sigmaMax = 0;
+    for (std::size_t i = 0; i < t.rows.size(); ++i)
+      if (t.state[i] != "tip") {
+        tauMax = std::max(tauMax, t.at(i, "tauMagnitude"));
+        sigmaMax = std::max(sigmaMax, std::abs(t.at(i, "sigmaN")));
+      }
+    REQUIRE(sigmaMax > 0);
+    // Converged to ‖D‖_M ≤ 1e-10 ‖Σ‖_M: τ is zero to that level of the loading stress.
+    CHECK(tauMax <= 1e-8 * sigmaMax);
+  }
+  SECTION("tension across the fault: open where sigma_n >= 0, tau = 0 there") {
+    Case c(kCase, "3d-tension");
+    c.edit("0/D", "\\(1 \\(0.002 0.001 -0.001\\)\\)", "(1 (0.002 0.001 0.001))");
+    REQUIRE(c.solve() == 0);
+    const Table t = c.namedTable("1", "fault");
+    int open = 0;
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      if (t.state[i] != "open") continue;
+      ++open;
+      CHECK(t.at(i, "sigmaN") >= 0);
+      CHECK(t.at(i, "tauMagnitude") <= 1e-6);
+    }
+    CHECK(open > 0);
+  }
+}
+
+TEST_CASE("3D: every optimizer reaches the same slip", "[regression][3d][optimizer]") {
+  Case ref(kCase, "3d-newton");
+  REQUIRE(ref.solve() == 0);
+  const Table a = ref.namedTable("1", "fault");
+  double scale = 0;
+  for (std::size_t i = 0; i < a.rows.size(); ++i) scale = std::max(scale, a.at(i, "slipMagnitude"));
+  REQUIRE(scale > 0);
+  for (const char* type : {"armijo", "steepestDescent"}) {
+    Case c(kCase, std::string("3d-") + type);
+    c.edit("system/frictionSolution", "type +semismoothNewton;",
+           std::string("type ") + type + "; tolerance 1e-9;");
+    c.edit("system/frictionSolution", "tolerance +1e-10;", "");
+    c.edit("system/frictionSolution", "maxIterations +100;", "maxIterations 20000;");
+    const int rc = c.solve();
+    INFO(type << "\n" << c.log());
+    REQUIRE(rc == 0);
+    const Table b = c.namedTable("1", "fault");
+    REQUIRE(b.rows.size() == a.rows.size());
+    double differ = 0;
+    for (std::size_t i = 0; i < a.rows.size(); ++i)
+      for (const char* col : {"slipX", "slipY", "slipZ"})
+        differ = std::max(differ, std::abs(a.at(i, col) - b.at(i, col)));
+    // Both stop at a relative residual ≤ 1e-9; the slip is then within ~1e-6 of its size.
+    CHECK(differ <= 1e-5 * scale);
+  }
+}
+
+TEST_CASE("3D restart: stopped at 0.5 and continued, every file as the uninterrupted run's",
+          "[regression][3d][restart]") {
+  // One folder name for both: the VTK files are named after it.
+  Case whole(kCase, "3d-whole/faultInCube");
+  REQUIRE(whole.solve() == 0);
+  Case c(kCase, "3d-restarted/faultInCube");
+  c.edit("system/controlDict", "endTime +1;", "endTime 0.5;");
+  REQUIRE(c.solve() == 0);
+  c.edit("system/controlDict", "endTime 0.5;", "endTime 1;");
+  c.edit("system/controlDict", "startFrom +startTime;", "startFrom latestTime;");
+  const fs::path bin = FRICTION_BIN_DIR;
+  REQUIRE(run("'" + (bin / "frictionSolver").string() + "' -case '" + c.dir().string() + "'",
+              c.dir() / "log.frictionSolver") == 0);
+  CHECK_THAT(c.log(), Catch::Contains("Restarting from time 0.5"));
+  auto a = outputs(whole.dir()), b = outputs(c.dir());
+  // The controlDict differs by the edits above, and the split meshes name their case folder;
+  // everything the solver wrote must not differ.
+  for (const char* input : {"system/controlDict", "constant/splitMesh"}) {
+    REQUIRE(a.erase(input) == 1);
+    REQUIRE(b.erase(input) == 1);
+  }
+  REQUIRE(a.count("1/fractures/fault.dat") == 1);
+  REQUIRE(a.count("VTK/fractures/fault_1.vtp") == 1);
+  std::set<std::string> names;
+  for (const auto& [k, v] : a) names.insert(k);
+  for (const auto& [k, v] : b) names.insert(k);
+  for (const std::string& k : names) {
+    INFO(k);
+    CHECK(a.count(k) == 1);
+    CHECK(b.count(k) == 1);
+    if (a.count(k) && b.count(k)) CHECK((a[k] == b[k]));
+  }
+}
+
+TEST_CASE("3D with elementOrder 2 is refused with the reason, nothing written",
+          "[regression][3d][bad]") {
+  // P2 fault triangles: a uniform traction would be recovered as 0 at the vertices and 4/3 of
+  // itself at the mid-edge nodes (lumped weights A/12, A/4 against ∫φ = 0, A/3).
+  Case c(kCase, "3d-P2");
+  c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+  CHECK(c.solve() == 1);
+  CHECK_THAT(c.log(), Catch::Contains("frictionSolution") &&
+                          Catch::Contains("key 'elementOrder': 2 on a 3D mesh is not available"));
+  CHECK_FALSE(fs::exists(c.dir() / "0.25"));
+  CHECK_FALSE(fs::exists(c.dir() / "VTK"));
+}
