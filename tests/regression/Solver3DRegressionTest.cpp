@@ -89,6 +89,23 @@ TEST_CASE("3D: the table is the solve's own: frame, vectors, magnitudes, Coulomb
   CHECK(slipping >= 10);
   CHECK(count(t, "tip") >= 10);
   CHECK(count(t, "open") == 0);
+
+  // ParaView's fault surface holds the table's values (read by VTK itself): one triangle per
+  // fault triangle of the split summary, the fault's area 1/4 (the square's: its boundary
+  // nodes are exact, so the sum of the triangles' areas is, to round-off).
+  const std::string split = readText(c.dir() / "log.splitFractureNodes");
+  std::smatch m;
+  REQUIRE(std::regex_search(split, m, std::regex("triangles: +([0-9]+)")));
+  const fs::path script = fs::path(FRICTION_SOURCE_DIR) / "tests/unit/output/readFaultVtp.py";
+  REQUIRE(fs::exists(script));
+  const int vtk = run("/usr/bin/python3 '" + script.string() + "' '" +
+                          (c.dir() / "VTK/fractures/fault_1.vtp").string() + "' '" +
+                          (c.dir() / "1/fractures/fault.dat").string() + "' --points " +
+                          std::to_string(t.rows.size()) + " --cells " + m[1].str() +
+                          " --area 0.25 --tips " + std::to_string(count(t, "tip")),
+                      c.dir() / "log.readFaultVtp");
+  INFO(readText(c.dir() / "log.readFaultVtp"));
+  CHECK(vtk == 0);
 }
 
 TEST_CASE("3D known answers: mu_f = 2 sticks everywhere, equal to the unsplit solve",
