@@ -7,9 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <set>
 
+#include <Eigen/Geometry>
+
 #include "CaseRunner.hpp"
+#include "friction/mesh/MeshReader.hpp"
 
 using namespace friction::regression;
 
@@ -30,6 +34,59 @@ std::map<std::string, std::string> outputs(const fs::path& dir) {
 }
 
 double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
+
+/// Write `m` as Medit .mesh (as FreeFEM's savemesh does) with its points mapped by `map`,
+/// vertex k of the file being point perm[k] of m, cells in the order `cellOrder`. A map
+/// that reverses orientation (det < 0) swaps two vertices of each tetrahedron, so that the
+/// file's tetrahedra keep a positive volume.
+void writeMedit(const fs::path& path, const friction::Mesh& m, const Eigen::Matrix3d& map,
+                const std::vector<friction::Index>& perm,
+                const std::vector<friction::Index>& cellOrder) {
+  std::vector<friction::Index> fileNumber(perm.size());
+  for (std::size_t k = 0; k < perm.size(); ++k)
+    fileNumber[perm[k]] = static_cast<friction::Index>(k) + 1;
+  std::ofstream out(path);
+  out.precision(17);
+  out << "MeshVersionFormatted 2\nDimension 3\nVertices\n" << perm.size() << "\n";
+  for (friction::Index p : perm) {
+    const Eigen::Vector3d x = map * m.points[p];
+    out << x.x() << " " << x.y() << " " << x.z() << " 0\n";
+  }
+  const bool flip = map.determinant() < 0;
+  out << "Tetrahedra\n" << m.numCells() << "\n";
+  for (friction::Index c : cellOrder) {
+    auto v = m.cell(c);
+    friction::Index a[4] = {v[0], v[1], v[2], v[3]};
+    if (flip) std::swap(a[1], a[2]);
+    for (friction::Index x : a) out << fileNumber[x] << " ";
+    out << m.cellRegion[c] << "\n";
+  }
+  out << "Triangles\n" << m.numFacets() << "\n";
+  for (friction::Index f = 0; f < m.numFacets(); ++f) {
+    for (friction::Index x : m.facet(f)) out << fileNumber[x] << " ";
+    out << m.facetLabel[f] << "\n";
+  }
+  out << "End\n";
+}
+
+/// The fault-in-cube case on a transformed copy of its mesh, the lid's displacement mapped
+/// likewise; returns its table at time 1.
+Table transformedRun(const std::string& label, const friction::Mesh& m, const Eigen::Matrix3d& map,
+                     const std::vector<friction::Index>& perm,
+                     const std::vector<friction::Index>& cellOrder) {
+  Case c(kCase, label);
+  writeMedit(c.dir() / "constant/mesh/cube.mesh", m, map, perm, cellOrder);
+  c.edit("system/meshDict", "cube\\.msh", "cube.mesh");
+  const Eigen::Vector3d lid = map * Eigen::Vector3d(0.002, 0.001, -0.001);
+  std::ostringstream value;
+  value.precision(17);
+  value << "(1 (" << lid.x() << " " << lid.y() << " " << lid.z() << "))";
+  if (!map.isIdentity(0)) c.edit("0/D", "\\(1 \\(0.002 0.001 -0.001\\)\\)", value.str());
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  return c.namedTable("1", "fault");
+}
 
 /// Rows of the table in a given state.
 int count(const Table& t, const std::string& state) {
@@ -261,4 +318,83 @@ TEST_CASE("3D with elementOrder 2 is refused with the reason, nothing written",
                           Catch::Contains("key 'elementOrder': 2 on a 3D mesh is not available"));
   CHECK_FALSE(fs::exists(c.dir() / "0.25"));
   CHECK_FALSE(fs::exists(c.dir() / "VTK"));
+}
+
+TEST_CASE("3D invariance: rotated, mirrored or renumbered, the slip is the mapped slip",
+          "[regression][3d][invariance]") {
+  Case base(kCase, "3d-invariance-base");
+  REQUIRE(base.solve() == 0);
+  const Table t0 = base.namedTable("1", "fault");
+  const friction::Mesh m = friction::readMesh((base.dir() / "constant/mesh/cube.msh").string());
+  std::vector<friction::Index> identity(m.numPoints()), cells(m.numCells());
+  std::iota(identity.begin(), identity.end(), 0);
+  std::iota(cells.begin(), cells.end(), 0);
+  double scale = 0;
+  for (std::size_t i = 0; i < t0.rows.size(); ++i)
+    scale = std::max(scale, t0.at(i, "slipMagnitude"));
+  REQUIRE(scale > 0);
+  const auto vec = [](const Table& t, std::size_t i, const char* a, const char* b, const char* c) {
+    return Eigen::Vector3d(t.at(i, a), t.at(i, b), t.at(i, c));
+  };
+  // Row i of `t` against row match[i] of t0 under `map`: positions and normals map (the
+  // splitter may orient the mapped fault the other way: then Ω⁺ and Ω⁻ swap, and the slip
+  // [[u]] = u⁺ − u⁻ changes sign with n), the slip is the mapped slip, |τ| and σ_n are equal.
+  const auto compare = [&](const Table& t, const Eigen::Matrix3d& map,
+                           const std::vector<std::size_t>& match, double tolerance) {
+    REQUIRE(t.rows.size() == t0.rows.size());
+    const double side = (map * vec(t0, 0, "nx", "ny", "nz")).dot(vec(t, 0, "nx", "ny", "nz"));
+    REQUIRE(std::abs(std::abs(side) - 1) < 1e-9);
+    double worstSlip = 0, worstTraction = 0;
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      const std::size_t j = match[i];
+      INFO("row " << i << " against " << j);
+      CHECK((map * vec(t0, j, "x", "y", "z") - vec(t, i, "x", "y", "z")).norm() <= 1e-9);
+      CHECK(t.state[i] == t0.state[j]);
+      worstSlip = std::max(worstSlip, (side * (map * vec(t0, j, "slipX", "slipY", "slipZ")) -
+                                       vec(t, i, "slipX", "slipY", "slipZ"))
+                                          .norm());
+      if (t.state[i] != "tip")
+        worstTraction = std::max(
+            {worstTraction,
+             std::abs(t.at(i, "sigmaN") - t0.at(j, "sigmaN")) / std::abs(t0.at(j, "sigmaN")),
+             std::abs(t.at(i, "tauMagnitude") - t0.at(j, "tauMagnitude")) /
+                 std::abs(t0.at(j, "sigmaN"))});
+    }
+    CHECK(worstSlip <= tolerance * scale);
+    CHECK(worstTraction <= tolerance);
+  };
+  std::vector<std::size_t> same(t0.rows.size());
+  std::iota(same.begin(), same.end(), 0);
+
+  SECTION("rotated by an arbitrary rotation") {
+    // The tangent bases differ node by node (they follow the coordinate axes); the laws are
+    // isotropic in the tangent plane, so only round-off and the solver's tolerance (1e-10 on
+    // the residual) separate the slips: 1e-8 of the largest slip.
+    const Eigen::Matrix3d r =
+        Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    compare(transformedRun("3d-invariance-rotated", m, r, identity, cells), r, same, 1e-8);
+  }
+  SECTION("mirrored in the plane y = 1/2") {
+    Eigen::Matrix3d mirror = Eigen::Matrix3d::Identity();
+    mirror(1, 1) = -1;  // y → −y; the lid's displacement maps with it
+    compare(transformedRun("3d-invariance-mirrored", m, mirror, identity, cells), mirror, same,
+            1e-8);
+  }
+  SECTION("nodes and tetrahedra renumbered") {
+    // The control nodes come in another order (ascending node number): rows are matched by
+    // position. Only the order of floating-point sums changes: 1e-9.
+    std::vector<friction::Index> perm = identity;
+    std::reverse(perm.begin(), perm.end());
+    std::rotate(perm.begin(), perm.begin() + perm.size() / 3, perm.end());
+    std::vector<friction::Index> order = cells;
+    std::reverse(order.begin(), order.end());
+    const Table t =
+        transformedRun("3d-invariance-renumbered", m, Eigen::Matrix3d::Identity(), perm, order);
+    std::vector<std::size_t> match(t.rows.size(), t0.rows.size());
+    for (std::size_t i = 0; i < t.rows.size(); ++i)
+      for (std::size_t j = 0; j < t0.rows.size(); ++j)
+        if ((vec(t, i, "x", "y", "z") - vec(t0, j, "x", "y", "z")).norm() <= 1e-9) match[i] = j;
+    for (std::size_t i = 0; i < match.size(); ++i) REQUIRE(match[i] < t0.rows.size());
+    compare(t, Eigen::Matrix3d::Identity(), match, 1e-9);
+  }
 }
