@@ -10,8 +10,10 @@
 //
 // The disc is cut into the volume by BooleanFragments (OpenCASCADE), so it is a surface of
 // mesh triangles inside the tetrahedra, whose nodes the mesh utility later splits; its rim
-// is the tip line. The size is h up to dMin from the disc and grows linearly to hFar at
-// dMax (a Threshold field on the exact distance to the disc, MathEval).
+// is the tip line. The size is h up to dMin from the disc and grows linearly with the
+// distance, by slope per metre, up to hFar (a Threshold field on the exact distance to the
+// disc, MathEval). The slope matters for accuracy: the volume around the disc carries the
+// elastic field, so a convergence study refines it too (a smaller slope), not only h.
 //
 // The mesh is linear (4-node tetrahedra); P2 is elementOrder 2 in system/frictionSolution
 // (the solver adds the mid-edge nodes, so the fault stays the same polygon).
@@ -33,12 +35,16 @@ DefineConstant[
   h     = {a/8,  Name "Parameters/6Mesh size on the disc h [m]"},
   hFar  = {L/4,  Name "Parameters/7Far-field mesh size [m]"},
   dMin  = {h,    Name "Parameters/8Distance from the disc with size h [m]"},
-  dMax  = {L/2,  Name "Parameters/9Distance from the disc with size hFar [m]"}
+  slope = {0.25, Name "Parameters/9Size growth per unit distance from the disc"}
 ];
 
 If (h <= 0 || h > a)
   Error("h = %g: need 0 < h <= a = %g", h, a);
   Exit;   // Exit, not Abort: after Abort gmsh still writes an empty mesh
+EndIf
+If (slope <= 0 || hFar < h)
+  Error("slope = %g, hFar = %g: need slope > 0 and hFar >= h = %g", slope, hFar, h);
+  Exit;
 EndIf
 If (L <= a)
   Error("L = %g: the disc (radius a = %g) must lie inside the cube", L, a);
@@ -95,7 +101,7 @@ Field[2].InField = 1;
 Field[2].SizeMin = h;
 Field[2].SizeMax = hFar;
 Field[2].DistMin = dMin;
-Field[2].DistMax = dMax;
+Field[2].DistMax = dMin + (hFar - h)/slope;
 Background Field = 2;
 
 Physical Surface("outside", 1) = outside();
