@@ -34,6 +34,22 @@ inline int run(const std::string& command, const fs::path& logFile) {
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
 
+/// A fracture table read by its header's column names (3D tables; see README, "Fracture
+/// tables"): numbers per column, and the state column.
+struct Table {
+  std::vector<std::string> columns;       ///< numeric columns, in file order
+  std::vector<std::vector<double>> rows;  ///< one value per column
+  std::vector<std::string> state;         ///< per row
+  std::vector<std::string> comments;      ///< the '#' lines after the header
+  std::size_t column(const std::string& name) const {
+    for (std::size_t i = 0; i < columns.size(); ++i)
+      if (columns[i] == name) return i;
+    FAIL("no column '" << name << "'");
+    return 0;
+  }
+  double at(std::size_t row, const std::string& name) const { return rows[row][column(name)]; }
+};
+
 /// One row of <time>/fractures/<name>.dat.
 struct Row {
   double s, x, y, slip, slipIncrement, sigmaN, tau, ST, residual;
@@ -87,6 +103,47 @@ class Case {
   }
 
   std::string log() const { return readText(dir_ / "log.frictionSolver"); }
+
+  /// Any table by its header's column names (state last).
+  Table namedTable(const std::string& time, const std::string& fracture) const {
+    std::ifstream in(dir_ / time / "fractures" / (fracture + ".dat"));
+    REQUIRE(in.good());
+    Table t;
+    std::string line;
+    REQUIRE(std::getline(in, line));
+    REQUIRE(line.rfind("# ", 0) == 0);
+    std::istringstream header(line.substr(2));
+    for (std::string c; header >> c;) t.columns.push_back(c);
+    REQUIRE(t.columns.size() >= 2);
+    REQUIRE(t.columns.back() == "state");
+    t.columns.pop_back();
+    while (std::getline(in, line)) {
+      if (line.empty()) continue;
+      if (line[0] == '#') {
+        t.comments.push_back(line);
+        continue;
+      }
+      std::istringstream s(line);
+      std::vector<double> v;
+      for (std::size_t i = 0; i < t.columns.size(); ++i) {
+        std::string item;
+        s >> item;
+        char* end = nullptr;
+        v.push_back(std::strtod(item.c_str(), &end));
+        INFO(line);
+        REQUIRE((!item.empty() && *end == '\0'));
+      }
+      std::string state;
+      s >> state;
+      INFO(line);
+      REQUIRE(!state.empty());
+      t.rows.push_back(std::move(v));
+      t.state.push_back(state);
+    }
+    // An empty table would let every loop over its rows pass unseen.
+    REQUIRE(t.rows.size() >= 3);
+    return t;
+  }
 
   std::vector<Row> table(const std::string& time, const std::string& fracture) const {
     std::ifstream in(dir_ / time / "fractures" / (fracture + ".dat"));

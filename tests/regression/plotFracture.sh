@@ -42,6 +42,10 @@ grep -qF "unknown fracture 'nope' (fractures: fracture)" <<<"$err" || fail "unkn
 err=$("$python" "$plot" -case "$c" -times 0.123 2>&1 >/dev/null); rc=$?
 ((rc == 1)) || fail "unknown time: exit $rc, expected 1"
 grep -qF "no time folder 0.123" <<<"$err" || fail "unknown time: stderr was: $err"
+# The 3D profile options on a 2D table.
+err=$("$python" "$plot" -case "$c" -line 0,0,0:1,0,0 2>&1 >/dev/null); rc=$?
+((rc == 1)) || fail "-line on a 2D table: exit $rc, expected 1"
+grep -qF "-line: fracture 'fracture' has a 2D table" <<<"$err" || fail "-line on 2D: stderr was: $err"
 [[ ! -e $c/postProcessing/fracture_fracture.png ]] || fail "a failed run wrote a plot"
 
 out=$("$python" "$plot" -case "$c" 2>&1); rc=$?

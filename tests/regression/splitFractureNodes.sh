@@ -314,10 +314,12 @@ GEO
   [[ $line == *"(+${BASH_REMATCH[2]})"* ]] || fail "split mesh points: $line"
   [[ -f $c/constant/splitMesh ]] || fail "constant/splitMesh not written"
   grep -q "^dimension *3;" "$c/constant/splitMesh" || fail "constant/splitMesh lacks 'dimension 3;'"
-  # The solver refuses a 3D split mesh at the start (exit 1, nothing written).
+  # The solver reads the 3D split mesh and refuses the copied 2D case's plane-strain key with
+  # the 3D reason (exit 1, nothing written).
   solve -case "$c"
-  ((rc == 1)) || fail "frictionSolver on a 3D split mesh: exit code $rc (expected 1)"
-  expect "$out" "is a 3D split mesh"
+  ((rc == 1)) || fail "frictionSolver on a 3D case with planeStress: exit code $rc (expected 1)"
+  expect "$out" "mechanicalProperties:"
+  expect "$out" "key 'planeStress' has no meaning in 3D"
   [[ -n $(timeFolders "$c") ]] && fail "frictionSolver wrote a time folder"
   # The work folders hold 2D results that are compared across builds: leave none here.
   rm -rf "$work"/*

@@ -33,6 +33,27 @@ Sample run:
 Prints one line per figure written, saying what its top panel shows. Errors (missing case,
 no time folders, unknown fracture or time) go to stderr, exit 1.
 Run it with Debian's /usr/bin/python3, which sees python3-matplotlib.
+
+3D fracture tables (header "# x y z nx ny nz slip1 slip2 ...", README.md "frictionSolver"):
+the dimension is told from the header. Per fault, at the last of the chosen times:
+  maps (default <case>/postProcessing/fracture_<name>.png) in the fault's mean plane, axes t1,
+  t2 from the centroid of the nodes (the table's "# frame n (..) t1 (..) t2 (..)" line on a
+  flat fault; on a curved one the normalised mean of the nodes' normals n, t1 and t2 as the
+  solver's tangentBasis(n)); the nodes are projected on that plane and triangulated (Delaunay:
+  the convex hull of the projected nodes, flat border triangles removed):
+    slip magnitude [m] with arrows of the slip (slipX slipY slipZ projected on t1, t2),
+    ST over the non-tip nodes, and the node states (tip, stick, slip, open) as markers;
+  profile (default <case>/postProcessing/fracture_<name>_profile.png): slipMagnitude,
+  sigmaN, tauMagnitude and ST along a segment, one curve per chosen time, sampled by linear
+  interpolation on the triangulation (tractions on the triangulation of the non-tip nodes)
+  against the distance from the segment's first point. The segment: -line
+  x0,y0,z0:x1,y1,z1 (two points in m, projected on the map plane), by default through the
+  centroid along t1 across the whole fault. Samples off the triangulated surface are left
+  out of the plot (nan in the CSV).
+  -profile out.png, -profileCsv out.csv (time,distance,x,y,z,slipMagnitude,sigmaN,
+  tauMagnitude,ST; x y z the sample point on the segment), -samples N (default 201).
+Every table is read and checked before any file is written, and each file is written under
+a temporary name and renamed: a failed run leaves no partial figure.
 """
 import argparse
 import math
@@ -44,11 +65,45 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only: no display needed
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.tri as mtri  # noqa: E402
+import numpy as np  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 
 class PlotError(Exception):
     """A problem with the user's case or options: reported on stderr, exit status 1."""
+
+
+def saveFigure(fig, out):
+    """Write the figure under a temporary name in out's folder, then rename it to out: a run
+    stopped or failing while drawing leaves no partial file. The format is the one savefig
+    would take from out's name."""
+    ext = os.path.splitext(out)[1][1:].lower()
+    fmt = ext or matplotlib.rcParams["savefig.format"]
+    supported = fig.canvas.get_supported_filetypes()
+    if fmt not in supported:
+        raise PlotError(f"{out}: unknown image format '{fmt}' (known: "
+                        f"{' '.join(sorted(supported))})")
+    folder, base = os.path.split(os.path.abspath(out))
+    tmp = os.path.join(folder, f".{base}.{os.getpid()}.tmp")
+    try:
+        fig.savefig(tmp, dpi=120, format=fmt)
+        os.replace(tmp, out)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+def writeTextAtomically(out, text):
+    folder, base = os.path.split(os.path.abspath(out))
+    tmp = os.path.join(folder, f".{base}.{os.getpid()}.tmp")
+    try:
+        with open(tmp, "w") as f:
+            f.write(text)
+        os.replace(tmp, out)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
 
 
 def isNumber(name):
@@ -178,7 +233,7 @@ def plotFracture(case, name, times, out):
     axSlip.grid(True, alpha=0.3)
     axSlip.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    saveFigure(fig, out)
     plt.close(fig)
     return "slip tendency" if showST else "tractions"
 
@@ -233,14 +288,377 @@ def plotConvergence(case, path, times, out):
         if len(keys) <= 12:
             ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    saveFigure(fig, out)
     plt.close(fig)
+
+
+# ---- 3D fracture tables: maps over the fault surface and a profile along a segment ----
+
+STATES = ("tip", "stick", "slip", "open")
+COLUMNS_3D = ("x", "y", "z", "nx", "ny", "nz", "slip1", "slip2", "slipX", "slipY", "slipZ",
+              "slipMagnitude", "sigmaN", "tauMagnitude", "ST", "state")
+# Columns that are finite on every row (a tip's tractions are nan, its slip 0).
+FINITE_3D = ("x", "y", "z", "nx", "ny", "nz", "slip1", "slip2", "slipX", "slipY", "slipZ",
+             "slipMagnitude")
+FRAME_FLAT = re.compile(r"frame\s+n\s*\(([^()]*)\)\s*t1\s*\(([^()]*)\)\s*t2\s*\(([^()]*)\)\s*$")
+
+
+def headerNames(path):
+    """The column names of a fracture table's first line ('# s x y ...' or '# x y z ...')."""
+    with open(path) as f:
+        first = f.readline()
+    return first[1:].split() if first.startswith("#") else []
+
+
+def is3dTable(path):
+    return headerNames(path)[:3] == ["x", "y", "z"]
+
+
+def tangentBasis(n):
+    """t1, t2 of a unit normal n as the solver chooses them (fracture/SignConventions.hpp):
+    t1 = the projection of the coordinate axis least aligned with n (ties to the earlier
+    axis), t2 = n x t1."""
+    axis = 0
+    for i in (1, 2):
+        if abs(n[i]) < abs(n[axis]):
+            axis = i
+    e = np.zeros(3)
+    e[axis] = 1.0
+    t1 = e - e.dot(n) * n
+    t1 /= np.linalg.norm(t1)
+    return t1, np.cross(n, t1)
+
+
+def readTable3d(path):
+    """A 3D fracture table (SPEC: header, '# status ...', '# frame ...', rows) as a dict:
+    numpy arrays by column name, 'state' a list, 'status' and 'frame' ((n, t1, t2) of a flat
+    fault, None when the frame is per node)."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    names = lines[0][1:].split()
+    for required in COLUMNS_3D:
+        if required not in names:
+            raise PlotError(f"{path}:1: the header has no column '{required}' (a 3D table has "
+                            f"'# {' '.join(COLUMNS_3D[:-1])} ... state')")
+    status, frame = "", None
+    rows = []
+    for number, line in enumerate(lines[1:], start=2):
+        if line.startswith("#"):
+            text = line[1:].strip()
+            if text.startswith("frame"):
+                if text.startswith("frame per node"):
+                    frame = None
+                    continue
+                m = FRAME_FLAT.match(text)
+                try:
+                    vectors = [np.array([float(v) for v in g.split()]) for g in m.groups()]
+                except (AttributeError, ValueError):
+                    vectors = []
+                if len(vectors) != 3 or any(v.shape != (3,) or not np.all(np.isfinite(v))
+                                            for v in vectors):
+                    raise PlotError(f"{path}:{number}: expected '# frame n (nx ny nz) t1 "
+                                    f"(ax ay az) t2 (bx by bz)' or '# frame per node: ...'")
+                frame = tuple(v / np.linalg.norm(v) for v in vectors)
+            else:
+                status = status or text
+            continue
+        if not line.strip():
+            continue
+        items = line.split()
+        if len(items) != len(names):
+            raise PlotError(f"{path}:{number}: {len(items)} columns, the header names "
+                            f"{len(names)}")
+        row = {}
+        for n, v in zip(names, items):
+            if n == "state":
+                if v not in STATES:
+                    raise PlotError(f"{path}:{number}: state '{v}' is not one of "
+                                    f"{', '.join(STATES)}")
+                row[n] = v
+                continue
+            try:
+                row[n] = float(v)
+            except ValueError:
+                raise PlotError(f"{path}:{number}: column {n}: '{v}' is not a number")
+            if n in FINITE_3D and not math.isfinite(row[n]):
+                raise PlotError(f"{path}:{number}: column {n}: '{v}' is not finite")
+        rows.append(row)
+    if not rows:
+        raise PlotError(f"{path}: no rows (a fracture table has one row per fracture node)")
+    table = {n: np.array([r[n] for r in rows]) for n in names if n != "state"}
+    table["state"] = [r["state"] for r in rows]
+    table["status"] = status
+    table["frame"] = frame
+    table["path"] = path
+    return table
+
+
+class MapPlane:
+    """The plane the maps are drawn in: origin (the nodes' centroid), axes t1, t2, normal n."""
+
+    def __init__(self, table):
+        pos = np.column_stack([table["x"], table["y"], table["z"]])
+        self.origin = pos.mean(axis=0)
+        if table["frame"] is not None:
+            self.n, self.t1, self.t2 = table["frame"]
+            self.flat = True
+        else:
+            # Normals all point from the + side to the - side, so their sum is a mean
+            # direction; it vanishes only for a surface that turns back on itself.
+            total = np.column_stack([table["nx"], table["ny"], table["nz"]]).sum(axis=0)
+            if np.linalg.norm(total) < 1e-6 * len(pos):
+                raise PlotError(f"{table['path']}: the nodes' normals cancel out: the fault "
+                                "has no mean plane to draw its maps in")
+            self.n = total / np.linalg.norm(total)
+            self.t1, self.t2 = tangentBasis(self.n)
+            self.flat = False
+
+    def project(self, points):
+        d = np.atleast_2d(points) - self.origin
+        return d @ self.t1, d @ self.t2
+
+    def describe(self):
+        vec = lambda v: "(" + " ".join(f"{c:.3g}" for c in v) + ")"  # noqa: E731
+        kind = "the fault's frame" if self.flat else "mean normal of a curved fault"
+        return f"n = {vec(self.n)}, t1 = {vec(self.t1)}, t2 = {vec(self.t2)} ({kind})"
+
+
+def triangulate(u, v, path, what):
+    """Delaunay triangulation of the projected nodes, flat border triangles masked (nearly
+    collinear nodes on the border of a disc or a rectangle would give slivers)."""
+    if len(u) < 3:
+        raise PlotError(f"{path}: {len(u)} {what}: a map needs at least 3")
+    try:
+        tri = mtri.Triangulation(u, v)
+    except (RuntimeError, ValueError):
+        raise PlotError(f"{path}: the {what} lie on one line in the map plane: they do not "
+                        "span a surface")
+    tri.set_mask(mtri.TriAnalyzer(tri).get_flat_tri_mask(min_circle_ratio=0.01))
+    return tri
+
+
+class FaultMaps:
+    """One table's nodes in the map plane with the triangulations the maps and the profile
+    use: all nodes (slip, zero at tips) and the non-tip nodes with finite tractions."""
+
+    def __init__(self, table, plane):
+        self.table = table
+        pos = np.column_stack([table["x"], table["y"], table["z"]])
+        self.u, self.v = plane.project(pos)
+        slip = np.column_stack([table["slipX"], table["slipY"], table["slipZ"]])
+        self.slipU, self.slipV = slip @ plane.t1, slip @ plane.t2
+        self.tri = triangulate(self.u, self.v, table["path"], "nodes")
+        # The projection on one plane is one-to-one only where the surface does not turn
+        # past 90 degrees from it; nodes projected onto others drop out of the triangulation.
+        normals = np.column_stack([table["nx"], table["ny"], table["nz"]])
+        turned = int(np.count_nonzero(normals @ plane.n <= 0))
+        used = np.zeros(len(self.u), dtype=bool)
+        used[self.tri.get_masked_triangles().ravel()] = True
+        self.foldWarning = None
+        if turned or not used.all():
+            self.foldWarning = (f"{table['path']}: the fault folds over itself in its mean plane "
+                                f"({turned} node normals at 90 degrees or more from it, "
+                                f"{np.count_nonzero(~used)} nodes on top of others): its maps "
+                                "and profile overlap there")
+        self.keep = np.array([s != "tip" for s in table["state"]])
+        for key in ("sigmaN", "tauMagnitude", "ST"):
+            self.keep &= np.isfinite(table[key])
+        self.tractionTri = None
+        if self.keep.sum() >= 3:
+            try:
+                self.tractionTri = triangulate(self.u[self.keep], self.v[self.keep],
+                                               table["path"], "nodes with tractions")
+            except PlotError:
+                self.tractionTri = None
+
+    def sample(self, u, v):
+        """slipMagnitude, sigmaN, tauMagnitude, ST at the map points, nan off the surface."""
+        # A point on the border (the default segment ends on border nodes) may be found
+        # outside by round-off: such points are looked up again a hair (1e-9 of the map's
+        # size) towards the centroid.
+        size = max(np.ptp(self.u), np.ptp(self.v))
+        cu, cv = self.u.mean(), self.v.mean()
+
+        def interp(tri, values):
+            f = mtri.LinearTriInterpolator(tri, values)
+            out = np.ma.filled(f(u, v), np.nan)
+            miss = ~np.isfinite(out)
+            if miss.any():
+                du, dv = cu - u[miss], cv - v[miss]
+                step = 1e-9 * size / np.maximum(np.hypot(du, dv), 1e-300)
+                out[miss] = np.ma.filled(f(u[miss] + step * du, v[miss] + step * dv), np.nan)
+            return out
+        out = {"slipMagnitude": interp(self.tri, self.table["slipMagnitude"])}
+        for key in ("sigmaN", "tauMagnitude", "ST"):
+            out[key] = (interp(self.tractionTri, self.table[key][self.keep])
+                        if self.tractionTri is not None else np.full(np.shape(u), np.nan))
+        return out
+
+
+def parseLine(text):
+    """'x0,y0,z0:x1,y1,z1' -> two points."""
+    form = "expected x0,y0,z0:x1,y1,z1 (two points in m)"
+    parts = text.split(":")
+    if len(parts) != 2:
+        raise PlotError(f"-line: {form}, got '{text}'")
+    points = []
+    for part in parts:
+        items = part.split(",")
+        try:
+            p = np.array([float(c) for c in items])
+        except ValueError:
+            raise PlotError(f"-line: {form}, got '{text}'")
+        if p.shape != (3,) or not np.all(np.isfinite(p)):
+            raise PlotError(f"-line: {form}, got '{text}'")
+        points.append(p)
+    if np.linalg.norm(points[1] - points[0]) == 0:
+        raise PlotError(f"-line: the two points of '{text}' coincide")
+    return points[0], points[1]
+
+
+class Fault3d:
+    """Everything drawn for one 3D fault, computed (and checked) before any file is written."""
+
+    def __init__(self, case, name, times, line, samples):
+        self.case, self.name, self.times = case, name, times
+        self.tables = [readTable3d(os.path.join(case, t, "fractures", name + ".dat"))
+                       for t in times]
+        self.plane = MapPlane(self.tables[-1])
+        self.maps = [FaultMaps(table, self.plane) for table in self.tables]
+        last = self.maps[-1]
+        if last.foldWarning:
+            print(f"plotFracture: warning: {last.foldWarning}", file=sys.stderr)
+        if line is None:
+            # Through the centroid along t1, across the whole fault.
+            a, b = last.u.min(), last.u.max()
+            o, t1 = self.plane.origin, self.plane.t1
+            self.line = (o + a * t1, o + b * t1)
+            self.lineText = "through the centroid along t1"
+        else:
+            self.line = line
+            self.lineText = "-line"
+        p0, p1 = self.line
+        self.distance = np.linspace(0.0, np.linalg.norm(p1 - p0), samples)
+        self.points = p0 + np.outer(self.distance / self.distance[-1], p1 - p0)
+        self.lineU, self.lineV = self.plane.project(self.points)
+        self.profiles = [m.sample(self.lineU, self.lineV) for m in self.maps]
+        if not any(np.isfinite(p["slipMagnitude"]).any() for p in self.profiles):
+            raise PlotError(f"-line: the segment {fmtPoint(p0)} -> {fmtPoint(p1)} does not "
+                            f"cross fracture '{name}' (projected on its map plane)")
+        self.law = fractureEntry(case, name, "law")
+        self.mu = frictionCoefficient(case, name)
+
+    def drawMaps(self, out):
+        m, t = self.maps[-1], self.times[-1]
+        table = m.table
+        # Side by side for a roundish fault, stacked for an elongated one.
+        aspect = np.ptp(m.u) / max(np.ptp(m.v), 1e-300)
+        if aspect > 1.4:
+            fig, axes = plt.subplots(3, 1, figsize=(10, min(18.0, 3 * 7.5 / aspect + 2.5)))
+        else:
+            fig, axes = plt.subplots(1, 3, figsize=(18, 5.8))
+        axSlip, axST, axState = axes
+        pc = axSlip.tripcolor(m.tri, table["slipMagnitude"], shading="gouraud", cmap="viridis")
+        fig.colorbar(pc, ax=axSlip, shrink=0.85, label="slip magnitude |slip| [m]")
+        magnitude = np.hypot(m.slipU, m.slipV)
+        if magnitude.max() > 0:
+            # At most about 400 arrows: on a grid over the map when there are more nodes.
+            if len(m.u) <= 400:
+                qu, qv, su, sv = m.u, m.v, m.slipU, m.slipV
+            else:
+                gu, gv = np.meshgrid(np.linspace(m.u.min(), m.u.max(), 20),
+                                     np.linspace(m.v.min(), m.v.max(), 20))
+                qu, qv = gu.ravel(), gv.ravel()
+                su = np.ma.filled(mtri.LinearTriInterpolator(m.tri, m.slipU)(qu, qv), np.nan)
+                sv = np.ma.filled(mtri.LinearTriInterpolator(m.tri, m.slipV)(qu, qv), np.nan)
+                inside = np.isfinite(su) & np.isfinite(sv)
+                qu, qv, su, sv = qu[inside], qv[inside], su[inside], sv[inside]
+            axSlip.quiver(qu, qv, su, sv, color="white", edgecolor="black", linewidth=0.3,
+                          width=0.004, pivot="mid")
+        axSlip.plot(self.lineU, self.lineV, "--", color="firebrick", lw=1.2)
+        axSlip.set_title("slip magnitude; arrows: slip (x y z) projected on t1, t2;\n"
+                         f"dashed: the profile's segment ({self.lineText})", fontsize=10)
+        if m.tractionTri is not None:
+            pc = axST.tripcolor(m.tractionTri, table["ST"][m.keep], shading="gouraud",
+                                cmap="magma")
+            fig.colorbar(pc, ax=axST, shrink=0.85, label=r"ST = $|\tau| / (-\sigma'_n)$")
+            title = "slip tendency ST (non-tip nodes)"
+            if self.law in COULOMB_LAWS and self.mu is not None:
+                title += f"; $\\mu_f$ = {self.mu:g}"
+            axST.set_title(title, fontsize=10)
+        else:
+            axST.set_title("slip tendency ST: fewer than 3 nodes with tractions", fontsize=10)
+        axState.triplot(m.tri, color="0.8", lw=0.4)
+        styles = {"tip": ("x", "black"), "stick": ("o", "tab:blue"), "slip": ("^", "tab:red"),
+                  "open": ("s", "tab:green")}
+        for state, (marker, color) in styles.items():
+            sel = np.array([s == state for s in table["state"]])
+            if sel.any():
+                axState.scatter(m.u[sel], m.v[sel], marker=marker, s=14, color=color,
+                                label=f"{state} ({sel.sum()})")
+        axState.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+        axState.set_title("node states", fontsize=10)
+        for ax in axes:
+            ax.set_aspect("equal")
+            ax.set_xlabel("along t1 from the centroid [m]")
+            ax.set_ylabel("along t2 from the centroid [m]")
+        status = statusWord(table["status"])
+        fig.suptitle(f"{os.path.basename(os.path.abspath(self.case))}: fault '{self.name}' at "
+                     f"t = {t}" + (f" ({status})" if status and status != "converged" else "")
+                     + (f", law {self.law}" if self.law else "")
+                     + f"\nmap plane: {self.plane.describe()}", fontsize=10)
+        fig.tight_layout()
+        saveFigure(fig, out)
+        plt.close(fig)
+
+    def drawProfile(self, out):
+        fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
+        colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(self.times) - 1)
+                                 for i in range(len(self.times))])
+        keys = (("slipMagnitude", "slip magnitude [m]"), ("sigmaN", r"$\sigma_n$ [Pa]"),
+                ("tauMagnitude", r"$|\tau|$ [Pa]"), ("ST", r"ST = $|\tau| / (-\sigma'_n)$"))
+        for t, profile, table, color in zip(self.times, self.profiles, self.tables, colors):
+            word = statusWord(table["status"])
+            label = f"t = {t}" + (f" ({word})" if word and word != "converged" else "")
+            for ax, (key, _) in zip(axes, keys):
+                ax.plot(self.distance, profile[key], ".-", color=color, ms=2, lw=1, label=label)
+        if self.law in COULOMB_LAWS and self.mu is not None and self.mu > 0:
+            axes[3].axhline(self.mu, color="firebrick", ls="--", lw=1.2,
+                            label=f"$\\mu_f$ = {self.mu:g}")
+        for ax, (_, ylabel) in zip(axes, keys):
+            ax.set_ylabel(ylabel)
+            ax.grid(True, alpha=0.3)
+            ax.legend(fontsize=8)
+        p0, p1 = self.line
+        axes[0].set_title(f"{os.path.basename(os.path.abspath(self.case))}: fault '{self.name}', "
+                          f"profile {fmtPoint(p0)} -> {fmtPoint(p1)}\n(linear interpolation on "
+                          "the triangulated fault; tractions on its non-tip nodes)", fontsize=10)
+        axes[3].set_xlabel("distance along the segment from its first point [m]")
+        fig.tight_layout()
+        saveFigure(fig, out)
+        plt.close(fig)
+
+    def profileCsv(self):
+        lines = ["time,distance,x,y,z,slipMagnitude,sigmaN,tauMagnitude,ST"]
+        for t, profile in zip(self.times, self.profiles):
+            for i, d in enumerate(self.distance):
+                values = [d, *self.points[i]] + [profile[k][i] for k in
+                                                 ("slipMagnitude", "sigmaN", "tauMagnitude", "ST")]
+                lines.append(",".join([t] + [f"{v:.12g}" for v in values]))
+        return "\n".join(lines) + "\n"
+
+
+def fmtPoint(p):
+    return "(" + " ".join(f"{c:g}" for c in p) + ")"
 
 
 def main(argv):
     # OpenFOAM-style single-dash options: -help as well as -h.
-    ap = argparse.ArgumentParser(prog="plotFracture", description=__doc__.split("\n")[0],
-                                 add_help=False)
+    ap = argparse.ArgumentParser(
+        prog="plotFracture", description=__doc__.split("\n")[0], add_help=False,
+        epilog="2D tables: ST (or tractions) and slip along the arclength. 3D tables: maps of "
+        "slip magnitude (arrows: slip), ST and node states over each fault, and a profile "
+        "along -line. Details: the header of this script and README.md (plotFracture).")
     ap.add_argument("-h", "-help", "--help", action="help", help="print this help and exit")
     ap.add_argument("-case", required=True, help="case folder")
     ap.add_argument("-fracture", help="fracture name (default: every fracture)")
@@ -248,6 +666,16 @@ def main(argv):
     ap.add_argument("-o", dest="out", help="output PNG of the fracture figure")
     ap.add_argument("-convergence", help="output PNG of the convergence figure")
     ap.add_argument("-noConvergence", action="store_true", help="no convergence figure")
+    ap.add_argument("-line", metavar="x0,y0,z0:x1,y1,z1",
+                    help="3D: the profile's segment, two points [m] projected on the fault's "
+                    "map plane (default: through the centroid along t1)")
+    ap.add_argument("-profile", metavar="OUT.png",
+                    help="3D: output PNG of the profile (default "
+                    "postProcessing/fracture_<name>_profile.png)")
+    ap.add_argument("-profileCsv", metavar="OUT.csv",
+                    help="3D: also write the profile's samples as CSV (time,distance,x,y,z,"
+                    "slipMagnitude,sigmaN,tauMagnitude,ST; nan off the fault)")
+    ap.add_argument("-samples", metavar="N", help="3D: points along the profile (default 201)")
     a = ap.parse_args(argv)
 
     case = a.case
@@ -296,13 +724,59 @@ def main(argv):
             raise PlotError(f"{case}: fracture '{name}' has no table at time(s) "
                             f"{' '.join(missing)}")
 
+    # 3D faults: every table read and checked, the profile sampled, before any file is written.
+    faults3d = {}
+    for name in names:
+        kinds = {is3dTable(os.path.join(case, t, "fractures", name + ".dat")) for t in times}
+        if len(kinds) > 1:
+            raise PlotError(f"{case}: fracture '{name}' has 2D and 3D tables (header '# s x y' "
+                            "at some times, '# x y z' at others)")
+        if kinds == {True}:
+            faults3d[name] = None
+    only3d = [opt for opt, value in (("-line", a.line), ("-profile", a.profile),
+                                     ("-profileCsv", a.profileCsv), ("-samples", a.samples))
+              if value is not None]
+    for opt in only3d:
+        flat = [n for n in names if n not in faults3d]
+        if flat:
+            raise PlotError(f"{opt}: fracture '{flat[0]}' has a 2D table (header '# s x y ...'); "
+                            f"{opt} is for 3D fault surfaces")
+        if len(names) > 1 and opt != "-samples":
+            raise PlotError(f"{opt}: {len(names)} fractures ({' '.join(names)}); choose one "
+                            "with -fracture")
+    line = parseLine(a.line) if a.line is not None else None
+    samples = 201
+    if a.samples is not None:
+        try:
+            samples = int(a.samples)
+        except ValueError:
+            samples = 0
+        if samples < 2:
+            raise PlotError(f"-samples: expected a whole number >= 2, got '{a.samples}'")
+    for name in faults3d:
+        faults3d[name] = Fault3d(case, name, times, line, samples)
+
     post = os.path.join(case, "postProcessing")
     written = []
     for name in names:
         out = a.out or os.path.join(post, f"fracture_{name}.png")
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
-        shows = plotFracture(case, name, times, out)
-        written.append(f"{out} ({shows} and slip)")
+        fault = faults3d.get(name)
+        if fault is None:
+            shows = plotFracture(case, name, times, out)
+            written.append(f"{out} ({shows} and slip)")
+            continue
+        fault.drawMaps(out)
+        written.append(f"{out} (maps of slip magnitude, ST and node states at t = {times[-1]})")
+        profile = a.profile or os.path.join(post, f"fracture_{name}_profile.png")
+        os.makedirs(os.path.dirname(os.path.abspath(profile)), exist_ok=True)
+        fault.drawProfile(profile)
+        p0, p1 = fault.line
+        written.append(f"{profile} (profile {fmtPoint(p0)} -> {fmtPoint(p1)})")
+        if a.profileCsv:
+            os.makedirs(os.path.dirname(os.path.abspath(a.profileCsv)), exist_ok=True)
+            writeTextAtomically(a.profileCsv, fault.profileCsv())
+            written.append(f"{a.profileCsv} (profile samples)")
     history = os.path.join(post, "convergence.dat")
     if not a.noConvergence:
         if os.path.isfile(history):

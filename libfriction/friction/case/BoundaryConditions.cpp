@@ -1,6 +1,8 @@
 // The case's boundary conditions: see BoundaryConditions.hpp.
 #include "friction/case/BoundaryConditions.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -15,8 +17,33 @@ std::vector<std::string> BoundaryConditions::typeNames() {
   return {"fixedDisplacement", "traction", "pressure", "free"};
 }
 
+namespace {
+
+/// The unit normal of the mesh's labelled triangle e pointing out of the tetrahedron it bounds
+/// (away from its opposite vertex; of the last tetrahedron, in mesh order, if two have it).
+Point outwardTriangleNormal(const Mesh& mesh, const MeshTopology& topology, Index e,
+                            const std::string& patch) {
+  const Index a = mesh.facetVertex(e, 0), b = mesh.facetVertex(e, 1), c = mesh.facetVertex(e, 2);
+  const Point& xa = mesh.points[a];
+  Point n = (mesh.points[b] - xa).cross(mesh.points[c] - xa);
+  const Index f = topology.findFacet({a, b, c});
+  if (f < 0 || !(n.norm() > 0))
+    throw InputError(mesh.source, "the triangle " + formatPoint(xa, 3) + " " +
+                                      formatPoint(mesh.points[b], 3) + " " +
+                                      formatPoint(mesh.points[c], 3) + " of patch '" + patch +
+                                      "' is not a face of any tetrahedron");
+  n.normalize();
+  const auto last = topology.cellOf(f, topology.numCellsOf(f) - 1);
+  const Index o = topology.oppositeVertex(last.cell, last.local);
+  if ((mesh.points[o] - xa).dot(n) > 0) n = -n;
+  return n;
+}
+
+}  // namespace
+
 BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
                                        const std::vector<int>& fractureLabels) {
+  const int dim = mesh.dim;
   const Dictionary& field = dict.subDict("boundaryField");
   std::map<std::string, int> labelOf;
   for (const auto& [label, name] : mesh.labelNames)
@@ -38,20 +65,36 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
       const std::string type = p.getChoice("type", typeNames());
       if (type == "fixedDisplacement") {
         patch.type = Type::fixedDisplacement;
-        patch.value = TimeFunction::read(p, "value", 2);
+        patch.value = TimeFunction::read(p, "value", dim);
         if (p.found("components")) {
           const std::vector<std::string> c = p.getWordList("components");
-          const bool x = std::find(c.begin(), c.end(), "x") != c.end();
-          const bool y = std::find(c.begin(), c.end(), "y") != c.end();
-          if (c.empty() || c.size() != static_cast<std::size_t>(x + y))
-            p.fail("components", "key 'components': expected (x), (y) or (x y)");
-          patch.components = x && y ? FixedComponents::all
-                             : x    ? FixedComponents::x
-                                    : FixedComponents::y;
+          const std::string expected = dim == 2 ? "expected (x), (y) or (x y)"
+                                                : "expected a non-empty subset of (x y z), "
+                                                  "e.g. (x z)";
+          const char* const axis[3] = {"x", "y", "z"};
+          const FixedComponents bit[3] = {FixedComponents::x, FixedComponents::y,
+                                          FixedComponents::z};
+          unsigned set = 0;
+          std::size_t count = 0;
+          for (int k = 0; k < 3; ++k)
+            if (std::find(c.begin(), c.end(), axis[k]) != c.end()) {
+              set |= static_cast<unsigned>(bit[k]);
+              ++count;
+            }
+          if (dim == 2 && (set & static_cast<unsigned>(FixedComponents::z)))
+            p.fail("components",
+                   "key 'components': 'z' has no meaning on a 2D mesh (its "
+                   "displacements have x and y only); " +
+                       expected);
+          // An unknown word or a repeated one leaves count short of the list's length.
+          if (c.empty() || c.size() != count) p.fail("components", "key 'components': " + expected);
+          // Every component of the dimension is `all` (the 2D (x y) as before).
+          patch.components =
+              set == (1u << dim) - 1 ? FixedComponents::all : static_cast<FixedComponents>(set);
         }
       } else if (type == "traction") {
         patch.type = Type::traction;
-        patch.value = TimeFunction::read(p, "traction", 2);
+        patch.value = TimeFunction::read(p, "traction", dim);
       } else if (type == "pressure") {
         patch.type = Type::pressure;
         patch.value = TimeFunction::read(p, "pressure", 1);
@@ -60,6 +103,10 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
         const auto topology = mesh.topology();
         for (Index e = 0; e < mesh.numFacets(); ++e) {
           if (mesh.facetLabel[e] != patch.label) continue;
+          if (dim == 3) {
+            patch.outwardNormal.push_back(outwardTriangleNormal(mesh, *topology, e, name));
+            continue;
+          }
           const Index a = mesh.facetVertex(e, 0), b = mesh.facetVertex(e, 1);
           const Vector2 d = mesh.points[b].head<2>() - mesh.points[a].head<2>();
           Vector2 n = Vector2(d.y(), -d.x()).normalized();
@@ -72,7 +119,7 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
           const auto last = topology->cellOf(f, topology->numCellsOf(f) - 1);
           const Index c = topology->oppositeVertex(last.cell, last.local);
           if ((mesh.points[c].head<2>() - mesh.points[a].head<2>()).dot(n) > 0) n = -n;
-          patch.outwardNormal.push_back(n);
+          patch.outwardNormal.push_back(Point(n.x(), n.y(), 0.0));
         }
       }
       patches_.push_back(std::move(patch));
@@ -87,7 +134,9 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
   const auto topology = mesh.topology();
   std::set<int> onBoundary;
   for (Index e = 0; e < mesh.numFacets(); ++e) {
-    const Index f = topology->findFacet({mesh.facetVertex(e, 0), mesh.facetVertex(e, 1)});
+    const Index f = dim == 2 ? topology->findFacet({mesh.facetVertex(e, 0), mesh.facetVertex(e, 1)})
+                             : topology->findFacet({mesh.facetVertex(e, 0), mesh.facetVertex(e, 1),
+                                                    mesh.facetVertex(e, 2)});
     if (f >= 0 && topology->isBoundary(f)) onBoundary.insert(mesh.facetLabel[e]);
   }
   for (const auto& [name, label] : labelOf) {
@@ -111,7 +160,10 @@ void BoundaryConditions::setValues(DirichletConditions& dirichlet, double t) con
   for (const Patch& p : patches_)
     if (p.type == Type::fixedDisplacement) {
       const std::vector<double> v = p.value(t);
-      dirichlet.setPatchValue(p.label, Vector2(v[0], v[1]));
+      if (v.size() == 3)
+        dirichlet.setPatchValue(p.label, Point(v[0], v[1], v[2]));
+      else
+        dirichlet.setPatchValue(p.label, Vector2(v[0], v[1]));
     }
 }
 
@@ -127,12 +179,28 @@ Eigen::VectorXd BoundaryConditions::neumannLoad(const LagrangeSpace& space, doub
   for (const Patch& p : patches_) {
     if (p.type != Type::traction && p.type != Type::pressure) continue;
     const std::vector<double> v = p.value(t);
+    if (mesh.dim == 3) {
+      const std::vector<Index> facets = space.labelledFacets(p.label);
+      for (std::size_t e = 0; e < facets.size(); ++e) {
+        const auto x = mesh.facet(facets[e]);
+        const Point& a = mesh.points[x[0]];
+        const double area = 0.5 * (mesh.points[x[1]] - a).cross(mesh.points[x[2]] - a).norm();
+        const Point g =
+            p.type == Type::traction ? Point(v[0], v[1], v[2]) : Point(-v[0] * p.outwardNormal[e]);
+        // ∫ φ_i dA on a flat triangle: A/3 at each vertex (P1); for P2, 0 at the vertices and
+        // A/3 at the mid-edge nodes (facet order: the three vertices, then the midpoints).
+        const NodeList nodes = space.labelledFacetNodes(facets[e]);
+        for (int k = nodes.size == 3 ? 0 : 3; k < nodes.size; ++k)
+          F.segment<3>(space.dof(nodes[k], 0)) += (area / 3) * g;
+      }
+      continue;
+    }
     const auto edges = space.labelledEdges(p.label);
     for (std::size_t e = 0; e < edges.size(); ++e) {
       const auto [a, b] = edges[e];
       const double length = (mesh.points[b].head<2>() - mesh.points[a].head<2>()).norm();
-      const Vector2 g =
-          p.type == Type::traction ? Vector2(v[0], v[1]) : Vector2(-v[0] * p.outwardNormal[e]);
+      const Vector2 g = p.type == Type::traction ? Vector2(v[0], v[1])
+                                                 : Vector2(-v[0] * p.outwardNormal[e].head<2>());
       // ∫ φ_i ds on a straight edge: L/2 at the ends (P1); L/6, 2L/3, L/6 (P2).
       const NodeList nodes = space.edgeNodes(a, b);
       const double w1[2] = {0.5, 0.5}, w2[3] = {1.0 / 6, 2.0 / 3, 1.0 / 6};

@@ -12,6 +12,12 @@
 //       side   { type free; }
 //   }
 // Every boundary patch must be listed; an unknown patch or type is an error naming it.
+//
+// The dimension comes from the mesh: on a 3D mesh (tetrahedra, labelled boundary triangles)
+// vectors have three components, e.g. value (0 0 -0.01); traction (0 0 -1e6);
+// components (x z) (any non-empty subset of x y z; z is refused on a 2D mesh), and a pressure
+// pushes along −n of each triangle of the patch (n pointing away from the tetrahedron's
+// opposite vertex).
 #pragma once
 
 #include <string>
@@ -39,11 +45,13 @@ class BoundaryConditions {
     Type type = Type::free;
     FixedComponents components = FixedComponents::all;
     TimeFunction value;  ///< displacement [m], traction [Pa] or pressure [Pa]
-    /// pressure: outward unit normal per edge of the patch, in mesh edge order.
-    std::vector<Vector2> outwardNormal;
+    /// pressure: outward unit normal per facet of the patch (edge in 2D, z = 0; triangle in
+    /// 3D), in mesh facet order.
+    std::vector<Point> outwardNormal;
   };
 
-  /// Read 0/D's boundaryField against the patches of the (split) mesh.
+  /// Read 0/D's boundaryField against the patches of the (split) mesh; vectors have
+  /// mesh.dim components.
   BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
                      const std::vector<int>& fractureLabels);
 
@@ -55,7 +63,8 @@ class BoundaryConditions {
   void setValues(DirichletConditions& dirichlet, double t) const;
   /// Whether the Neumann loads at t differ from those at t0 (tables only change in time).
   bool loadsChange(double t0, double t) const;
-  /// Nodal force vector of the tractions and pressures at time t on `space` [N per m].
+  /// Nodal force vector of the tractions and pressures at time t on `space` [N per m in 2D,
+  /// N in 3D]; `space` is on the mesh the conditions were read against.
   Eigen::VectorXd neumannLoad(const LagrangeSpace& space, double t) const;
 
  private:

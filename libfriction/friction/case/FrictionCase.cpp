@@ -13,7 +13,10 @@
 #include <map>
 #include <numeric>
 #include <ostream>
+#include <set>
 #include <sstream>
+
+#include <Eigen/Geometry>
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/OutputError.hpp"
@@ -87,15 +90,8 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
     throw InputError(splitPath, "cannot open: run splitFractureNodes on the case first");
   split_ = readSplitMesh(splitPath);
   checkSplitMeshCurrent(caseDir, split_);
-  // The first place the dimension is known: refuse a 3D mesh before anything is assembled.
-  if (split_.mesh.dim != 2)
-    throw InputError(splitPath,
-                     "is a 3D split mesh (tetrahedra, fault surfaces): frictionSolver solves "
-                     "2D cases only so far (splitFractureNodes splits 3D meshes already; "
-                     "solving in 3D comes next); expected a 2D split mesh");
-
   const Dictionary mech = readCaseFile(caseDir, "constant/mechanicalProperties");
-  material_ = std::make_unique<Material>(Material::read(mech));
+  material_ = std::make_unique<Material>(Material::read(mech, split_.mesh.dim));
   mech.checkAllRead();
 
   std::vector<int> fractureLabels;
@@ -136,7 +132,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
         skippedEffects_.push_back(key);
         continue;
       }
-      effects_.push_back(Effect::New(key, e, names, caseDir));
+      effects_.push_back(Effect::New(key, e, names, caseDir, split_.mesh.dim));
     }
     ed.checkAllRead();
   }
@@ -163,7 +159,10 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
 void FrictionCase::printSettings(std::ostream& log) const {
   log << "Case: " << caseDir_ << "\n"
       << "Material: E " << material_->youngModulus() << " Pa, nu " << material_->poissonRatio()
-      << (material_->planeStress() ? ", plane stress" : ", plane strain") << "\n"
+      << (split_.mesh.dim == 3       ? ", 3D"
+          : material_->planeStress() ? ", plane stress"
+                                     : ", plane strain")
+      << "\n"
       << "Elements: P" << order_ << ", linear solver " << linearSolver_ << "\n";
   if (fractures_.empty()) log << "Fractures: none (a plain elastic solve, no control loop)\n";
   for (const auto& f : fractures_) {
@@ -209,35 +208,32 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   // Per control node: ρ = c − μ σ_n from its fracture's law.
   mu_.resize(n);
   cohesion_.resize(n);
-  double hSum = 0;
-  int hCount = 0;
   for (Eigen::Index k = 0; k < n; ++k) {
     mu_[k] = fractures_[nodes[k].fracture].law->mu();
     cohesion_[k] = fractures_[nodes[k].fracture].law->cohesion();
-    if (k > 0 && nodes[k].fracture == nodes[k - 1].fracture) {
-      hSum += (nodes[k].x - nodes[k - 1].x).norm() * order_;
-      ++hCount;
-    }
   }
   // γ has units of stress/length; its scale-free default is E over the mean fracture edge
   // length h (docs/method.md §4): then γβ and τ are of the same size for slips of order h·τ/E.
-  if (!gammaAbsolute_)
-    gamma_ = hCount > 0 ? gammaRelative_ * material_->youngModulus() / (hSum / hCount) : 1.0;
-  // Gradient steps scale like (w/E)², w the smallest lumped weight of Γ (the M of the
-  // M-gradient): h for P1, h/3 at the vertices for P2 (Simpson).
+  const double h = meanFractureEdge();
+  if (!gammaAbsolute_) gamma_ = h > 0 ? gammaRelative_ * material_->youngModulus() / h : 1.0;
+  // Gradient steps scale like (w/E)², w the length of the smallest lumped weight of Γ (the M
+  // of the M-gradient): h for P1, h/3 at the vertices for P2 (Simpson) in 2D; in 3D the
+  // weight is an area, and its square root is the length.
   if (n > 0) {
     double w = std::numeric_limits<double>::infinity();
     for (Eigen::Index k = 0; k < n; ++k)
       if (system_->freeMask()[k] > 0) w = std::min(w, system_->weights()[k]);
+    if (split_.mesh.dim == 3) w = std::sqrt(w);
     if (std::isfinite(w)) optimizer_->setStepScale(std::pow(w / material_->youngModulus(), 2));
   }
   slip_ = Eigen::VectorXd::Zero(system_->blockSize() * n);
 
   const auto& f = system_->factorization();
   log << "Split mesh: " << split_.mesh.numPoints() << " points, " << split_.mesh.numCells()
-      << " triangles, " << system_->unsplitSpace().numDofs() << " dofs (P" << order_ << "), " << n
+      << (split_.mesh.dim == 3 ? " tetrahedra, " : " triangles, ")
+      << system_->unsplitSpace().numDofs() << " dofs (P" << order_ << "), " << n
       << " fracture control nodes\n";
-  // P1 triangles lock for nearly incompressible material (the discrete divergence-free
+  // P1 simplices lock for nearly incompressible material (the discrete divergence-free
   // space is too small): the displacement comes out too small. P2 copes far better.
   if (order_ == 1 && !material_->planeStress() && material_->poissonRatio() > 0.45)
     log << "Warning: nu = " << std::setprecision(12) << material_->poissonRatio()
@@ -276,9 +272,38 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
 
 std::string FloatingPart::describe() const {
   std::ostringstream s;
-  s << "around (" << std::setprecision(4) << point.x() << ", " << point.y() << "), " << triangles
-    << " triangle" << (triangles == 1 ? "" : "s");
+  s << "around (" << std::setprecision(4) << point.x() << ", " << point.y();
+  if (dim == 3) s << ", " << point.z();
+  s << "), " << cells
+    << (dim == 3 ? (cells == 1 ? " tetrahedron" : " tetrahedra")
+                 : (cells == 1 ? " triangle" : " triangles"));
   return s.str();
+}
+
+double FrictionCase::meanFractureEdge() const {
+  const auto& nodes = system_->controlNodes();
+  double sum = 0;
+  long count = 0;
+  if (split_.mesh.dim == 2) {
+    // Consecutive control nodes of a fracture are a mesh edge apart (P1) or half of one (P2).
+    for (std::size_t k = 1; k < nodes.size(); ++k)
+      if (nodes[k].fracture == nodes[k - 1].fracture) {
+        sum += (nodes[k].x - nodes[k - 1].x).norm() * order_;
+        ++count;
+      }
+  } else {
+    // Every edge of the fault triangles once.
+    for (const auto& g : split_.fractures) {
+      std::set<std::pair<Index, Index>> edges;
+      for (const auto& t : g.triangles)
+        for (int a = 0; a < 3; ++a) edges.insert(std::minmax(t[a], t[(a + 1) % 3]));
+      for (const auto& [a, b] : edges) {
+        sum += (split_.mesh.points[a] - split_.mesh.points[b]).norm();
+        ++count;
+      }
+    }
+  }
+  return count > 0 ? sum / count : 0.0;
 }
 
 namespace {
@@ -326,39 +351,40 @@ void FrictionCase::findFloatingParts() {
     }
   }
   struct Sum {
-    int triangles = 0;
-    Vector2 centre = Vector2::Zero();
-    double area = 0;
+    int cells = 0;
+    Point centre = Point::Zero();
+    double measure = 0;
   };
+  const auto vertexSum = [&m](Index c) {
+    Point x = Point::Zero();
+    for (Index v : m.cell(c)) x += m.points[v];
+    return x;
+  };
+  const int nv = m.verticesPerCell();
   std::map<Index, Sum> sums;
-  Vector2 lo = Vector2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const auto& x : m.points) lo = lo.cwiseMin(x.head<2>()), hi = hi.cwiseMax(x.head<2>());
+  Point lo = Point::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& x : m.points) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   diameter_ = m.points.empty() ? 0.0 : (hi - lo).norm();
   for (Index t = 0; t < m.numCells(); ++t) {
-    const auto tri = m.cell(t);
-    const Index r = split.root(tri[0]);
+    const Index r = split.root(m.cellVertex(t, 0));
     if (held[r]) continue;
     Sum& s = sums[r];
     const double a = std::abs(m.signedMeasure(t));
-    ++s.triangles;
-    s.centre +=
-        a * (m.points[tri[0]].head<2>() + m.points[tri[1]].head<2>() + m.points[tri[2]].head<2>()) /
-        3;
-    s.area += a;
+    ++s.cells;
+    s.centre += a * vertexSum(t) / nv;
+    s.measure += a;
   }
   floating_.clear();
   std::map<Index, std::size_t> index;
   for (auto& [r, s] : sums) {
     FloatingPart p;
-    p.triangles = s.triangles;
-    const Vector2 centre = s.area > 0 ? Vector2(s.centre / s.area) : Vector2::Zero();
+    p.dim = m.dim;
+    p.cells = s.cells;
+    const Point centre = s.measure > 0 ? Point(s.centre / s.measure) : Point::Zero();
     double best = std::numeric_limits<double>::infinity();
     for (Index t = 0; t < m.numCells(); ++t) {
-      const auto tri = m.cell(t);
-      if (split.root(tri[0]) != r) continue;
-      const Vector2 c =
-          (m.points[tri[0]].head<2>() + m.points[tri[1]].head<2>() + m.points[tri[2]].head<2>()) /
-          3;
+      if (split.root(m.cellVertex(t, 0)) != r) continue;
+      const Point c = vertexSum(t) / nv;
       if ((c - centre).norm() < best) best = (c - centre).norm(), p.point = c;
     }
     p.heldThroughFracture = wholeHeld[whole.root(split_.origin.empty() ? r : split_.origin[r])];
@@ -400,43 +426,66 @@ std::string FrictionCase::factorFailureDiagnosis() const {
     s << " fix a patch of each (0/D, type fixedDisplacement)";
     return s.str();
   }
-  // 3. Held, but by rollers in one direction only.
-  bool fixesX = false, fixesY = false;
-  for (const auto& p : bcs_->patches())
-    if (p.type == BoundaryConditions::Type::fixedDisplacement) {
-      fixesX |= p.components != FixedComponents::y;
-      fixesY |= p.components != FixedComponents::x;
-    }
-  if (!fixesX || !fixesY) {
-    s << "every part touches a Dirichlet patch, but they fix only the " << (fixesX ? "x" : "y")
-      << " component: the body can slide along " << (fixesX ? "y" : "x")
-      << "; fix that component somewhere (0/D, components)";
+  // 3. Held, but by rollers that leave a direction free.
+  const Mesh& m = split_.mesh;
+  std::vector<std::string> fixed, free;
+  for (int c = 0; c < m.dim; ++c) {
+    bool fixes = false;
+    for (const auto& p : bcs_->patches())
+      fixes |=
+          p.type == BoundaryConditions::Type::fixedDisplacement && fixesComponent(p.components, c);
+    (fixes ? fixed : free).push_back(std::string(1, "xyz"[c]));
+  }
+  if (!free.empty()) {
+    s << "every part touches a Dirichlet patch, but they fix only the " << joinWords(fixed)
+      << " component" << (fixed.size() == 1 ? "" : "s") << ": the body can slide along "
+      << joinWords(free) << "; fix that component somewhere (0/D, components)";
     return s.str();
   }
-  // 4. Conditioning: the worst-shaped triangle, nearly incompressible material.
-  const Mesh& m = split_.mesh;
+  // 4. Conditioning: the worst-shaped cell (longest edge over its smallest height), nearly
+  // incompressible material.
   double worst = 0;
-  Vector2 where = Vector2::Zero();
+  Point where = Point::Zero();
   for (Index t = 0; t < m.numCells(); ++t) {
-    const auto tri = m.cell(t);
-    double longest = 0;
-    for (int a = 0; a < 3; ++a)
-      longest = std::max(
-          longest,
-          (m.points[tri[a]].head<2>() - m.points[tri[(a + 1) % 3]].head<2>()).squaredNorm());
-    const double area = std::abs(m.signedMeasure(t));
-    const double aspect = area > 0 ? longest / (2 * area) : std::numeric_limits<double>::infinity();
-    if (aspect > worst)
-      worst = aspect, where = (m.points[tri[0]].head<2>() + m.points[tri[1]].head<2>() +
-                               m.points[tri[2]].head<2>()) /
-                              3;
+    const auto cell = m.cell(t);
+    const int nv = m.verticesPerCell();
+    double aspect = 0;
+    const double measure = std::abs(m.signedMeasure(t));
+    if (m.dim == 2) {
+      double longest = 0;
+      for (int a = 0; a < 3; ++a)
+        longest =
+            std::max(longest, (m.points[cell[a]] - m.points[cell[(a + 1) % 3]]).squaredNorm());
+      aspect = measure > 0 ? longest / (2 * measure) : std::numeric_limits<double>::infinity();
+    } else {
+      // Smallest height 3V / (largest face area).
+      double longest = 0, face = 0;
+      for (int a = 0; a < nv; ++a)
+        for (int b = a + 1; b < nv; ++b)
+          longest = std::max(longest, (m.points[cell[a]] - m.points[cell[b]]).norm());
+      for (int skip = 0; skip < nv; ++skip) {
+        Point v[3];
+        for (int a = 0, j = 0; a < nv; ++a)
+          if (a != skip) v[j++] = m.points[cell[a]];
+        face = std::max(face, 0.5 * (v[1] - v[0]).cross(v[2] - v[0]).norm());
+      }
+      aspect =
+          measure > 0 ? longest * face / (3 * measure) : std::numeric_limits<double>::infinity();
+    }
+    if (aspect > worst) {
+      worst = aspect;
+      where = Point::Zero();
+      for (Index v : cell) where += m.points[v];
+      where /= nv;
+    }
   }
   s << "every part is held, so the matrix is singular to working precision through its "
        "conditioning (smallest pivot ratio "
-    << f.minPivotRatio() << ", tolerance " << f.pivotTolerance() << "): the worst triangle, at ("
-    << where.x() << ", " << where.y() << "), has aspect ratio (longest edge / height) " << worst
-    << ", nu = " << std::setprecision(12) << material_->poissonRatio()
-    << "; remesh without slivers (aspect ratio below ~1e6)"
+    << f.minPivotRatio() << ", tolerance " << f.pivotTolerance() << "): the worst "
+    << (m.dim == 3 ? "tetrahedron" : "triangle") << ", at (" << where.x() << ", " << where.y();
+  if (m.dim == 3) s << ", " << where.z();
+  s << "), has aspect ratio (longest edge / height) " << worst << ", nu = " << std::setprecision(12)
+    << material_->poissonRatio() << "; remesh without slivers (aspect ratio below ~1e6)"
     << (material_->poissonRatio() > 0.49 ? " and keep nu below 0.5 by a margin" : "");
   return s.str();
 }
@@ -817,11 +866,14 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   const int precision = time_->writePrecision();
   TimeFolder folder(caseDir_, time_->timeName(r.time));
   const FractureSystem& sys = *system_;
+  const LagrangeSpace& space = sys.splitSpace();
+  const int dim = sys.dimension();
 
   // Displacement at the split-mesh points (P2: the vertices, which come first).
   const Eigen::VectorXd u = sys.lastSplitDisplacement();
-  std::vector<Vector2> points(split_.mesh.points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) points[i] = u.segment<2>(2 * i);
+  std::vector<Point> points(split_.mesh.points.size(), Point::Zero());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int c = 0; c < dim; ++c) points[i][c] = u[space.dof(static_cast<Index>(i), c)];
   writeDisplacementField(folder.file("D"), points, precision);
 
   std::ostringstream status;
@@ -829,45 +881,79 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
          << " backSubstitutions " << r.backSubstitutions << " J " << r.J << " relResidual "
          << r.relResidual << " maxExcessST " << r.maxExcessST << " equilibrium " << r.equilibrium;
   const auto& nodes = sys.controlNodes();
-  // The tables hold one tangential component per node (2D, k = 1). For k > 1 they will give
-  // the components on t₁ … t_k of slip, slip increment, τ and residual, and the magnitudes
-  // |slip| and |τ| (ST = |τ| / −σ'_n); the frame is written once per fracture.
-  FRICTION_ASSERT(sys.blockSize() == 1, "fracture tables of k > 1 components are not defined");
+  // k tangential components per node (k = d − 1), node-major in last_.tau, last_.D, slip_, beta.
+  const int kb = sys.blockSize();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<VtkSeries::Fracture> vtkFractures;
   for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
-    std::vector<FractureRow> rows;
+    VtkSeries::Fracture out{split_.fractures[f].name, {}};
+    std::vector<FractureRow>& rows = out.rows;
+    std::map<Index, Index> rowOfPlus;  // the Ω⁺ copy of a control node -> its row
     for (std::size_t k = 0; k < nodes.size(); ++k) {
       if (nodes[k].fracture != static_cast<int>(f)) continue;
-      const double sn = last_.sigmaN[k], tau = last_.tau[k];
+      const bool tip = nodes[k].tip;
       const bool held = sys.freeMask()[k] == 0;
-      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const Eigen::Index at = kb * static_cast<Eigen::Index>(k);
       FractureRow row;
       row.s = nodes[k].arclength;
-      row.x = nodes[k].x.x();
-      row.y = nodes[k].x.y();
-      row.slip = slip_[k];
-      row.slipIncrement = beta[k];
-      // At a tip (single node) the two sides are not told apart: no traction is recovered,
-      // and the table says so (nan, state tip) rather than show a zero that plots would draw.
-      row.sigmaN = nodes[k].tip ? nan : sn;
-      row.tau = nodes[k].tip ? nan : tau;
-      // Slip tendency on the effective normal stress σ_n + p (p = 0 without fracturePressure).
+      row.position = nodes[k].position;
+      row.normal = nodes[k].normal;
+      row.tangent = nodes[k].tangent;
+      for (int c = 0; c < kb; ++c) {
+        row.slip[c] = slip_[at + c];
+        row.slipIncrement[c] = beta[at + c];
+        // At a tip (single node) the two sides are not told apart: no traction is recovered,
+        // and the table says so (nan, state tip) rather than show a zero that plots would draw.
+        row.tau[c] = tip ? nan : last_.tau[at + c];
+        row.residual[c] = tip ? nan : last_.D[at + c];
+      }
+      const double sn = last_.sigmaN[k];
+      row.sigmaN = tip ? nan : sn;
+      // Slip tendency |τ| / −σ'_n on the effective normal stress σ'_n = σ_n + p (p = 0 without
+      // fracturePressure); |τ| of k = 1 is |τ₁| exactly (blockNorm).
       const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
-      row.ST = nodes[k].tip ? nan : effective < 0 ? std::abs(tau) / -effective : 0.0;
-      row.residual = nodes[k].tip ? nan : last_.D[k];
+      const double tauNorm = blockNorm(last_.tau.segment(at, kb));
+      row.ST = tip ? nan : effective < 0 ? tauNorm / -effective : 0.0;
       // Nodes on Dirichlet patches have their jump held at zero: they stick. The law's bound
       // ρ ≤ 0 frees a node; it is open only where σ'_n ≥ 0 — compressed (frictionless, μ_f = 0)
       // it slides freely.
       const SlipState law = last_.node[k].state;
-      row.state = nodes[k].tip             ? "tip"
+      row.state = tip                      ? "tip"
                   : held                   ? "stick"
                   : law == SlipState::open ? (effective >= 0 ? "open" : "slip")
                                            : toString(law);
+      rowOfPlus[nodes[k].plus] = static_cast<Index>(rows.size());
       rows.push_back(row);
     }
     writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), rows,
-                       status.str(), precision);
-    vtkFractures.push_back({split_.fractures[f].name, std::move(rows)});
+                       status.str(), precision, dim);
+    // 3D: the fault triangles as row indices for the .vtp. A vertex's row is found by its Ω⁺
+    // copy (the unsplit number, as in the triangles), a P2 midpoint's by the split-space node
+    // of the edge between the Ω⁺ copies, as FractureSystem made those control nodes.
+    const FractureGeometry& g = split_.fractures[f];
+    out.nodesPerTriangle = space.degree() == 2 ? 6 : 3;
+    const auto row = [&rowOfPlus](Index plus) {
+      const auto it = rowOfPlus.find(plus);
+      FRICTION_ASSERT(it != rowOfPlus.end(), "a fault triangle's node is a control node");
+      return it->second;
+    };
+    std::map<Index, Index> plusOf;  // unsplit number -> Ω⁺ copy
+    for (Index i = 0; i < g.numNodes(); ++i) plusOf[g.node[i]] = g.plus[i];
+    for (const auto& t : g.triangles) {
+      std::array<Index, 6> tri{};
+      std::array<Index, 3> plus{};
+      for (int j = 0; j < 3; ++j) {
+        const auto it = plusOf.find(t[j]);
+        FRICTION_ASSERT(it != plusOf.end(), "a fault triangle's vertices are fracture nodes");
+        plus[j] = it->second;
+        tri[j] = row(plus[j]);
+      }
+      if (out.nodesPerTriangle == 6)
+        for (int j = 0; j < 3; ++j)
+          tri[3 + j] = row(space.midpointNode(plus[j], plus[(j + 1) % 3]));
+      out.triangles.push_back(tri);
+    }
+    vtkFractures.push_back(std::move(out));
   }
   DictionaryWriter st("dictionary", "solverStatus");
   st.entryWord("status", toString(r.report.status));
@@ -893,12 +979,13 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   // it restarts from the time before, which drops this time's VTK files and .pvd entry.
   if (time_->writeVTK()) {
     if (!vtk_) vtk_ = std::make_unique<VtkSeries>(caseDir_);
-    std::function<Eigen::Matrix2d(const Vector2&)> sigma0;
+    std::function<Eigen::Matrix3d(const Point&)> sigma0;
     bool hasInitialStress = false;
     for (const auto& e : effects_) hasInitialStress |= e->type() == "initialStress";
     if (hasInitialStress)
-      sigma0 = [this](const Vector2& x) {
-        Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
+      sigma0 = [this](const Point& x) {
+        // 2D: the in-plane block, σ⁰_zz = 0 (Effect.hpp).
+        Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
         for (const auto& e : effects_) s += e->initialStress(x);
         return s;
       };

@@ -37,14 +37,15 @@
 
 namespace friction {
 
-/// A connected part of the split mesh (triangles joined through shared split-mesh nodes, so
-/// the two sides of a fracture are different parts) that touches no Dirichlet patch.
+/// A connected part of the split mesh (cells joined through shared split-mesh nodes, so the
+/// two sides of a fracture are different parts) that touches no Dirichlet patch.
 struct FloatingPart {
-  int triangles = 0;
-  Vector2 point = Vector2::Zero();     ///< centroid of the part's triangle nearest its centre
+  int dim = 2;
+  int cells = 0;                       ///< triangles (2D) or tetrahedra (3D)
+  Point point = Point::Zero();         ///< centroid of the part's cell nearest its centre
   bool heldThroughFracture = false;    ///< joined to a held part in the unsplit mesh
   std::vector<std::string> fractures;  ///< fractures on its boundary
-  /// "around (x, y), N triangles"
+  /// "around (x, y), N triangles" (2D) or "around (x, y, z), N tetrahedra" (3D)
   std::string describe() const;
 };
 
@@ -111,6 +112,8 @@ class FrictionCase {
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.
   void judgeStep(StepResult& r) const;
   void findFloatingParts();
+  /// Mean length of the fracture edges [m] (0 without fractures): the h of γ's default.
+  double meanFractureEdge() const;
   Eigen::VectorXd loadVector(double t) const;
   /// Effective fluid pressure per control node at t [Pa] (zero without fracturePressure).
   Eigen::VectorXd fracturePressure(double t) const;

@@ -25,78 +25,144 @@ std::string vec(const Vector2& v) {
   return s.str();
 }
 
+std::string vec(const Point& v) {
+  std::ostringstream s;
+  s << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
+  return s.str();
+}
+
+/// Key `key`: a list of exactly n numbers, `form` naming them in the message otherwise.
+std::vector<double> numbers(const Dictionary& d, const std::string& key, std::size_t n,
+                            const std::string& form) {
+  std::vector<double> v = d.getScalarList(key);
+  if (v.size() != n)
+    d.fail(key, "key '" + key + "': expected " + form + ", got " + std::to_string(v.size()) +
+                    (v.size() == 1 ? " number" : " numbers"));
+  return v;
+}
+
+/// The symmetric tensor of (xx yy zz xy yz xz).
+Eigen::Matrix3d symmetricTensor(const std::vector<double>& s) {
+  Eigen::Matrix3d m;
+  m << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
+  return m;
+}
+
 class BodyForce : public Effect {
  public:
-  BodyForce(const std::string& name, const Dictionary& d) {
+  BodyForce(const std::string& name, const Dictionary& d, int dim) : dim_(dim) {
     name_ = name;
     density_ = d.getScalar("density", Bounds::positive());
-    g_ = d.getVector("g");
+    if (dim == 2) {
+      g_ = d.getVector("g");
+    } else {
+      const std::vector<double> g = numbers(d, "g", 3, "(gx gy gz) [m/s2] on a 3D mesh");
+      g3_ = Point(g[0], g[1], g[2]);
+    }
   }
   std::string type() const override { return "bodyForce"; }
   std::string describe() const override {
     std::ostringstream s;
-    s << "density " << density_ << " kg/m3, g " << vec(g_) << " m/s2";
+    s << "density " << density_ << " kg/m3, g " << (dim_ == 2 ? vec(g_) : vec(g3_)) << " m/s2";
     return s.str();
   }
   void addLoad(const ElasticityAssembler& a, double, Eigen::VectorXd& F) const override {
-    F += a.bodyForce(Vector2(density_ * g_));
+    if (dim_ == 2)
+      F += a.bodyForce(Vector2(density_ * g_));
+    else
+      F += a.bodyForce(Point(density_ * g3_));
   }
 
  private:
+  int dim_ = 2;
   double density_ = 0;
   Vector2 g_ = Vector2::Zero();
+  Point g3_ = Point::Zero();
 };
 
 class InitialStress : public Effect {
  public:
-  InitialStress(const std::string& name, const Dictionary& d) {
+  InitialStress(const std::string& name, const Dictionary& d, int dim) : vertical_(dim - 1) {
     name_ = name;
-    const std::vector<double> s = d.getScalarList("stress");
-    if (s.size() != 3) d.fail("stress", "key 'stress': expected (sxx syy sxy) [Pa]");
-    s0_ << s[0], s[2], s[2], s[1];
-    if (d.found("gradient")) {
-      const std::vector<double> g = d.getScalarList("gradient");
-      if (g.size() != 3)
-        d.fail("gradient", "key 'gradient': expected (dsxx/dy dsyy/dy dsxy/dy) [Pa/m]");
-      gradY_ << g[0], g[2], g[2], g[1];
+    if (dim == 2) {
+      const std::vector<double> s = d.getScalarList("stress");
+      if (s.size() != 3) d.fail("stress", "key 'stress': expected (sxx syy sxy) [Pa]");
+      s0_.topLeftCorner<2, 2>() << s[0], s[2], s[2], s[1];
+      if (d.found("gradient")) {
+        const std::vector<double> g = d.getScalarList("gradient");
+        if (g.size() != 3)
+          d.fail("gradient", "key 'gradient': expected (dsxx/dy dsyy/dy dsxy/dy) [Pa/m]");
+        grad_.topLeftCorner<2, 2>() << g[0], g[2], g[2], g[1];
+      }
+    } else {
+      s0_ = symmetricTensor(numbers(d, "stress", 6, "(sxx syy szz sxy syz sxz) [Pa] on a 3D mesh"));
+      if (d.found("gradient"))
+        grad_ = symmetricTensor(
+            numbers(d, "gradient", 6,
+                    "(dsxx/dz dsyy/dz dszz/dz dsxy/dz dsyz/dz dsxz/dz) [Pa/m] on a 3D mesh"));
     }
   }
   std::string type() const override { return "initialStress"; }
   std::string describe() const override {
     std::ostringstream s;
-    s << "sigma0 (xx yy xy) = (" << s0_(0, 0) << " " << s0_(1, 1) << " " << s0_(0, 1) << ") Pa";
-    if (!gradY_.isZero())
-      s << " + y (" << gradY_(0, 0) << " " << gradY_(1, 1) << " " << gradY_(0, 1) << ") Pa/m";
+    if (vertical_ == 1) {
+      s << "sigma0 (xx yy xy) = (" << s0_(0, 0) << " " << s0_(1, 1) << " " << s0_(0, 1) << ") Pa";
+      if (!grad_.isZero())
+        s << " + y (" << grad_(0, 0) << " " << grad_(1, 1) << " " << grad_(0, 1) << ") Pa/m";
+      return s.str();
+    }
+    const auto six = [](const Eigen::Matrix3d& m) {
+      std::ostringstream o;
+      o << "(" << m(0, 0) << " " << m(1, 1) << " " << m(2, 2) << " " << m(0, 1) << " " << m(1, 2)
+        << " " << m(0, 2) << ")";
+      return o.str();
+    };
+    s << "sigma0 (xx yy zz xy yz xz) = " << six(s0_) << " Pa";
+    if (!grad_.isZero()) s << " + z " << six(grad_) << " Pa/m";
     return s.str();
   }
-  Eigen::Matrix2d initialStress(const Vector2& x) const override { return s0_ + x.y() * gradY_; }
+  Eigen::Matrix3d initialStress(const Point& x) const override {
+    return s0_ + x[vertical_] * grad_;
+  }
   void addLoad(const ElasticityAssembler& a, double, Eigen::VectorXd& F) const override {
-    // div σ⁰ = ∂σ⁰/∂y · e_y (σ⁰ varies with y only); zero for a uniform in-situ stress, so
-    // the common case assembles nothing.
-    if (gradY_.isZero()) return;
-    F += a.bodyForce(Vector2(gradY_.col(1)));
+    // div σ⁰ = ∂σ⁰/∂v · e_v, v the vertical (σ⁰ varies with it only); zero for a uniform
+    // in-situ stress, so the common case assembles nothing.
+    if (grad_.isZero()) return;
+    if (vertical_ == 1)
+      F += a.bodyForce(Vector2(grad_(0, 1), grad_(1, 1)));
+    else
+      F += a.bodyForce(Point(grad_.col(2)));
   }
   void addFractureTraction(const std::vector<ControlNode>& nodes, double, Eigen::VectorXd& sigmaN,
                            Eigen::VectorXd& tau) const override {
     // τ has k components per node, on the node's tangent basis (SignConventions.hpp).
     const Eigen::Index n = sigmaN.size(), k = n > 0 ? tau.size() / n : 1;
     for (Eigen::Index i = 0; i < n; ++i) {
-      const Vector2 normal = nodes[i].normal.head<2>();
-      const Vector2 t = initialStress(nodes[i].x) * normal;
-      sigmaN[i] += t.dot(normal);
-      for (Eigen::Index c = 0; c < k; ++c)
-        tau[k * i + c] += t.dot(Vector2(nodes[i].tangent[c].head<2>()));
+      if (vertical_ == 1) {
+        // 2D in 2D arithmetic (the numbers of the 2D code, bit for bit).
+        const Vector2 normal = nodes[i].normal.head<2>();
+        const Eigen::Matrix2d s = initialStress(nodes[i].position).topLeftCorner<2, 2>();
+        const Vector2 t = s * normal;
+        sigmaN[i] += t.dot(normal);
+        for (Eigen::Index c = 0; c < k; ++c)
+          tau[k * i + c] += t.dot(Vector2(nodes[i].tangent[c].head<2>()));
+        continue;
+      }
+      const Eigen::Vector3d t = initialStress(nodes[i].position) * nodes[i].normal;
+      sigmaN[i] += t.dot(nodes[i].normal);
+      for (Eigen::Index c = 0; c < k && c < 2; ++c) tau[k * i + c] += t.dot(nodes[i].tangent[c]);
     }
   }
 
  private:
-  Eigen::Matrix2d s0_ = Eigen::Matrix2d::Zero(), gradY_ = Eigen::Matrix2d::Zero();
+  int vertical_ = 1;  ///< the vertical axis: y (1) in 2D, z (2) in 3D
+  Eigen::Matrix3d s0_ = Eigen::Matrix3d::Zero(), grad_ = Eigen::Matrix3d::Zero();
 };
 
 class FracturePressure : public Effect {
  public:
   FracturePressure(const std::string& name, const Dictionary& d,
-                   const std::vector<std::string>& fractures, const std::string& caseDir) {
+                   const std::vector<std::string>& fractures, const std::string& caseDir, int dim) {
     name_ = name;
     fracture_ = d.getWord("fracture");
     if (std::find(fractures.begin(), fractures.end(), fracture_) == fractures.end())
@@ -104,6 +170,11 @@ class FracturePressure : public Effect {
                              suggestionText(fracture_, fractures) +
                              " (fractures: " + joinWords(fractures) + ")");
     if (d.alternative({{"pressure"}, {"values"}}) == 1) {
+      if (dim == 3)
+        d.fail("values",
+               "key 'values': a values file gives p along the arclength s of a fracture curve, "
+               "which a fault surface of a 3D mesh does not have; give 'pressure' (a constant "
+               "or a table) instead");
       file_ =
           (std::filesystem::path(caseDir) / d.getFileName("values")).lexically_normal().string();
       std::ifstream in(file_, std::ios::binary);
@@ -191,25 +262,23 @@ class FracturePressure : public Effect {
 struct EffectEntry {
   const char* name;
   std::unique_ptr<Effect> (*make)(const std::string&, const Dictionary&,
-                                  const std::vector<std::string>&, const std::string&);
+                                  const std::vector<std::string>&, const std::string&, int);
 };
 
 // The one table of effects: adding one is one line here.
 const EffectEntry effectTable[] = {
     {"bodyForce",
      [](const std::string& n, const Dictionary& d, const std::vector<std::string>&,
-        const std::string&) -> std::unique_ptr<Effect> {
-       return std::make_unique<BodyForce>(n, d);
-     }},
+        const std::string&,
+        int dim) -> std::unique_ptr<Effect> { return std::make_unique<BodyForce>(n, d, dim); }},
     {"initialStress",
      [](const std::string& n, const Dictionary& d, const std::vector<std::string>&,
-        const std::string&) -> std::unique_ptr<Effect> {
-       return std::make_unique<InitialStress>(n, d);
-     }},
+        const std::string&,
+        int dim) -> std::unique_ptr<Effect> { return std::make_unique<InitialStress>(n, d, dim); }},
     {"fracturePressure",
      [](const std::string& n, const Dictionary& d, const std::vector<std::string>& f,
-        const std::string& c) -> std::unique_ptr<Effect> {
-       return std::make_unique<FracturePressure>(n, d, f, c);
+        const std::string& c, int dim) -> std::unique_ptr<Effect> {
+       return std::make_unique<FracturePressure>(n, d, f, c, dim);
      }},
 };
 
@@ -223,10 +292,10 @@ std::vector<std::string> Effect::names() {
 
 std::unique_ptr<Effect> Effect::New(const std::string& name, const Dictionary& dict,
                                     const std::vector<std::string>& fractureNames,
-                                    const std::string& caseDir) {
+                                    const std::string& caseDir, int dim) {
   const std::string type = dict.getChoice("type", names());
   for (const auto& e : effectTable)
-    if (type == e.name) return e.make(name, dict, fractureNames, caseDir);
+    if (type == e.name) return e.make(name, dict, fractureNames, caseDir, dim);
   return nullptr;  // unreachable: getChoice validated the name
 }
 

@@ -10,12 +10,18 @@
 //                                     // or values "constant/p.dat" (s p per line, interpolated)
 // Any entry may say `active no;` to be switched off without deleting it.
 //
+// The dimension comes from the mesh. On a 3D mesh: g (gx gy gz); stress
+// (sxx syy szz sxy syz sxz) and gradient (six values) = ∂σ⁰/∂z (the vertical is z in 3D, y
+// in 2D); fracturePressure takes a constant or a table, not a values file (its s is an
+// arclength along a fracture curve, which a fault surface does not have).
+//
 // Physics (docs/method.md §1, extended):
 //  * bodyForce adds ∫ f·φ to the load.
-//  * initialStress is an in-situ stress σ⁰(y) = σ⁰ + y ∂σ⁰/∂y in equilibrium with the
-//    surroundings: the boundary conditions act on the perturbation (a "free" side keeps its
-//    in-situ traction), its divergence ∂σ⁰/∂y·e_y-part loads the body, and σ⁰ is added to
-//    the fracture tractions (σ_n += n·σ⁰n, τ += t·σ⁰n) and to every stress written.
+//  * initialStress is an in-situ stress σ⁰(y) = σ⁰ + y ∂σ⁰/∂y (3D: σ⁰ + z ∂σ⁰/∂z) in
+//    equilibrium with the surroundings: the boundary conditions act on the perturbation (a
+//    "free" side keeps its in-situ traction), its divergence div σ⁰ = ∂σ⁰/∂y·e_y (3D:
+//    ∂σ⁰/∂z·e_z) loads the body, and σ⁰ is added to the fracture tractions (σ_n += n·σ⁰n,
+//    τ_c += t_c·σ⁰n on each tangent t_c) and to every stress written.
 //  * fracturePressure p on a fracture: the friction bound uses the effective normal stress,
 //    ρ = c − μ(σ_n + p) (the paper's poroelastic remark).
 #pragma once
@@ -41,17 +47,18 @@ class Effect {
 
   static std::vector<std::string> names();
   /// Reads 'type' and that type's keys. fractureNames: to check 'fracture' entries; caseDir:
-  /// files named in the dictionary are relative to it.
+  /// files named in the dictionary are relative to it; dim: the mesh's dimension (2 or 3),
+  /// which sets the number of components the keys take.
   static std::unique_ptr<Effect> New(const std::string& name, const Dictionary& dict,
                                      const std::vector<std::string>& fractureNames,
-                                     const std::string& caseDir);
+                                     const std::string& caseDir, int dim);
 
   const std::string& name() const { return name_; }
   virtual std::string type() const = 0;
   /// One line for the log: what the effect does with which values.
   virtual std::string describe() const = 0;
 
-  /// Add this effect's nodal forces at time t (split space) [N per m].
+  /// Add this effect's nodal forces at time t (split space) [N per m in 2D, N in 3D].
   virtual void addLoad(const ElasticityAssembler& /*split*/, double /*t*/,
                        Eigen::VectorXd& /*F*/) const {}
   /// Add to the fracture tractions at the control nodes at time t [Pa]: σ_n one per node,
@@ -62,9 +69,10 @@ class Effect {
   virtual void addFracturePressure(const std::vector<ControlNode>& /*nodes*/,
                                    const std::vector<std::string>& /*fractureNames*/, double /*t*/,
                                    Eigen::VectorXd& /*p*/) const {}
-  /// In-situ stress at x (zero unless initialStress) [Pa]: added to written stresses.
-  virtual Eigen::Matrix2d initialStress(const Vector2& /*x*/) const {
-    return Eigen::Matrix2d::Zero();
+  /// In-situ stress at x (zero unless initialStress) [Pa], symmetric: added to written
+  /// stresses. In 2D the in-plane σ⁰ in the upper-left 2 × 2 block, the rest 0 (σ⁰_zz = 0).
+  virtual Eigen::Matrix3d initialStress(const Point& /*x*/) const {
+    return Eigen::Matrix3d::Zero();
   }
 
  protected:

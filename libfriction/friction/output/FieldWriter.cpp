@@ -9,14 +9,14 @@
 
 namespace friction {
 
-void writeDisplacementField(const std::string& path, const std::vector<Vector2>& u, int precision) {
+void writeDisplacementField(const std::string& path, const std::vector<Point>& u, int precision) {
   DictionaryWriter w("pointVectorField", "D", "displacement [m] at the split-mesh points");
   w.setPrecision(precision);
   w.entryRaw("dimensions", "[0 1 0 0 0 0 0]");
   std::ostringstream s;
   s.precision(precision);
   s << "nonuniform List<vector>\n" << u.size() << "\n(\n";
-  for (const Vector2& v : u) s << "(" << v.x() << " " << v.y() << " 0)\n";
+  for (const Point& v : u) s << "(" << v.x() << " " << v.y() << " " << v.z() << ")\n";
   s << ")";
   w.entryRaw("internalField", s.str());
   w.beginDict("boundaryField");
@@ -24,21 +24,73 @@ void writeDisplacementField(const std::string& path, const std::vector<Vector2>&
   w.writeAtomic(path);
 }
 
+namespace {
+
+// Every node has the first node's frame, to 1e-12 per component (a flat fault).
+bool oneFrame(const std::vector<FractureRow>& rows) {
+  if (rows.empty()) return false;
+  const FractureRow& a = rows.front();
+  for (const FractureRow& r : rows)
+    if ((r.normal - a.normal).cwiseAbs().maxCoeff() > 1e-12 ||
+        (r.tangent[0] - a.tangent[0]).cwiseAbs().maxCoeff() > 1e-12 ||
+        (r.tangent[1] - a.tangent[1]).cwiseAbs().maxCoeff() > 1e-12)
+      return false;
+  return true;
+}
+
+}  // namespace
+
 void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,
-                        const std::string& statusLine, int precision) {
+                        const std::string& statusLine, int precision, int dim) {
   std::ostringstream out;
   out.precision(precision);
-  out << "# s x y slip slipIncrement sigmaN tau ST residual state\n# " << statusLine << "\n";
   // One spelling of NaN ("nan", never "-nan"), which numpy, pandas and VTK read.
   const auto value = [&out](double v) -> std::ostream& {
     return std::isnan(v) ? out << "nan" : out << v;
   };
+  if (dim != 3) {
+    out << "# s x y slip slipIncrement sigmaN tau ST residual state\n# " << statusLine << "\n";
+    for (const FractureRow& r : rows) {
+      out << r.s << " " << r.position.x() << " " << r.position.y() << " " << r.slip[0] << " "
+          << r.slipIncrement[0] << " ";
+      value(r.sigmaN) << " ";
+      value(r.tau[0]) << " ";
+      value(r.ST) << " ";
+      value(r.residual[0]) << " " << r.state << "\n";
+    }
+    writeTextAtomic(path, out.str());
+    return;
+  }
+  out << "# x y z nx ny nz slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1 "
+         "slipIncrement2 sigmaN tau1 tau2 tauMagnitude ST residual state\n# "
+      << statusLine << "\n";
+  const auto vector = [&out](const Eigen::Vector3d& v) {
+    out << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
+  };
+  if (oneFrame(rows)) {
+    out << "# frame n ";
+    vector(rows.front().normal);
+    out << " t1 ";
+    vector(rows.front().tangent[0]);
+    out << " t2 ";
+    vector(rows.front().tangent[1]);
+    out << "\n";
+  } else {
+    out << "# frame per node: n in columns nx ny nz, t1 = tangentBasis(n), t2 = n x t1 "
+           "(docs/method.md)\n";
+  }
   for (const FractureRow& r : rows) {
-    out << r.s << " " << r.x << " " << r.y << " " << r.slip << " " << r.slipIncrement << " ";
+    const Eigen::Vector3d slip = r.slip[0] * r.tangent[0] + r.slip[1] * r.tangent[1];
+    out << r.position.x() << " " << r.position.y() << " " << r.position.z() << " " << r.normal.x()
+        << " " << r.normal.y() << " " << r.normal.z() << " " << r.slip[0] << " " << r.slip[1] << " "
+        << slip.x() << " " << slip.y() << " " << slip.z() << " " << std::hypot(r.slip[0], r.slip[1])
+        << " " << r.slipIncrement[0] << " " << r.slipIncrement[1] << " ";
     value(r.sigmaN) << " ";
-    value(r.tau) << " ";
+    value(r.tau[0]) << " ";
+    value(r.tau[1]) << " ";
+    value(std::hypot(r.tau[0], r.tau[1])) << " ";
     value(r.ST) << " ";
-    value(r.residual) << " " << r.state << "\n";
+    value(std::hypot(r.residual[0], r.residual[1])) << " " << r.state << "\n";
   }
   writeTextAtomic(path, out.str());
 }

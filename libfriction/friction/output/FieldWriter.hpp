@@ -1,14 +1,21 @@
 // Field and table files of a time folder (issue: frictionSolver output):
-//  * writeDisplacementField: <time>/D, an OpenFOAM pointVectorField (3 components, z = 0) on
-//    the points of the split mesh, so the jump across a fracture is visible; foamDictionary
-//    reads it.
-//  * writeFractureTable: <time>/fractures/<name>.dat, whitespace-separated, first line
-//    "# s x y slip slipIncrement sigmaN tau ST residual state", one row per control node in
-//    arclength order; a second comment line gives the step's solver status. state is stick,
-//    slip, open or tip; a tip has no traction: sigmaN, tau, ST and residual are "nan" there
-//    (numpy.loadtxt, pandas and VTK read it as NaN), every other value is finite.
+//  * writeDisplacementField: <time>/D, an OpenFOAM pointVectorField (3 components, z = 0 in
+//    2D) on the points of the split mesh, so the jump across a fracture is visible;
+//    foamDictionary reads it.
+//  * writeFractureTable: <time>/fractures/<name>.dat, whitespace-separated, one row per control
+//    node; line 2 gives the step's solver status. state is stick, slip, open or tip; a tip has
+//    no traction: its traction columns are "nan" (numpy.loadtxt, pandas and VTK read it as
+//    NaN), every other value is finite.
+//    2D: line 1 "# s x y slip slipIncrement sigmaN tau ST residual state", rows in arclength
+//    order.
+//    3D: line 1 "# x y z nx ny nz slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1
+//    slipIncrement2 sigmaN tau1 tau2 tauMagnitude ST residual state" (components on the node's
+//    t₁, t₂ and, for the slip, in x y z; residual = |D|); line 3 the frame: "# frame n (..)
+//    t1 (..) t2 (..)" when every node has the same one (a flat fault), else "# frame per
+//    node: ...". Rows in the control-node order of FractureSystem.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -18,16 +25,28 @@
 
 namespace friction {
 
-/// points: split-mesh points; u: 2 values per point [m].
-void writeDisplacementField(const std::string& path, const std::vector<Vector2>& u, int precision);
+/// u: the displacement [m] at each split-mesh point (z = 0 in 2D, written as 0).
+void writeDisplacementField(const std::string& path, const std::vector<Point>& u, int precision);
 
+/// One control node of a fracture table. Tangential quantities have k = d − 1 components on
+/// the node's tangent basis (2D: [0] only, on t_Γ). Signs: fracture/SignConventions.hpp.
 struct FractureRow {
-  /// residual: the friction law's residual D of the complementarity function [Pa].
-  double s, x, y, slip, slipIncrement, sigmaN, tau, ST, residual;
+  double s = 0;                                      ///< 2D arclength [m]; 0 in 3D
+  Point position = Point::Zero();                    ///< [m], z = 0 in 2D
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< n_Γ, from Ω⁺ to Ω⁻
+  std::array<Eigen::Vector3d, 2> tangent{Eigen::Vector3d::Zero(),
+                                         Eigen::Vector3d::Zero()};  ///< t₁, t₂ (2D: t₁ = t_Γ)
+  /// Accumulated slip [m], the step's slip increment β [m], the tangential traction τ [Pa] and
+  /// the friction law's complementarity residual D [Pa], on t₁ … t_k.
+  std::array<double, 2> slip{}, slipIncrement{}, tau{}, residual{};
+  double sigmaN = 0;  ///< [Pa]
+  double ST = 0;      ///< slip tendency |τ| / −σ'_n [-]
   std::string state;
 };
 
+/// dim: 2 or 3, the layout of the file comment (2D: components [0]; 3D: both, the magnitudes
+/// and slipX.. = slip[0] t₁ + slip[1] t₂ derived here). NaN values are written "nan".
 void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,
-                        const std::string& statusLine, int precision);
+                        const std::string& statusLine, int precision, int dim);
 
 }  // namespace friction

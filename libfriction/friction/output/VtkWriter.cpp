@@ -90,15 +90,12 @@ int vtkStateCode(const std::string& state) {
 
 void writeVtu(const std::string& path, const LagrangeSpace& space,
               const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
-              const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress) {
+              const std::function<Eigen::Matrix3d(const Point&)>& initialStress) {
   if (u.size() != space.numDofs())
     throw std::invalid_argument("writeVtu: u has " + std::to_string(u.size()) +
                                 " values, the space " + std::to_string(space.numDofs()) + " dofs");
   const Mesh& mesh = space.mesh();
   const bool is3d = space.dim() == 3;
-  if (is3d && initialStress)
-    throw std::invalid_argument(
-        "writeVtu: an initial stress is a 2D field (Matrix2d); it is not defined on a 3D mesh");
   const Index numNodes = space.numNodes();
   const Index numCells = space.numCells();
   const int perCell = space.nodesPerCell();
@@ -138,7 +135,8 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
     if (is3d) {
       const Point centroid =
           (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]] + mesh.points[t[3]]) / 4.0;
-      const Eigen::Matrix3d sigma = assembler.stress(u, c, centroid);
+      Eigen::Matrix3d sigma = assembler.stress(u, c, centroid);
+      if (initialStress) sigma += initialStress(centroid);
       sxx = sigma(0, 0), syy = sigma(1, 1), szz = sigma(2, 2);
       sxy = sigma(0, 1), syz = sigma(1, 2), sxz = sigma(0, 2);
       s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
@@ -150,7 +148,8 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
                                 mesh.points[t[2]].head<2>()) /
                                3.0;
       Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
-      if (initialStress) sigma += initialStress(centroid);
+      if (initialStress)
+        sigma += initialStress(Point(centroid.x(), centroid.y(), 0.0)).topLeftCorner<2, 2>();
       szz = material.outOfPlaneStress(assembler.strain(u, c, centroid));
       sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
       s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
@@ -211,8 +210,51 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
   writeTextAtomic(path, s.str());
 }
 
-void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows,
-                      int precision) {
+namespace {
+
+// A Float64 point-data array of one value per row, NaN written as "nan": a tip has no
+// traction, and VTK's ASCII reader (9.1) and ParaView read "nan" as NaN.
+template <class Value>
+void rowArray(std::ostream& s, const char* name, const std::vector<FractureRow>& rows,
+              const Value& value) {
+  openArray(s, "Float64", name, 1);
+  for (const FractureRow& r : rows) {
+    const double v = value(r);
+    if (std::isnan(v))
+      s << "          nan\n";
+    else
+      s << "          " << finite(v) << "\n";
+  }
+  closeArray(s);
+}
+
+// A Float64 point-data array of one 3-vector per row, components as rowArray's values.
+template <class Value>
+void rowVectorArray(std::ostream& s, const char* name, const std::vector<FractureRow>& rows,
+                    const Value& value) {
+  openArray(s, "Float64", name, 3);
+  for (const FractureRow& r : rows) {
+    const Eigen::Vector3d v = value(r);
+    s << "         ";
+    for (int i = 0; i < 3; ++i) {
+      if (std::isnan(v[i]))
+        s << " nan";
+      else
+        s << " " << finite(v[i]);
+    }
+    s << "\n";
+  }
+  closeArray(s);
+}
+
+void stateArray(std::ostream& s, const std::vector<FractureRow>& rows) {
+  openArray(s, "Int32", "state", 1);
+  for (const FractureRow& r : rows) s << "          " << vtkStateCode(r.state) << "\n";
+  closeArray(s);
+}
+
+void writeFracturePolyline(const std::string& path, const std::vector<FractureRow>& rows,
+                           int precision) {
   const std::size_t n = rows.size();
   std::ostringstream s;
   s.precision(precision);
@@ -224,33 +266,20 @@ void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& r
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\""
     << (n > 0 ? 1 : 0) << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
     << "      <PointData Scalars=\"ST\">\n";
-  const auto array = [&](const char* name, double FractureRow::*field) {
-    openArray(s, "Float64", name, 1);
-    // A tip has no traction: NaN, which VTK's ASCII reader (9.1) and ParaView read as NaN.
-    for (const FractureRow& r : rows) {
-      const double v = r.*field;
-      if (std::isnan(v))
-        s << "          nan\n";
-      else
-        s << "          " << finite(v) << "\n";
-    }
-    closeArray(s);
-  };
-  array("s", &FractureRow::s);
-  array("slip", &FractureRow::slip);
-  array("slipIncrement", &FractureRow::slipIncrement);
-  array("sigmaN", &FractureRow::sigmaN);
-  array("tau", &FractureRow::tau);
-  array("ST", &FractureRow::ST);
-  array("residual", &FractureRow::residual);
-  openArray(s, "Int32", "state", 1);
-  for (const FractureRow& r : rows) s << "          " << vtkStateCode(r.state) << "\n";
-  closeArray(s);
+  rowArray(s, "s", rows, [](const FractureRow& r) { return r.s; });
+  rowArray(s, "slip", rows, [](const FractureRow& r) { return r.slip[0]; });
+  rowArray(s, "slipIncrement", rows, [](const FractureRow& r) { return r.slipIncrement[0]; });
+  rowArray(s, "sigmaN", rows, [](const FractureRow& r) { return r.sigmaN; });
+  rowArray(s, "tau", rows, [](const FractureRow& r) { return r.tau[0]; });
+  rowArray(s, "ST", rows, [](const FractureRow& r) { return r.ST; });
+  rowArray(s, "residual", rows, [](const FractureRow& r) { return r.residual[0]; });
+  stateArray(s, rows);
   s << "      </PointData>\n";
 
   s << "      <Points>\n";
   openArray(s, "Float64", "", 3);
-  for (const FractureRow& r : rows) s << "          " << r.x << " " << r.y << " 0\n";
+  for (const FractureRow& r : rows)
+    s << "          " << r.position.x() << " " << r.position.y() << " 0\n";
   closeArray(s);
   s << "      </Points>\n";
 
@@ -266,6 +295,91 @@ void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& r
     << "  </PolyData>\n"
     << "</VTKFile>\n";
   writeTextAtomic(path, s.str());
+}
+
+// The fault surface of a 3D fracture: see writeFractureVtp.
+void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& rows, int precision,
+                       const std::vector<std::array<Index, 6>>& triangles, int nodesPerTriangle) {
+  if (nodesPerTriangle != 3 && nodesPerTriangle != 6)
+    throw std::invalid_argument("writeFractureVtp: " + std::to_string(nodesPerTriangle) +
+                                " nodes per triangle (expected 3 or 6)");
+  const Index n = static_cast<Index>(rows.size());
+  std::vector<std::array<Index, 3>> cells;
+  for (const auto& t : triangles) {
+    for (int i = 0; i < nodesPerTriangle; ++i)
+      if (t[i] < 0 || t[i] >= n)
+        throw std::invalid_argument("writeFractureVtp: triangle node " + std::to_string(t[i]) +
+                                    " is not a row (" + std::to_string(n) + " rows)");
+    if (nodesPerTriangle == 3) {
+      cells.push_back({t[0], t[1], t[2]});
+    } else {
+      // The same orientation as the triangle: each corner with its two edge midpoints, then
+      // the middle one.
+      cells.push_back({t[0], t[3], t[5]});
+      cells.push_back({t[3], t[1], t[4]});
+      cells.push_back({t[5], t[4], t[2]});
+      cells.push_back({t[3], t[4], t[5]});
+    }
+  }
+  std::ostringstream s;
+  s.precision(precision);
+  s << kHeader
+    << "<!-- fault surface (P2: four triangles per fault triangle, at its edge midpoints); point "
+       "array state: 0 stick, 1 slip, 2 open, 3 tip (no traction: nan) -->\n"
+    << "<VTKFile type=\"PolyData\"" << kFileAttributes << ">\n"
+    << "  <PolyData>\n"
+    << "    <Piece NumberOfPoints=\"" << n
+    << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\""
+    << cells.size() << "\">\n"
+    << "      <PointData Scalars=\"ST\" Vectors=\"slip\" Normals=\"normal\">\n";
+  const auto inXyz = [](const std::array<double, 2>& c, const FractureRow& r) {
+    return (c[0] * r.tangent[0] + c[1] * r.tangent[1]).eval();
+  };
+  rowVectorArray(s, "normal", rows, [](const FractureRow& r) { return r.normal; });
+  rowVectorArray(s, "slip", rows, [&](const FractureRow& r) { return inXyz(r.slip, r); });
+  rowArray(s, "slipMagnitude", rows,
+           [](const FractureRow& r) { return std::hypot(r.slip[0], r.slip[1]); });
+  rowVectorArray(s, "slipIncrement", rows,
+                 [&](const FractureRow& r) { return inXyz(r.slipIncrement, r); });
+  rowArray(s, "sigmaN", rows, [](const FractureRow& r) { return r.sigmaN; });
+  rowVectorArray(s, "traction", rows, [&](const FractureRow& r) { return inXyz(r.tau, r); });
+  rowArray(s, "tauMagnitude", rows,
+           [](const FractureRow& r) { return std::hypot(r.tau[0], r.tau[1]); });
+  rowArray(s, "ST", rows, [](const FractureRow& r) { return r.ST; });
+  rowArray(s, "residual", rows,
+           [](const FractureRow& r) { return std::hypot(r.residual[0], r.residual[1]); });
+  stateArray(s, rows);
+  s << "      </PointData>\n";
+
+  s << "      <Points>\n";
+  openArray(s, "Float64", "", 3);
+  for (const FractureRow& r : rows)
+    s << "          " << r.position.x() << " " << r.position.y() << " " << r.position.z() << "\n";
+  closeArray(s);
+  s << "      </Points>\n";
+
+  s << "      <Polys>\n";
+  openArray(s, "Int64", "connectivity", 1);
+  for (const auto& c : cells) s << "          " << c[0] << " " << c[1] << " " << c[2] << "\n";
+  closeArray(s);
+  openArray(s, "Int64", "offsets", 1);
+  for (std::size_t c = 0; c < cells.size(); ++c) s << "          " << 3 * (c + 1) << "\n";
+  closeArray(s);
+  s << "      </Polys>\n"
+    << "    </Piece>\n"
+    << "  </PolyData>\n"
+    << "</VTKFile>\n";
+  writeTextAtomic(path, s.str());
+}
+
+}  // namespace
+
+void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision,
+                      const std::vector<std::array<Index, 6>>& triangles, int nodesPerTriangle) {
+  if (triangles.empty())
+    writeFracturePolyline(path, rows, precision);
+  else
+    writeFaultSurface(path, rows, precision, triangles, nodesPerTriangle);
 }
 
 void writePvd(const std::string& path, const std::vector<PvdTime>& times, int precision) {
@@ -403,7 +517,7 @@ int VtkSeries::resume(const std::function<bool(const std::string&)>& keep,
 void VtkSeries::write(double time, const std::string& timeName, const LagrangeSpace& space,
                       const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
                       const std::vector<Fracture>& fractures, int precision,
-                      const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress) {
+                      const std::function<Eigen::Matrix3d(const Point&)>& initialStress) {
   std::error_code ec;
   fs::create_directories(fs::path(vtkDir_) / "fractures", ec);
   if (ec)
@@ -419,7 +533,8 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
     entry.files.push_back(fs::path(vtuPath(timeName)).filename().string());
     entry.names.push_back("mesh");
     for (const Fracture& f : fractures) {
-      writeFractureVtp(vtpPath(f.name, timeName), f.rows, precision);
+      writeFractureVtp(vtpPath(f.name, timeName), f.rows, precision, f.triangles,
+                       f.nodesPerTriangle);
       written.push_back(vtpPath(f.name, timeName));
       entry.files.push_back("fractures/" + fs::path(vtpPath(f.name, timeName)).filename().string());
       entry.names.push_back(f.name);

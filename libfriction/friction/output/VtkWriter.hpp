@@ -3,8 +3,9 @@
 //  * writeVtu: the displacement and the stress on the SPLIT mesh (.vtu, an unstructured
 //    grid). The fracture nodes are duplicated (coincident points), so the jump of the
 //    displacement across a fracture shows when the mesh is warped by "displacement".
-//  * writeFractureVtp: one fracture's table (FieldWriter.hpp, FractureRow) as a polyline
-//    (.vtp, poly data) with the fracture quantities as point data.
+//  * writeFractureVtp: one fracture's table (FieldWriter.hpp, FractureRow) as poly data (.vtp)
+//    with the fracture quantities as point data: a polyline in 2D, the fault surface's
+//    triangles in 3D.
 //  * writePvd: a .pvd collection tying, per time, the .vtu (part 0) and each fracture's
 //    .vtp (parts 1, 2, ...), so that ParaView opens one file and gets the time series.
 //  * VtkSeries: the folder layout and the .pvd of a run, for the solver to call once per
@@ -21,6 +22,7 @@
 // σ_n, τ and the slip: fracture/SignConventions.hpp.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <string>
 #include <utility>
@@ -63,21 +65,32 @@ int vtkStateCode(const std::string& state);
 ///    (Int32), the mesh's region number per cell.
 /// `space` must be the space `assembler` was built on and `u` its interleaved dof vector
 /// (dim · numNodes values [m]). `precision`: significant digits of every number.
-/// `initialStress`, if given, is an in-situ stress σ⁰(x) [Pa] added to the in-plane stress
-/// (effect initialStress; its σ_zz is taken as 0). It is a 2D field: on a 3D space it throws
-/// std::invalid_argument (a caller's error; nothing is written).
+/// `initialStress`, if given, is an in-situ stress σ⁰(x) [Pa] (symmetric 3×3) added to the
+/// stress of `u` at the centroid: 3D the whole tensor; 2D its upper-left 2×2 block to the
+/// in-plane stress (σ⁰_zz is not used: σ_zz stays Material::outOfPlaneStress's).
 void writeVtu(const std::string& path, const LagrangeSpace& space,
               const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
-              const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress = {});
+              const std::function<Eigen::Matrix3d(const Point&)>& initialStress = {});
 
-/// Write one fracture's rows as VTK XML poly data (ASCII) at `path`: the points (x, y, 0) [m]
-/// in row order (arclength order) joined by one VTK_POLY_LINE, and point data
-///  s [m], slip [m], slipIncrement [m], sigmaN [Pa], tau [Pa], ST [-], residual [Pa] (Float64;
-///  NaN written as "nan" at tips, which have no traction) and state (Int32: 0 stick, 1 slip,
-///  2 open, 3 tip; see vtkStateCode).
-/// The file also says the state coding in an XML comment. No rows: an empty data set (no
-/// points, no line). The folder must exist.
-void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision);
+/// Write one fracture's rows (FieldWriter.hpp) as VTK XML poly data (ASCII) at `path`.
+///  * 2D (`triangles` empty): the points (x, y, 0) [m] in row order (arclength order) joined by
+///    one VTK_POLY_LINE, and point data s [m], slip [m], slipIncrement [m], sigmaN [Pa],
+///    tau [Pa], ST [-], residual [Pa] (components [0] of the rows' arrays).
+///  * 3D: the fault surface. Points: the rows' positions in row order. `triangles`: row
+///    indices of each fault triangle, v0 v1 v2 (nodesPerTriangle 3, P1) or v0 v1 v2 mid01
+///    mid12 mid20 (6, P2). Cells: VTK_TRIANGLE (5), one per triangle for P1; VTK's poly data
+///    has no quadratic cells, so a P2 triangle is written as its four sub-triangles at the
+///    edge midpoints (v0 m01 m20, m01 v1 m12, m20 m12 v2, m01 m12 m20): every node's values
+///    are shown and the surface is exact where it is flat. Point data: normal (3), slip [m]
+///    (3, x y z: slip₁ t₁ + slip₂ t₂), slipMagnitude [m], slipIncrement [m] (3, x y z),
+///    sigmaN [Pa], traction [Pa] (3, the tangential traction τ in x y z), tauMagnitude [Pa],
+///    ST [-], residual [Pa] (|D|).
+/// Both: Float64, NaN written as "nan" at tips, which have no traction, and state (Int32:
+/// 0 stick, 1 slip, 2 open, 3 tip; see vtkStateCode). The file also says the state coding in
+/// an XML comment. No rows: an empty data set (no points, no cells). The folder must exist.
+void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision,
+                      const std::vector<std::array<Index, 6>>& triangles = {},
+                      int nodesPerTriangle = 3);
 
 /// One time of a .pvd collection.
 struct PvdTime {
@@ -104,10 +117,13 @@ class VtkSeries {
   /// (default: the case folder's own name).
   explicit VtkSeries(std::string caseDir, std::string caseName = "");
 
-  /// One fracture's rows for write(): its name (file name and ParaView block name) and table.
+  /// One fracture for write(): its name (file name and ParaView block name), table and, in
+  /// 3D, its triangles as row indices (writeFractureVtp; empty in 2D).
   struct Fracture {
     std::string name;
     std::vector<FractureRow> rows;
+    std::vector<std::array<Index, 6>> triangles = {};
+    int nodesPerTriangle = 3;  ///< 3 (P1) or 6 (P2)
   };
 
   /// Write the .vtu of (space, assembler, u) (see writeVtu), one .vtp per fracture (see
@@ -117,7 +133,7 @@ class VtkSeries {
   void write(double time, const std::string& timeName, const LagrangeSpace& space,
              const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
              const std::vector<Fracture>& fractures, int precision,
-             const std::function<Eigen::Matrix2d(const Vector2&)>& initialStress = {});
+             const std::function<Eigen::Matrix3d(const Point&)>& initialStress = {});
 
   /// Take over an earlier run's collection up to a restart: read the existing .pvd (if any),
   /// keep the times whose name `keep` accepts, and delete the files of this layout whose time

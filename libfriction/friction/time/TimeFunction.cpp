@@ -9,7 +9,9 @@ TimeFunction::TimeFunction(std::vector<double> constant) : x_{0.0}, y_{std::move
 
 TimeFunction TimeFunction::read(const Dictionary& dict, const std::string& key, int components) {
   const std::vector<Value>& v = dict.values(key);
-  const std::string expected = components == 1 ? "a number" : "a vector (x y)";
+  const std::string expected = components == 1   ? "a number"
+                               : components == 2 ? "a vector (x y)"
+                                                 : "a vector (x y z)";
   TimeFunction f;
   if (!v.empty() && v[0].isWord() && v[0].text == "table") {
     // Re-read through the typed accessor, which checks the table's shape; it expects the
@@ -25,8 +27,22 @@ TimeFunction TimeFunction::read(const Dictionary& dict, const std::string& key, 
     return f;
   }
   if (components == 1) return TimeFunction({dict.getScalar(key)});
-  const Vector2 c = dict.getVector(key);
-  return TimeFunction({c.x(), c.y()});
+  if (components == 2) {
+    const Vector2 c = dict.getVector(key);
+    return TimeFunction({c.x(), c.y()});
+  }
+  // (x y z), also written "uniform (x y z)" as OpenFOAM does.
+  const Value* b = v.data();
+  if (v.size() == 2 && b->isWord() && b->text == "uniform") ++b;
+  const bool ok = b + 1 == v.data() + v.size() && b->isList() && b->items.size() == 3 &&
+                  b->items[0].isNumber() && b->items[1].isNumber() && b->items[2].isNumber();
+  if (!ok) {
+    std::string got;
+    for (const Value& x : v) got += (got.empty() ? "" : " ") + x.str();
+    dict.fail(key, "key '" + key + "': expected " + expected + ", got " +
+                       (got.empty() ? "nothing" : got));
+  }
+  return TimeFunction({b->items[0].number, b->items[1].number, b->items[2].number});
 }
 
 std::vector<double> TimeFunction::operator()(double t) const {

@@ -2,6 +2,7 @@
 // interpolated linearly and held constant outside its range (OpenFOAM's 'clamp').
 // Dictionary forms (any number of components):
 //   value  (0 -0.025);                          // constant (also: value uniform (0 -0.025);)
+//   value  (0 0 -0.025);                        // three components (a 3D mesh)
 //   value  1e7;                                 // scalar constant
 //   value  table ((0 (0 0)) (1 (-0.02 -0.025)));
 #pragma once
@@ -18,7 +19,7 @@ class TimeFunction {
   TimeFunction() = default;
   /// A constant.
   explicit TimeFunction(std::vector<double> constant);
-  /// Read entry 'key' of dict; components = expected number of components (1 or 2).
+  /// Read entry 'key' of dict; components = expected number of components (1, 2 or 3).
   static TimeFunction read(const Dictionary& dict, const std::string& key, int components);
 
   /// Value at time t.

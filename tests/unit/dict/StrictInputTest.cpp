@@ -311,7 +311,7 @@ TEST_CASE("a fracturePressure values file is read strictly, line by line", "[dic
   const Dictionary d = Dictionary::parse(
       "type fracturePressure;\nfracture crack;\nvalues \"constant/p.dat\";\n", "constant/effects");
   const std::string file = (dir.path() / "constant/p.dat").lexically_normal().string();
-  const auto make = [&] { return Effect::New("pore", d, {"crack"}, dir.path().string()); };
+  const auto make = [&] { return Effect::New("pore", d, {"crack"}, dir.path().string(), 2); };
 
   SECTION("good lines, comments, blank lines, CRLF and a byte-order mark") {
     dir.write("constant/p.dat", std::string(kBom) + "# s p\r\n0 1\r\n\r\n  # mid\n1 3e0\n2\t-1\n");
@@ -358,7 +358,7 @@ TEST_CASE("a fracturePressure values file is read strictly, line by line", "[dic
     const Dictionary both = Dictionary::parse(
         "type fracturePressure;\nfracture crack;\npressure 1;\nvalues \"constant/p.dat\";\n",
         "constant/effects");
-    CHECK(inputErrorOf([&] { Effect::New("pore", both, {"crack"}, dir.path().string()); }) ==
+    CHECK(inputErrorOf([&] { Effect::New("pore", both, {"crack"}, dir.path().string(), 2); }) ==
           "constant/effects:4: keys 'pressure' (line 3) and 'values' in constant/effects are "
           "alternatives: give pressure, or values, not both");
   }

@@ -443,8 +443,10 @@ TEST_CASE("3D: a split mesh survives constant/splitMesh unchanged", "[split][3d]
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("3D: frictionSolver's case refuses a 3D split mesh at the start", "[split][3d]") {
-  // A case folder whose constant/splitMesh is current (its record matches the files) and 3D.
+TEST_CASE("3D: frictionSolver's case reads a 3D split mesh and refuses 2D-only keys",
+          "[split][3d]") {
+  // A case folder whose constant/splitMesh is current (its record matches the files) and 3D:
+  // the case reads on, and the material's 2D key planeStress is refused with the reason.
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("split3d-case-" + std::to_string(::getpid()));
   fs::create_directories(dir / "system");
@@ -460,14 +462,15 @@ TEST_CASE("3D: frictionSolver's case refuses a 3D split mesh at the start", "[sp
   s.madeFrom = {"constant/mesh/box.mesh", fileHash((dir / "constant/mesh/box.mesh").string()),
                 fileHash((dir / "system/meshDict").string())};
   writeSplitMesh(s, (dir / "constant" / "splitMesh").string());
+  std::ofstream(dir / "constant" / "mechanicalProperties") << "E 1e9;\nnu 0.25;\nplaneStress no;\n";
   std::string message = "no error";
   try {
     FrictionCase c(dir.string());
   } catch (const InputError& e) {
     message = e.what();
   }
-  CHECK_THAT(message, Contains("constant/splitMesh") && Contains("is a 3D split mesh") &&
-                          Contains("frictionSolver solves 2D cases only so far"));
+  CHECK_THAT(message, Contains("constant/mechanicalProperties") && Contains("planeStress") &&
+                          Contains("has no meaning in 3D"));
   fs::remove_all(dir);
 }
 

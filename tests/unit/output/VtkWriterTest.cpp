@@ -49,14 +49,13 @@ std::vector<FractureRow> fractureRows(double t) {
     const double s = double(i) / (kFracturePoints - 1);
     FractureRow r;
     r.s = s;
-    r.x = s;
-    r.y = kFractureY;
-    r.slip = t * 1e-3 * s;
-    r.slipIncrement = t * 2e-4 * s;
+    r.position = Point(s, kFractureY, 0);
+    r.slip[0] = t * 1e-3 * s;
+    r.slipIncrement[0] = t * 2e-4 * s;
     r.sigmaN = t * -1e6 * (1 + s);
-    r.tau = t * 1e5 * s;
-    r.ST = std::abs(r.tau) / -r.sigmaN;
-    r.residual = t * 1e-9 * i;
+    r.tau[0] = t * 1e5 * s;
+    r.ST = std::abs(r.tau[0]) / -r.sigmaN;
+    r.residual[0] = t * 1e-9 * i;
     r.state = states[i % 3];
     rows.push_back(r);
   }
@@ -281,16 +280,63 @@ TEST_CASE("VTK output of a linear field on tetrahedra reads back in VTK with exa
   fs::remove_all(dir);
 }
 
-TEST_CASE("writeVtu refuses a 2D initial stress on a tetrahedral mesh", "[output][vtk][3d]") {
-  const Mesh mesh = test::unitCubeMesh(1);
-  const LagrangeSpace space(mesh, 1);
-  const ElasticityAssembler assembler(space, Material::fromYoungPoisson(kE, kNu, false));
-  const fs::path dir = freshTempDir("tetInitial");
-  const fs::path path = dir / "a.vtu";
-  const auto sigma0 = [](const Vector2&) { return Eigen::Matrix2d::Identity().eval(); };
-  CHECK_THROWS_AS(
-      writeVtu(path.string(), space, assembler, Eigen::VectorXd::Zero(space.numDofs()), 8, sigma0),
-      std::invalid_argument);
-  CHECK_FALSE(fs::exists(path));
+namespace {
+
+/// The "stress" rows (6 values each) of a .vtu written by writeVtu.
+std::vector<std::vector<double>> stressRows(const std::string& vtu) {
+  std::istringstream in(vtu);
+  std::vector<std::vector<double>> rows;
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("Name=\"stress\"") != std::string::npos) {
+      inside = true;
+      continue;
+    }
+    if (!inside) continue;
+    if (line.find("</DataArray>") != std::string::npos) break;
+    std::istringstream v(line);
+    std::vector<double> row;
+    for (double x; v >> x;) row.push_back(x);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// σ⁰ with six distinct components, so that a component put in the wrong place shows [Pa].
+Eigen::Matrix3d initialStress3d(const Point&) {
+  Eigen::Matrix3d s;
+  s << -3e6, 4e5, 6e5,  //
+      4e5, -2e6, 5e5,   //
+      6e5, 5e5, -1e6;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("writeVtu adds an initial stress: the whole tensor in 3D, its in-plane block in 2D",
+          "[output][vtk][3d]") {
+  const fs::path dir = freshTempDir("initial");
+  const Material material = Material::fromYoungPoisson(kE, kNu, false);
+  const Eigen::Matrix3d s0 = initialStress3d(Point::Zero());
+
+  // u = 0: the written stress is σ⁰ alone (to the written digits: 17).
+  const Mesh cube = test::unitCubeMesh(1);
+  const LagrangeSpace space3(cube, 1);
+  writeVtu((dir / "a.vtu").string(), space3, ElasticityAssembler(space3, material),
+           Eigen::VectorXd::Zero(space3.numDofs()), 17, initialStress3d);
+  const auto rows3 = stressRows(readFile(dir / "a.vtu"));
+  REQUIRE(rows3.size() == static_cast<std::size_t>(cube.numCells()));
+  for (const auto& r : rows3)
+    CHECK(r == std::vector<double>{s0(0, 0), s0(1, 1), s0(2, 2), s0(0, 1), s0(1, 2), s0(0, 2)});
+
+  // 2D: σ⁰_zz, σ⁰_yz and σ⁰_xz are not used; σ_zz is Hooke's out-of-plane stress (0 at u = 0).
+  const Mesh square = test::unitSquareMesh(2);
+  const LagrangeSpace space2(square, 1);
+  writeVtu((dir / "b.vtu").string(), space2, ElasticityAssembler(space2, material),
+           Eigen::VectorXd::Zero(space2.numDofs()), 17, initialStress3d);
+  const auto rows2 = stressRows(readFile(dir / "b.vtu"));
+  REQUIRE(rows2.size() == static_cast<std::size_t>(square.numCells()));
+  for (const auto& r : rows2)
+    CHECK(r == std::vector<double>{s0(0, 0), s0(1, 1), 0, s0(0, 1), 0, 0});
   fs::remove_all(dir);
 }

@@ -1,0 +1,238 @@
+#!/usr/bin/env bash
+# Regression test for plotFracture.py on 3D fracture tables. frictionSolver does not write 3D
+# tables yet, so the cases are synthetic (plotFracture3dCase.py): a flat inclined penny with
+# the analytic penny-crack slip at two times, the same nodes on a curved cap ('# frame per
+# node'), a flat rectangle. Checks:
+#  * the maps and the profile are real PNGs (magic bytes, not empty);
+#  * the profile's samples (-profileCsv) lie on the segment and match the analytic values:
+#    sigmaN and tauMagnitude (linear in x y z, so reproduced by linear interpolation) to 1e-9
+#    relative (round-off); |slip| = K sqrt(A^2 - r^2) to the bound of linear interpolation
+#    of that function at r <= 0.8 A (see checkProfile below), r the distance in the map
+#    plane from the penny's centre; both for the default segment and for a -line whose
+#    points lie off the plane (projected on it);
+#  * bad input (a table without rows, a missing column, an unknown state, a malformed -line,
+#    a -line that misses the fault, -line with several faults, a bad -samples, an unknown
+#    image format) exits 1 with a message naming the file or the option, and leaves no PNG,
+#    no CSV and no temporary file.
+# Usage: plotFracture3d.sh SOURCE_DIR WORK_DIR
+set -uo pipefail
+src=$1 work=$2
+plot=$src/utilities/plotFracture/plotFracture.py
+make=$src/tests/regression/plotFracture3dCase.py
+python=/usr/bin/python3  # Debian's, which sees python3-matplotlib (etc/debian-packages)
+export PYTHONDONTWRITEBYTECODE=1  # the generator is imported from the source tree: write nothing there
+fail() { echo "FAIL [plotFracture3d]: $*"; exit 1; }
+
+[[ -x $python ]] || fail "$python missing (install python3-matplotlib)"
+"$python" -c "import matplotlib, numpy" 2>/dev/null || fail "matplotlib/numpy missing"
+rm -rf "$work" && mkdir -p "$work"
+
+isPng() {  # non-empty, starts with the 8-byte PNG signature
+  [[ -s $1 ]] || return 1
+  [[ $(head -c 8 "$1" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]]
+}
+
+# checkProfile CSV KIND: the samples against the analytic penny (constants of the generator).
+checkProfile() {
+  "$python" - "$1" "$make" "$2" <<'PY'
+import csv, os, sys
+import numpy as np
+sys.path.insert(0, os.path.dirname(sys.argv[2]))
+import plotFracture3dCase as case
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert rows, "empty profile CSV"
+times = sorted({r["time"] for r in rows}, key=float)
+expectTimes = ["0.5", "1"] if sys.argv[3] == "disc" else ["1"]
+assert times == expectTimes, f"times {times}, expected {expectTimes}"
+scale = {"0.5": 0.5, "1": 1.0}
+# The segment: the samples' x y z on one straight line, distance = |p - p0|.
+pts = np.array([[float(r[k]) for k in "xyz"] for r in rows if r["time"] == "1"])
+dist = np.array([float(r["distance"]) for r in rows if r["time"] == "1"])
+assert len(pts) == 201, f"{len(pts)} samples, expected 201"
+assert np.allclose(np.linalg.norm(pts - pts[0], axis=1), dist, rtol=0, atol=1e-9), \
+    "distance is not the distance from the first point"
+d = (pts[-1] - pts[0]) / dist[-1]
+off = (pts - pts[0]) - np.outer((pts - pts[0]) @ d, d)
+assert np.abs(off).max() < 1e-9, "samples off the segment"
+# Interpolation bound for f = K sqrt(A^2 - r^2) on the disc's nodes: |f - I f| <= h^2/2 *
+# max |D^2 f| (h the longest triangle edge, <= 1.1 * A/20 for these rings) and
+# |D^2 f| <= K A^2 / (A^2 - r^2)^(3/2); taken at r = 0.8 A + h (the triangles that hold
+# the samples with r <= 0.8 A): ~3e-6 m here, against a peak slip of 5.5e-4 m.
+A, K = case.A, case.K
+h = 1.1 * A / case.RINGS
+rb = 0.8 * A + h
+tol = h * h / 2 * K * A * A / (A * A - rb * rb) ** 1.5
+checked = exact = 0
+worst = 0.0
+for r in rows:
+    p = np.array([float(r[k]) for k in "xyz"])
+    q = p - case.C
+    u, v = q @ case.T1, q @ case.T2
+    rad = np.hypot(u, v)
+    slip = float(r["slipMagnitude"])
+    expect = scale[r["time"]] * K * np.sqrt(max(A * A - rad * rad, 0.0))
+    if rad <= 0.8 * A:
+        assert np.isfinite(slip), f"nan slip at r = {rad} inside the penny"
+        worst = max(worst, abs(slip - expect))
+        assert abs(slip - expect) <= tol, \
+            f"slip {slip} at r = {rad:.4f}, analytic {expect}, tolerance {tol:.3g}"
+        checked += 1
+    sn = float(r["sigmaN"])
+    # Tractions cover the non-tip nodes' triangulation: up to the last ring inside the rim.
+    assert rad > 0.9 * A or np.isfinite(sn), f"nan sigmaN at r = {rad} inside the penny"
+    if np.isfinite(sn):
+        s = case.C + u * case.T1 + v * case.T2  # where the generator evaluates them
+        assert abs(sn - case.sigmaN(s)) <= 1e-9 * abs(case.sigmaN(s)), \
+            f"sigmaN {sn} vs {case.sigmaN(s)}"
+        tm = float(r["tauMagnitude"])
+        assert abs(tm - case.tauMagnitude(s)) <= 1e-9 * abs(case.tauMagnitude(s)), "tauMagnitude"
+        assert abs(float(r["ST"]) - tm / -sn) <= 0.01 * tm / -sn, "ST far from |tau|/-sigmaN"
+        exact += 1
+assert checked >= 100 and exact >= 100, f"only {checked} slip and {exact} traction samples checked"
+print(f"  {sys.argv[3]}: {checked} slip samples within {worst:.2e} m of the analytic penny "
+      f"slip (tolerance {tol:.2e} m), {exact} traction samples exact to 1e-9")
+PY
+}
+
+noOutput() {  # no PNG and no temporary file anywhere in the case folder
+  local left
+  left=$(find "$1" \( -name '*.png' -o -name '*.tmp' -o -name '*.csv' \) | head -3)
+  [[ -z $left ]] || fail "$2: a failed run left: $left"
+}
+
+# The flat penny, two times, default segment: through the centroid along t1.
+disc=$work/disc
+"$python" "$make" "$disc" disc || fail "cannot write the synthetic penny"
+out=$("$python" "$plot" -case "$disc" -profileCsv "$disc/profile.csv" 2>&1); rc=$?
+printf '%s\n' "$out"
+((rc == 0)) || fail "penny: exit $rc"
+for png in "$disc"/postProcessing/fracture_fault{,_profile}.png; do
+  isPng "$png" || fail "$png missing, empty or not a PNG"
+done
+grep -qF "maps of slip magnitude, ST and node states at t = 1" <<<"$out" || fail "penny: $out"
+checkProfile "$disc/profile.csv" disc || fail "penny: default profile"
+# Its ends are the penny's rim along t1 (the default segment spans the fault).
+"$python" - "$disc/profile.csv" "$make" <<'PY' || fail "penny: default segment not along t1"
+import csv, os, sys
+import numpy as np
+sys.path.insert(0, os.path.dirname(sys.argv[2]))
+import plotFracture3dCase as case
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["time"] == "1"]
+for r, sign in ((rows[0], -1), (rows[-1], 1)):
+    p = np.array([float(r[k]) for k in "xyz"])
+    assert np.allclose(p, case.C + sign * case.A * case.T1, atol=1e-9), p
+    assert abs(float(r["slipMagnitude"])) < 1e-9, "the rim (tips) has zero slip"
+PY
+
+# A segment given with -line, its points off the plane (projected), chosen outputs.
+line=$("$python" - "$make" <<'PY'
+import os, sys
+sys.path.insert(0, os.path.dirname(sys.argv[1]))
+import plotFracture3dCase as case
+p0 = case.C - 0.3 * case.T1 + 0.45 * case.T2 + 0.2 * case.N
+p1 = case.C + 0.35 * case.T1 - 0.4 * case.T2 - 0.1 * case.N
+print(":".join(",".join(f"{c:.17g}" for c in p) for p in (p0, p1)))
+PY
+)
+out=$("$python" "$plot" -case "$disc" -fracture fault -times 0.5,1 -line "$line" \
+      -o "$work/maps.png" -profile "$work/profile.png" -profileCsv "$work/line.csv" \
+      -noConvergence 2>&1); rc=$?
+((rc == 0)) || fail "-line run: exit $rc: $out"
+isPng "$work/maps.png" || fail "-o: no PNG"
+isPng "$work/profile.png" || fail "-profile: no PNG"
+# The CSV's x y z are on the given 3D segment (off the plane), the values at the projection.
+"$python" - "$work/line.csv" "$line" <<'PY' || fail "-line: samples not on the given segment"
+import csv, sys
+import numpy as np
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["time"] == "1"]
+p0, p1 = (np.array([float(c) for c in s.split(",")]) for s in sys.argv[2].split(":"))
+assert np.allclose([float(rows[0][k]) for k in "xyz"], p0, atol=1e-9)
+assert np.allclose([float(rows[-1][k]) for k in "xyz"], p1, atol=1e-9)
+PY
+# checkProfile measures r in the plane, so it checks the projection too.
+checkProfile "$work/line.csv" disc || fail "-line profile"
+
+# The curved cap (per-node frame): the maps in the mean plane, the same analytic profile.
+cap=$work/cap
+"$python" "$make" "$cap" cap || fail "cannot write the synthetic cap"
+grep -q "^# frame per node" "$cap/1/fractures/fault.dat" || fail "cap: no per-node frame line"
+out=$("$python" "$plot" -case "$cap" -profileCsv "$cap/profile.csv" 2>&1) || fail "cap: $out"
+isPng "$cap/postProcessing/fracture_fault.png" || fail "cap: no maps PNG"
+isPng "$cap/postProcessing/fracture_fault_profile.png" || fail "cap: no profile PNG"
+checkProfile "$cap/profile.csv" cap || fail "cap: profile"
+
+# The rectangle: the default segment spans its length (2 m) and is sampled end to end.
+rect=$work/rectangle
+"$python" "$make" "$rect" rectangle || fail "cannot write the synthetic rectangle"
+out=$("$python" "$plot" -case "$rect" -profileCsv "$rect/profile.csv" 2>&1) || fail "rectangle: $out"
+isPng "$rect/postProcessing/fracture_fault.png" || fail "rectangle: no maps PNG"
+"$python" - "$rect/profile.csv" "$make" <<'PY' || fail "rectangle: default profile"
+import csv, os, sys
+import numpy as np
+sys.path.insert(0, os.path.dirname(sys.argv[2]))
+import plotFracture3dCase as case
+rows = list(csv.DictReader(open(sys.argv[1])))
+slip = np.array([float(r["slipMagnitude"]) for r in rows])
+assert abs(float(rows[-1]["distance"]) - 2.0) < 1e-9, rows[-1]["distance"]
+assert np.all(np.isfinite(slip)), "samples of the default segment missing"
+mid = slip[len(slip) // 2]  # the centre node, exact: K A
+assert abs(mid - case.K * case.A) < 1e-12, (mid, case.K * case.A)
+PY
+
+# A fault that folds over itself in its mean plane (here a node row written twice: the
+# second copy lands on the first in the map): drawn, with a warning saying so.
+f=$work/folded
+"$python" "$make" "$f" disc && rm -rf "$f/0.5" || fail "cannot write the folded case"
+awk 'NR == 5 { print } { print }' "$f/1/fractures/fault.dat" >"$f/new" &&
+  mv "$f/new" "$f/1/fractures/fault.dat"
+out=$("$python" "$plot" -case "$f" 2>&1) || fail "folded: $out"
+grep -qF "the fault folds over itself in its mean plane (0 node normals at 90 degrees or more \
+from it, 1 nodes on top of others)" <<<"$out" || fail "folded: no warning: $out"
+isPng "$f/postProcessing/fracture_fault.png" || fail "folded: no maps PNG"
+
+# Bad input: exit 1, a message naming the file or the option, nothing written.
+bad() {  # name, expected message, then the plot command's arguments
+  local name=$1 want=$2 err rc; shift 2
+  err=$("$python" "$plot" "$@" 2>&1 >/dev/null); rc=$?
+  ((rc == 1)) || fail "$name: exit $rc, expected 1 ($err)"
+  grep -qF -- "$want" <<<"$err" || fail "$name: expected '$want' in: $err"
+}
+fresh() {  # a fresh penny case with time 1 only, without outputs
+  rm -rf "$1" && "$python" "$make" "$1" disc && rm -rf "$1/0.5"
+}
+b=$work/bad
+fresh "$b"
+table=$b/1/fractures/fault.dat
+head -3 "$table" >"$table.new" && mv "$table.new" "$table"
+bad "no rows" "$table: no rows" -case "$b"
+noOutput "$b" "no rows"
+fresh "$b"
+# Drop the ST column (the 19th) from the header and every row.
+awk 'NR == 1 { $20 = ""; print; next } /^#/ { print; next } { $19 = ""; print }' "$table" \
+  >"$table.new" && mv "$table.new" "$table"
+bad "missing column" "$table:1: the header has no column 'ST'" -case "$b" -profileCsv "$b/p.csv"
+noOutput "$b" "missing column"
+fresh "$b"
+sed -i '5s/ slip$/ sliding/' "$table"
+bad "unknown state" "$table:5: state 'sliding' is not one of tip, stick, slip, open" \
+  -case "$b"
+noOutput "$b" "unknown state"
+fresh "$b"
+bad "bad -line" "-line: expected x0,y0,z0:x1,y1,z1 (two points in m), got '1,2,3:4,5'" \
+  -case "$b" -line 1,2,3:4,5
+bad "bad -line" "-line: expected x0,y0,z0:x1,y1,z1" -case "$b" -line 1,2,3,4,5,6
+bad "bad -line" "-line: expected x0,y0,z0:x1,y1,z1" -case "$b" -line 1,2,nan:4,5,6
+bad "-line of one point" "-line: the two points of '1,2,3:1,2,3' coincide" -case "$b" -line 1,2,3:1,2,3
+bad "-line off the fault" \
+  "-line: the segment (10 10 10) -> (11 10 10) does not cross fracture 'fault'" \
+  -case "$b" -line 10,10,10:11,10,10 -profileCsv "$b/p.csv"
+bad "-samples" "-samples: expected a whole number >= 2, got '1'" -case "$b" -samples 1
+bad "image format" "unknown image format 'xyz'" -case "$b" -o "$b/maps.xyz"
+noOutput "$b" "bad options"
+[[ ! -e $b/maps.xyz ]] || fail "image format: $b/maps.xyz written"
+# -line and the profile outputs need one fault when the case has several.
+cp "$table" "$b/1/fractures/other.dat"
+bad "-line, two faults" "-line: 2 fractures (fault other); choose one with -fracture" \
+  -case "$b" -line 0,0,0:1,1,1
+noOutput "$b" "two faults"
+echo "plotFracture3d: ok"
