@@ -10,7 +10,8 @@ resolved shear, with
 (Eshelby 1957; Segall 2010, eq. 4.74). Reads the case's constant/mechanicalProperties,
 constant/fractureProperties and constant/effects (the initialStress entry), the 3D fracture
 table <time>/fractures/<name>.dat and the fault surface VTK/fractures/<name>_<time>.vtp (its
-triangles give the integration weights; the .vtp's points are the table's rows, in order).
+triangles give the integration weights; the .vtp's points are the table's rows, in order;
+P2 triangles, written as four triangles at their edge midpoints, are put back together).
 The disc's centre and radius come from the tip nodes (the rim), its normal from the table.
 
 Prints, as "key value" lines:
@@ -244,20 +245,23 @@ def readVtp(path, xyz):
         cells.append([cell.GetPointId(k) for k in range(cell.GetNumberOfPoints())])
     if not cells:
         raise InputError(f"{path}: no cells")
-    if kinds == {vtk.VTK_TRIANGLE}:
-        return np.array(cells)
-    # P2: a .vtp holds only linear cells, so a quadratic triangle arrives as a polygon of
-    # its six nodes (v0 v1 v2 mid01 mid12 mid20); a .vtu could hold VTK_QUADRATIC_TRIANGLE.
-    if kinds <= {vtk.VTK_QUADRATIC_TRIANGLE, vtk.VTK_POLYGON} and \
-            all(len(c) == 6 for c in cells):
-        tri = np.array(cells)
-        mids = (pts[tri[:, [0, 1, 2]]] + pts[tri[:, [1, 2, 0]]]) / 2
-        if np.abs(mids - pts[tri[:, 3:]]).max() > 1e-6 * scale:
-            raise InputError(f"{path}: six-node cells whose nodes 4-6 are not the midpoints "
-                             "of the edges v0v1, v1v2, v2v0")
-        return tri
-    raise InputError(f"{path}: expected only triangles (VTK_TRIANGLE, 5) or only six-node "
-                     f"quadratic triangles, found cell types {sorted(kinds)}")
+    if kinds != {vtk.VTK_TRIANGLE}:
+        raise InputError(f"{path}: expected triangles (VTK_TRIANGLE, 5) only, found cell "
+                         f"types {sorted(kinds)}")
+    tri = np.array(cells)
+    # P2: a .vtp holds linear cells only, so frictionSolver writes each six-node triangle as
+    # four triangles at its edge midpoints, (v0 m01 m20) (m01 v1 m12) (m20 m12 v2)
+    # (m01 m12 m20); put them back together, so that the slip is interpolated quadratically.
+    if len(tri) % 4 == 0:
+        c0, c1, c2, c3 = tri[0::4], tri[1::4], tri[2::4], tri[3::4]
+        if (np.array_equal(c0[:, 1], c1[:, 0]) and np.array_equal(c0[:, 1], c3[:, 0]) and
+                np.array_equal(c1[:, 2], c2[:, 1]) and np.array_equal(c1[:, 2], c3[:, 1]) and
+                np.array_equal(c0[:, 2], c2[:, 0]) and np.array_equal(c0[:, 2], c3[:, 2])):
+            six = np.stack([c0[:, 0], c1[:, 1], c2[:, 2], c0[:, 1], c1[:, 2], c0[:, 2]], axis=1)
+            mids = (pts[six[:, [0, 1, 2]]] + pts[six[:, [1, 2, 0]]]) / 2
+            if np.abs(mids - pts[six[:, 3:]]).max() <= 1e-6 * scale:
+                return six
+    return tri
 
 
 # --- quadrature -----------------------------------------------------------------------------

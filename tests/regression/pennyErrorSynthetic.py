@@ -5,7 +5,8 @@ Usage: pennyErrorSynthetic.py SOURCE_DIR WORK_DIR
 
 From the case's committed gmsh mesh (its fault triangles), writes 3D fracture tables and
 fault-surface .vtp files in the layout frictionSolver writes (docs: README.md, 3D tables),
-P1 and P2 (a .vtp holds linear cells only: a P2 triangle is a polygon of its six nodes), whose slip is the analytic one (times a factor), and checks what pennyError.py
+P1 and P2 (a .vtp holds linear cells only: frictionSolver writes a P2 triangle as the four
+triangles at its edge midpoints), whose slip is the analytic one (times a factor), and checks what pennyError.py
 prints:
   * nodal values = formula: the lumped error is 0 (to rounding) and the amplitude ratio 1,
     the integrated error is the interpolation error of sqrt(a^2 - r^2) alone (small,
@@ -166,7 +167,11 @@ def makeCase(name, order, factor=1.0, turnOne=0.0, lawOffOne=0.0, table2D=False,
         poly.SetPoints(pts)
         ca = vtk.vtkCellArray()
         for c in cells:
-            ca.InsertNextCell(len(c), c)
+            if order == 1:
+                ca.InsertNextCell(3, c)
+            else:   # as frictionSolver writes a P2 triangle: four at its edge midpoints
+                for sub in ((0, 3, 5), (3, 1, 4), (5, 4, 2), (3, 4, 5)):
+                    ca.InsertNextCell(3, [c[k] for k in sub])
         poly.SetPolys(ca)
         os.makedirs(os.path.join(case, "VTK", "fractures"))
         w = vtk.vtkXMLPolyDataWriter()
