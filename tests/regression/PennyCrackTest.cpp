@@ -1,0 +1,86 @@
+// The penny-shaped crack (cases/pennyCrack) against its analytic slip (docs/method.md, three
+// dimensions): a disc of radius a = 1 m in a cube of side 8a under a uniform remote stress
+// (initialStress: σ_n∞ = −10 MPa, |τ∞| = 6 MPa, μ_f = 0.3), so every node off the tip line
+// slips, parallel to the resolved shear, with |[[u]]|(r) ∝ √(a² − r²). cases/pennyCrack's
+// pennyError.py does the comparison (relative L²(Γ) error of |slip| on the fault triangles,
+// angles, the law node by node); these tests read its numbers and assert what the physics
+// requires. The finite cube (half-width L = 4a) lowers the slip by about 0.5 % against
+// L = 8a (amplitude ratios 0.8928 and 0.8972 at h = a/16, measured in the case README; a
+// deficit like (a/L)³), well under the discretisation error of every mesh used here.
+#include <catch2/catch.hpp>
+
+#include <regex>
+
+#include "CaseRunner.hpp"
+
+using namespace friction::regression;
+
+namespace {
+
+/// One number of pennyError.py's output ("name   value ...").
+double pennyValue(const std::string& out, const std::string& name) {
+  std::smatch m;
+  const std::regex r("(^|\n)" + name + " +([-+0-9.eE]+)");
+  INFO(out);
+  REQUIRE(std::regex_search(out, m, r));
+  return std::stod(m[2].str());
+}
+
+/// Run pennyError.py on the solved case with `options`; returns its output (exit 0 required:
+/// its --max checks passed).
+std::string pennyError(const Case& c, const std::string& options) {
+  const fs::path script = fs::path(FRICTION_SOURCE_DIR) / "cases/pennyCrack/pennyError.py";
+  const fs::path log = c.dir() / "log.pennyErrorTest";
+  const int rc =
+      run("/usr/bin/python3 '" + script.string() + "' -case '" + c.dir().string() + "' " + options,
+          log);
+  const std::string out = readText(log);
+  INFO(out);
+  CHECK(rc == 0);
+  return out;
+}
+
+/// The case at disc mesh size h (Allmesh -h; the committed mesh is h = a/8), solved.
+std::string solvePenny(Case& c, const std::string& h) {
+  if (h != "0.125") c.remesh("-h " + h);
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  // Pointwise checks away from the tip line, where the √ of the rim does not dominate:
+  //  * the law |τ| = μ_f|σ_n| at every slipping node with r < 0.8a to 1e-10 (the solver's
+  //    tolerance 1e-10 on ‖D‖/‖Σ‖; measured ≤ 4e-10 up to r < 0.9a);
+  //  * the slip direction parallel to the resolved remote shear within 0.5° at r < 0.5a
+  //    (measured 0.33°, 0.14°, 0.045° at h = a/8, a/16, a/32) and exactly opposite to the
+  //    node's τ (the law);
+  //  * σ_n unchanged by the slip (the analytic answer) within 2 % at r < 0.5a (measured
+  //    ≤ 1.4 %: mesh noise of the recovered traction).
+  const std::string law = pennyError(c, "-inner 0.8 --maxLaw 1e-10");
+  CHECK_THAT(law, Catch::Contains("states                   stick 0 slip"));
+  CHECK(pennyValue(law, "innerSlipNodes") > 50);
+  const std::string inner = pennyError(c, "-inner 0.5 --maxAngle 0.5");
+  CHECK(pennyValue(inner, "maxSigmaNChange") <= 0.02);
+  return law;
+}
+
+}  // namespace
+
+TEST_CASE("penny crack, P1: the slip converges to the analytic slip", "[regression][3d][penny]") {
+  Case coarse("pennyCrack", "penny-h8");
+  const double e8 = pennyValue(solvePenny(coarse, "0.125"), "relL2Error");
+  Case fine("pennyCrack", "penny-h16");
+  const double e16 = pennyValue(solvePenny(fine, "0.0625"), "relL2Error");
+  // Measured 0.2235 and 0.1312 (order 0.77): the √(a² − r²) at the rim and the grading of
+  // the volume mesh hold P1 below order 1 (cases/pennyCrack/README.md). Asserted: the error
+  // falls by a factor 1.5 at least per halving of h, and stays within 10 % of the measured
+  // values (the mesh is reproduced exactly by gmsh, meshesReproduce.sh).
+  CHECK(e8 <= 0.25);
+  CHECK(e16 <= 0.145);
+  CHECK(e8 / e16 >= 1.5);
+}
+
+TEST_CASE("penny crack, P1 at h = a/32 (long: 90 s, 5 GB)", "[.][pennyLong]") {
+  Case c("pennyCrack", "penny-h32");
+  const double e32 = pennyValue(solvePenny(c, "0.03125"), "relL2Error");
+  // Measured 0.0805 (order 0.70 from a/16).
+  CHECK(e32 <= 0.09);
+}
