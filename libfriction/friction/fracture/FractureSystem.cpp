@@ -571,7 +571,8 @@ InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
       const ControlNode& v = nodes_[node[b]];
       const Index col = k * node[a / k] + a % k;
       for (int e = 0; e < d; ++e)
-        s[e] = consistent_ ? recovered(d * node[b] + e, a) : columns(d * b + e, a) / weights_[node[b]];
+        s[e] =
+            consistent_ ? recovered(d * node[b] + e, a) : columns(d * b + e, a) / weights_[node[b]];
       for (int r = 0; r < k; ++r) op.Stt(k * node[b] + r, col) = project(s, 0, v.tangent[r]);
       op.Snt(node[b], col) = project(s, 0, v.normal);
     }

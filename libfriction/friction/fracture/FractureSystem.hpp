@@ -143,8 +143,7 @@ class FractureSystem : public SlipResponse {
   void controlNodes3D(int degree);
   // x and Σ (d per control node, interleaved) for jump vector j (d per control node); with
   // recover false (3D P2), Σ̃ = (r⁺ − r⁻)/2 instead, before the mass solve.
-  void solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma,
-             bool recover = true);
+  void solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma, bool recover = true);
   // 3D P2: the consistent recovery operator on the columns of x (d·n rows, interleaved):
   // Σ = X G⁻¹ Σ̃_R per component (transpose: Σ̃ = Rᵀ G⁻ᵀ Xᵀ Σ), see factor().
   void applyRecovery(Eigen::MatrixXd& x, bool transpose) const;

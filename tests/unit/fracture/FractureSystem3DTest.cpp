@@ -262,7 +262,8 @@ TEST_CASE("3D FractureSystem: a uniform stress gives its traction at every node 
       const SplitMesh split = splitFractures(mesh, {{"fault", 7, {}}});
       const Material material = Material::fromLame(lambda, mu);
       FractureSystem sys(split, degree, material);
-      for (int patch = 1; patch <= 6; ++patch) sys.dirichlet().fixPatch(patch, FixedComponents::all);
+      for (int patch = 1; patch <= 6; ++patch)
+        sys.dirichlet().fixPatch(patch, FixedComponents::all);
       REQUIRE(sys.factor() == FactorStatus::ok);
       for (int patch = 1; patch <= 6; ++patch)
         sys.dirichlet().setPatchValue(patch, [&](const Point& x) { return Point(G * x); });
@@ -438,13 +439,14 @@ TEST_CASE("3D FractureSystem: the exact gradient and Newton's Jacobian match fin
           double mu, cohesion;
           GradientKind kind;
         };
-        for (const Law& law : {Law{0.3, 0.0, GradientKind::exact},
-                               Law{0.0, 0.01, GradientKind::frozenRho}}) {
+        for (const Law& law :
+             {Law{0.3, 0.0, GradientKind::exact}, Law{0.0, 0.01, GradientKind::frozenRho}}) {
           CAPTURE(law.mu);
           std::mt19937 rng(degree * 10 + static_cast<int>(f));
           std::uniform_real_distribution<double> u(-1, 1);
           // Bounds that differ from node to node: some nodes stick, others slip.
-          const VectorXd spread = VectorXd::NullaryExpr(n, [&] { return 1 + 4 * std::abs(u(rng)); });
+          const VectorXd spread =
+              VectorXd::NullaryExpr(n, [&] { return 1 + 4 * std::abs(u(rng)); });
           ControlProblem p(sys, law.mu * spread, law.cohesion * spread, gamma, 0.0, law.kind);
           const VectorXd beta = mixedBeta(p, sys, rng, 0.003);
           const ControlState s = p.evaluate(beta);
@@ -471,7 +473,8 @@ TEST_CASE("3D FractureSystem: the exact gradient and Newton's Jacobian match fin
     }
 }
 
-TEST_CASE("3D FractureSystem: Newton's two variants reach the same solution", "[fracture][fe][3d]") {
+TEST_CASE("3D FractureSystem: Newton's two variants reach the same solution",
+          "[fracture][fe][3d]") {
   for (int degree : {1, 2}) {
     CAPTURE(degree);
     Box b(4, degree, Fault::inside, Point(0.01, -0.02, -0.03), true, tilt(), true);
@@ -480,10 +483,9 @@ TEST_CASE("3D FractureSystem: Newton's two variants reach the same solution", "[
     for (const char* variant : {"condensed", "krylov"}) {
       ControlProblem p(*b.sys, VectorXd::Constant(n, 0.3), VectorXd::Zero(n), 4.0, 0.0,
                        GradientKind::exact);
-      Dictionary d = Dictionary::parse(
-          std::string("type semismoothNewton; variant ") + variant +
-              "; tolerance 1e-11; maxIterations 50;",
-          "test");
+      Dictionary d = Dictionary::parse(std::string("type semismoothNewton; variant ") + variant +
+                                           "; tolerance 1e-11; maxIterations 50;",
+                                       "test");
       auto opt = Optimizer::New(d);
       VectorXd beta = VectorXd::Zero(2 * n);
       const OptimizerReport rep = opt->minimize(p, beta);
