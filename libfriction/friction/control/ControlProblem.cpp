@@ -1,9 +1,10 @@
 // Objective and exact gradient of the control problem (docs/method.md §4). Derivation, node by
 // node with the k × k block P'_N = ∂P/∂N and the k-vector P'_ρ = ∂P/∂ρ:
 //   dD/dβ = (I − P'_N) S_tt + γ P'_N + μ P'_ρ S_nt,   since N = τ − γβ and dρ = −μ dσ_n.
-// With M S self-adjoint (S is the Steklov–Poincaré map of the dual problem), and P'_N
-// symmetric, the M-gradient of ½ DᵀMD is the tangential traction of one dual solve with jump
-//   q = Σ_c ((I − P'_N) D)_c t_c + μ (P'_ρ·D) n_Γ,  plus the local term γ P'_N D.
+// With P'_N symmetric, the M-gradient of ½ DᵀMD is the adjoint (SlipResponse::adjoint) applied
+// to (I − P'_N) D and μ P'_ρ·D, plus the local term γ P'_N D. Where M S is self-adjoint (S is
+// the Steklov–Poincaré map of the dual problem) that is the tangential traction of one dual
+// solve with jump q = Σ_c ((I − P'_N) D)_c t_c + μ (P'_ρ·D) n_Γ.
 // The sums below keep the order of the scalar (k = 1) expressions, so that 2D is unchanged
 // to the bit.
 #include "friction/control/ControlProblem.hpp"
@@ -111,7 +112,7 @@ Eigen::VectorXd ControlProblem::gradient(const ControlState& s) {
     qn[i] = normal;
   }
   Eigen::VectorXd tauDual;
-  response_.dual(qt, qn, tauDual);
+  response_.adjoint(qt, qn, tauDual);
   ++numDual_;
   Eigen::VectorXd g = tauDual + local + zeta_ * s.beta;
   return g.cwiseProduct(componentMask_);

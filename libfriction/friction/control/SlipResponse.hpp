@@ -56,6 +56,14 @@ class SlipResponse {
   /// given.
   virtual void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
                     Eigen::VectorXd* sigmaNDual = nullptr) = 0;
+  /// The adjoint of β ↦ (τ, σ_n) in the M inner product of weights(): M⁻¹ (S_ttᵀ M qt +
+  /// S_ntᵀ M qn) (qt: k·n, qn: n), zero at held nodes — what the exact gradient needs. Where
+  /// M·S is symmetric (tractions recovered with the lumped M) it is the dual solve's τ, the
+  /// default; an implementation that recovers with another mass overrides it.
+  virtual void adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
+                       Eigen::VectorXd& tauAdjoint) {
+    dual(qt, qn, tauAdjoint);
+  }
 
   /// The interface operator, formed as `method` asks where the implementation can (the
   /// result says how it was formed). This default makes one dual solve per tangential

@@ -78,6 +78,7 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
     controlNodes2D(degree);
   else
     controlNodes3D(degree);
+  consistent_ = dim_ == 3 && degree == 2;
   const Index n = size();
 
   // L: ±j/2 on the copies.
@@ -155,6 +156,7 @@ void FractureSystem::controlNodes3D(int degree) {
       nodes_.push_back(v);
     }
     if (degree != 2) continue;
+    const Index base = static_cast<Index>(nodes_.size()) - g.numNodes();
     // Each edge once, by ascending (smaller, larger) end: its midpoint's normal sums the
     // right-hand normals (b − a) × (c − a) (twice the area times n_Γ) of its triangles.
     std::map<std::array<Index, 2>, Point> edgeNormal;
@@ -183,6 +185,19 @@ void FractureSystem::controlNodes3D(int degree) {
       // Single where both sides share the edge: on the tip line.
       m.tip = m.plus == m.minus;
       nodes_.push_back(m);
+    }
+    // The six control nodes of each triangle (for the recovery's extension, factor()).
+    std::map<std::array<Index, 2>, Index> edgeNode;
+    Index next = base + g.numNodes();
+    for (const auto& entry : edgeNormal) edgeNode[entry.first] = next++;
+    for (const auto& t : g.triangles) {
+      std::array<Index, 6> c{};
+      for (int e = 0; e < 3; ++e) {
+        const Index p = t[e], q = t[(e + 1) % 3];
+        c[e] = base + local[p];
+        c[3 + e] = edgeNode.at({std::min(p, q), std::max(p, q)});
+      }
+      faultTriangles_.push_back(c);
     }
   }
   // Lumped mass of Γ from the ⁺-side triangles (the ⁺ copies keep the unsplit numbers):
@@ -236,11 +251,12 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
     const Eigen::SparseMatrix<double> Ksplit = splitAssembler_->stiffness();
     ++numAssemblies_;
     B_ = P_.transpose() * (Ksplit * L_);
-    // Rows of K_split at the copies, scaled: Σ_k = (r⁺_k − r⁻_k) / (2 w_k).
+    // Rows of K_split at the copies, scaled: Σ_k = (r⁺_k − r⁻_k) / (2 w_k); 3D P2: Σ̃_k =
+    // (r⁺_k − r⁻_k) / 2, and Σ from the consistent mass (solve()).
     Triplets et;
     for (Index k = 0; k < n; ++k) {
       if (nodes_[k].tip) continue;  // a single node has no two sides to compare
-      const double s = 0.5 / weights_[k];
+      const double s = consistent_ ? 0.5 : 0.5 / weights_[k];
       for (int c = 0; c < dim_; ++c) {
         et.emplace_back(dim_ * k + c, splitSpace_->dof(nodes_[k].plus, c), s);
         et.emplace_back(dim_ * k + c, splitSpace_->dof(nodes_[k].minus, c), -s);
@@ -278,6 +294,8 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
     Tf_.resize(0, splitSpace_->numDofs());
   }
 
+  if (consistent_ && !buildRecovery()) return FactorStatus::failed;
+
   const Eigen::SparseMatrix<double> K = unsplitAssembler_->stiffness();
   ++numAssemblies_;
   reduced_ = std::make_unique<ReducedSystem>(K, *dirichlet_);
@@ -299,7 +317,8 @@ void FractureSystem::setStep(const Eigen::VectorXd& loadSplit,
   slip_ = accumulatedSlip;
 }
 
-void FractureSystem::solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma) {
+void FractureSystem::solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma,
+                           bool recover) {
   FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before solving");
   const Eigen::VectorXd Bj = B_ * j;
   if (withLoads) {
@@ -314,6 +333,101 @@ void FractureSystem::solve(const Eigen::VectorXd& j, bool withLoads, Eigen::Vect
   sigma = Tx_ * x_ + Tj_ * j;
   if (withLoads) sigma += sigmaLoad_;
   lastJump_ = j;
+  if (consistent_ && recover) {
+    Eigen::MatrixXd s = sigma;
+    applyRecovery(s, false);
+    sigma = s.col(0);
+  }
+}
+
+// 3D P2. Nodal values Σ_j of a traction field Σ_h = Σ_j Σ_j φ_j on Γ give
+// (r⁺ − r⁻)_i / 2 = ∫_Γ Σ_h φ_i = Σ_j M_ij Σ_j, M the consistent mass of the P2 triangles.
+// Lumping M (A/12 per vertex, A/4 per midpoint) does not invert this: the rows of M sum to
+// ∫ φ_i = 0 at a vertex and A/3 at a midpoint, so a uniform Σ came back as 0 and 4/3 Σ. The
+// equations are solved instead, on the rows R where (r⁺ − r⁻)/2 is the traction's moment
+// alone: the free nodes. A tip has no two sides (r⁺ − r⁻ = 0 says nothing), and at a node
+// held on a Dirichlet patch each copy's residual carries its share of the reaction on ∂Ω,
+// which does not cancel in the difference. The values at those nodes are still unknowns of
+// the rows of R next to them: each is extended from R (the mean of the nodes of R on its
+// triangles), so that G = M_RR + M_R,¬R E is square. E's rows sum to one, hence a uniform Σ
+// solves G Σ_R = (r⁺ − r⁻)_R / 2 exactly at every node of R (a node of ¬R with no node of R on
+// its triangles has no M entry in a row of R: its column is dropped without harm). Held nodes
+// report the extended value; tips report zero, as before. G is not symmetric: it is factored
+// by LU, once, and Gᵀ for the adjoint.
+bool FractureSystem::buildRecovery() {
+  const Index n = size();
+  recovered_.clear();
+  std::vector<Index> row(static_cast<std::size_t>(n), -1);
+  for (Index k = 0; k < n; ++k)
+    if (mask_[k] > 0) {
+      row[k] = static_cast<Index>(recovered_.size());
+      recovered_.push_back(k);
+    }
+  const Index r = static_cast<Index>(recovered_.size());
+  std::vector<std::vector<Index>> trianglesOf(static_cast<std::size_t>(n));
+  for (std::size_t t = 0; t < faultTriangles_.size(); ++t)
+    for (Index k : faultTriangles_[t]) trianglesOf[k].push_back(static_cast<Index>(t));
+  Triplets full, out;  // E on every node; X: E without the tip rows (tips report zero)
+  for (Index k = 0; k < n; ++k) {
+    if (row[k] >= 0) {
+      full.emplace_back(k, row[k], 1.0);
+      out.emplace_back(k, row[k], 1.0);
+      continue;
+    }
+    std::vector<Index> from;
+    for (Index t : trianglesOf[k])
+      for (Index j : faultTriangles_[t])
+        if (row[j] >= 0) from.push_back(row[j]);
+    std::sort(from.begin(), from.end());
+    from.erase(std::unique(from.begin(), from.end()), from.end());
+    for (Index j : from) {
+      full.emplace_back(k, j, 1.0 / static_cast<double>(from.size()));
+      if (!nodes_[k].tip) out.emplace_back(k, j, 1.0 / static_cast<double>(from.size()));
+    }
+  }
+  extend_ = fromTriplets(n, r, out);
+  if (r == 0) return true;
+  // M on the control nodes: the ⁺ copies are the split-space nodes of the ⁺-side triangles.
+  std::vector<Index> facets, control(static_cast<std::size_t>(splitSpace_->numNodes()), -1);
+  for (const FractureGeometry& g : split_.fractures)
+    for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
+  for (Index k = 0; k < n; ++k) control[nodes_[k].plus] = k;
+  const Eigen::SparseMatrix<double> Msplit = splitAssembler_->consistentFacetMass(facets);
+  Triplets mt;
+  for (Index c = 0; c < Msplit.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(Msplit, c); it; ++it) {
+      const Index i = control[it.row()], j = control[it.col()];
+      FRICTION_ASSERT(i >= 0 && j >= 0, "the fault triangles' nodes are control nodes");
+      if (row[i] >= 0) mt.emplace_back(row[i], j, it.value());
+    }
+  Eigen::SparseMatrix<double> G = fromTriplets(r, n, mt) * fromTriplets(n, r, full);
+  G.makeCompressed();
+  massLU_.compute(G);
+  Eigen::SparseMatrix<double> Gt = G.transpose();
+  Gt.makeCompressed();
+  massLUt_.compute(Gt);
+  return massLU_.info() == Eigen::Success && massLUt_.info() == Eigen::Success;
+}
+
+void FractureSystem::applyRecovery(Eigen::MatrixXd& x, bool transpose) const {
+  const Index n = size(), r = static_cast<Index>(recovered_.size());
+  for (int c = 0; c < dim_; ++c) {
+    Eigen::MatrixXd part(n, x.cols());
+    for (Index i = 0; i < n; ++i) part.row(i) = x.row(dim_ * i + c);
+    Eigen::MatrixXd result;
+    if (r == 0) {
+      result = Eigen::MatrixXd::Zero(n, x.cols());
+    } else if (!transpose) {
+      Eigen::MatrixXd onR(r, x.cols());
+      for (Index a = 0; a < r; ++a) onR.row(a) = part.row(recovered_[a]);
+      result = extend_ * Eigen::MatrixXd(massLU_.solve(onR));
+    } else {
+      const Eigen::MatrixXd onR = massLUt_.solve(Eigen::MatrixXd(extend_.transpose() * part));
+      result = Eigen::MatrixXd::Zero(n, x.cols());
+      for (Index a = 0; a < r; ++a) result.row(recovered_[a]) = onR.row(a);
+    }
+    for (Index i = 0; i < n; ++i) x.row(dim_ * i + c) = result.row(i);
+  }
 }
 
 void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
@@ -378,6 +492,34 @@ void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
   }
 }
 
+void FractureSystem::adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
+                             Eigen::VectorXd& tauAdjoint) {
+  if (!consistent_) {
+    dual(qt, qn, tauAdjoint);
+    return;
+  }
+  // τ = Tᵀ X G⁻¹ R (M·S) mask T β (T: the frames): its W-adjoint is
+  // W⁻¹ mask Tᵀ (M·S) Rᵀ G⁻ᵀ Xᵀ T W q, M·S symmetric.
+  const Index n = size(), k = blockSize(), d = dim_;
+  FRICTION_ASSERT(qt.size() == k * n && qn.size() == n, "k tangential + 1 normal per node");
+  Eigen::MatrixXd y(d * n, 1);
+  for (Index i = 0; i < n; ++i) {
+    const ControlNode& v = nodes_[i];
+    for (int a = 0; a < d; ++a) {
+      double ya = qt[k * i] * v.tangent[0][a];
+      for (int c = 1; c < k; ++c) ya += qt[k * i + c] * v.tangent[c][a];
+      y(d * i + a, 0) = weights_[i] * (ya + qn[i] * v.normal[a]);
+    }
+  }
+  applyRecovery(y, true);
+  Eigen::VectorXd sigma;
+  solve(y.col(0), false, sigma, false);
+  tauAdjoint.resize(k * n);
+  for (Index i = 0; i < n; ++i)
+    for (int c = 0; c < k; ++c)
+      tauAdjoint[k * i + c] = mask_[i] * project(sigma, i, nodes_[i].tangent[c]) / weights_[i];
+}
+
 InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
   FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before the interface operator");
   if (method == InterfaceMethod::dualSolves) return SlipResponse::interfaceOperator(method);
@@ -415,12 +557,22 @@ InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
       for (int e = 1; e < d; ++e) col += MS.col(d * a + e) * t[e];
       columns.col(k * a + c) = col;
     }
+  // 3D P2: S = X G⁻¹ R (M·S), on all d·n rows, instead of the division by w_i.
+  Eigen::MatrixXd recovered;
+  if (consistent_) {
+    recovered.setZero(d * n, k * m);
+    for (Index b = 0; b < m; ++b)
+      for (int e = 0; e < d; ++e) recovered.row(d * node[b] + e) = columns.row(d * b + e);
+    applyRecovery(recovered, false);
+  }
   Eigen::VectorXd s(d);
   for (Index a = 0; a < k * m; ++a)  // column by column: both matrices are column-major
     for (Index b = 0; b < m; ++b) {
       const ControlNode& v = nodes_[node[b]];
       const Index col = k * node[a / k] + a % k;
-      for (int e = 0; e < d; ++e) s[e] = columns(d * b + e, a) / weights_[node[b]];
+      for (int e = 0; e < d; ++e)
+        s[e] =
+            consistent_ ? recovered(d * node[b] + e, a) : columns(d * b + e, a) / weights_[node[b]];
       for (int r = 0; r < k; ++r) op.Stt(k * node[b] + r, col) = project(s, 0, v.tangent[r]);
       op.Snt(node[b], col) = project(s, 0, v.normal);
     }

@@ -8,7 +8,8 @@
 //    back-substitution.
 //  * Traction recovery (53): with r = K_split u_split − f_split, Σ = M⁻¹(r⁺ − r⁻)/2 at the
 //    control nodes (M the lumped mass of Γ), σ_n = Σ·n_Γ, τ_c = Σ·t_c on the node's tangent
-//    basis t₁ … t_k (k = d − 1; 2D: t₁ = t_Γ).
+//    basis t₁ … t_k (k = d − 1; 2D: t₁ = t_Γ). 3D P2: M is the consistent mass of Γ instead
+//    (the lumped weights are not the integrals of the P2 shape functions; see factor()).
 //  * The imposed jump at a node is Σ_c (s + β)_c t_c (primal) or Σ_c qt_c t_c + qn n_Γ (dual):
 //    d jump dofs per node, from k tangential components and one normal.
 // Control nodes: 2D, the fracture vertices (P1) and, for P2, also the midpoints of the
@@ -25,6 +26,7 @@
 #include <vector>
 
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 
 #include "friction/control/SlipResponse.hpp"
 #include "friction/fe/DirichletConditions.hpp"
@@ -106,13 +108,21 @@ class FractureSystem : public SlipResponse {
   void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau, Eigen::VectorXd& sigmaN) override;
   void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
             Eigen::VectorXd* sigmaNDual = nullptr) override;
+  /// 3D P2: with the consistent recovery S = M_c⁻¹ (M·S), and W S is not symmetric (W =
+  /// weights()): the adjoint applies M_c⁻ᵀ W to the input before the symmetric M·S. Else the
+  /// dual solve.
+  void adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
+               Eigen::VectorXd& tauAdjoint) override;
+  /// True where Σ is recovered with the consistent mass of Γ (3D P2).
+  bool consistentRecovery() const { return consistent_; }
   /// factorisation: the complement the factorisation delivered (factor() with
   /// withInterfaceOperator), else as blockSolves; blockSolves: C − Bᵀ K⁻¹ B by blocks of
   /// right-hand sides; dualSolves: one dual solve per node and tangential component
   /// (SlipResponse's default).
   InterfaceOperator interfaceOperator(InterfaceMethod method) override;
   /// M·S on the jump dofs (d per node that is not a tip, x, y (, z) components, node order),
-  /// with the dofs of jumpDofs(): symmetric [N/m]. Empty unless factor() formed it.
+  /// with the dofs of jumpDofs(): symmetric [N/m]. Empty unless factor() formed it. (3D P2:
+  /// the M here is the consistent recovery operator of factor(), not weights().)
   const Eigen::MatrixXd& jumpOperator() const { return factor_->schurComplement(); }
   const std::vector<Index>& jumpDofs() const { return jumpDofs_; }
 
@@ -131,8 +141,13 @@ class FractureSystem : public SlipResponse {
   ControlNode vertexNode(int f, const FractureGeometry& g, Index i) const;
   void controlNodes2D(int degree);
   void controlNodes3D(int degree);
-  // x and Σ (d per control node, interleaved) for jump vector j (d per control node).
-  void solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma);
+  // x and Σ (d per control node, interleaved) for jump vector j (d per control node); with
+  // recover false (3D P2), Σ̃ = (r⁺ − r⁻)/2 instead, before the mass solve.
+  void solve(const Eigen::VectorXd& j, bool withLoads, Eigen::VectorXd& sigma, bool recover = true);
+  // 3D P2: the consistent recovery operator on the columns of x (d·n rows, interleaved):
+  // Σ = X G⁻¹ Σ̃_R per component (transpose: Σ̃ = Rᵀ G⁻ᵀ Xᵀ Σ), see factor().
+  void applyRecovery(Eigen::MatrixXd& x, bool transpose) const;
+  bool buildRecovery();
   // Σ·direction at a node of sigma (d entries per node), summed in component order.
   double project(const Eigen::VectorXd& sigma, Index node, const Eigen::Vector3d& direction) const;
 
@@ -162,6 +177,14 @@ class FractureSystem : public SlipResponse {
   Eigen::VectorXd x_, lastJump_, lastRhs_, lastFree_;
   Eigen::VectorXd offsetSigmaN_, offsetTau_;
   int numAssemblies_ = 0;
+
+  // 3D P2 recovery (factor()): R the recovered nodes (free: neither tip nor held), G the
+  // consistent mass on R with the other nodes' columns extended from R, X: Σ_R to all nodes.
+  bool consistent_ = false;
+  std::vector<std::array<Index, 6>> faultTriangles_;  ///< control nodes of each P2 fault triangle
+  std::vector<Index> recovered_;                      ///< R: control node of each row of G
+  Eigen::SparseMatrix<double> extend_;                ///< X: n × |R|
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> massLU_, massLUt_;  ///< G and Gᵀ
 };
 
 }  // namespace friction
