@@ -139,14 +139,6 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
 
   const Dictionary sol = readCaseFile(caseDir, "system/frictionSolution");
   order_ = static_cast<int>(sol.getIntOr("elementOrder", 1, {1, 2}));
-  // The traction of a P2 fault triangle cannot be recovered node by node with positive
-  // lumped weights: its vertex shape functions integrate to zero, so a uniform traction comes
-  // out as 0 at the vertices and 4/3 of itself at the mid-edge nodes. Refused until the
-  // recovery uses the consistent mass of the fault.
-  if (order_ == 2 && split_.mesh.dim == 3)
-    sol.fail("elementOrder",
-             "key 'elementOrder': 2 on a 3D mesh is not available yet (the fault traction of P2 "
-             "triangles is not recovered consistently); use elementOrder 1");
   linearSolver_ = sol.getChoiceOr("linearSolver", SparseFactor::backendNames(), "cholmod");
   const Dictionary& control = sol.subDict("control");
   if (control.alternative({{"gamma"}, {"gammaRelative"}}, 1) == 0) {
