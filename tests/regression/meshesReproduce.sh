@@ -17,6 +17,12 @@ cp "$src/cases/paperBenchmark/constant/mesh/square.edp" "$work/"
 cmp -s "$work/square.msh" "$src/cases/paperBenchmark/constant/mesh/square.msh" ||
   fail "cases/paperBenchmark/constant/mesh/square.msh differs from what square.edp makes; run its Allmesh"
 
+cp "$src/cases/strikeSlipFault/constant/mesh/block.edp" "$work/"
+(cd "$work" && FreeFem++ -nw -ns -v 0 block.edp -out block.mesh >freefem3d.log 2>&1) ||
+  fail "FreeFem++ failed: $(cat "$work/freefem3d.log")"
+cmp -s "$work/block.mesh" "$src/cases/strikeSlipFault/constant/mesh/block.mesh" ||
+  fail "cases/strikeSlipFault/constant/mesh/block.mesh differs from what block.edp makes; run its Allmesh"
+
 cp "$src/cases/inclinedCrack/constant/mesh/inclinedCrack.geo" "$work/"
 (cd "$work" && gmsh -2 -format msh41 inclinedCrack.geo -o inclinedCrack.msh >gmsh.log 2>&1) ||
   fail "gmsh failed: $(tail "$work/gmsh.log")"
