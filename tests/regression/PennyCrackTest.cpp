@@ -40,9 +40,11 @@ std::string pennyError(const Case& c, const std::string& options) {
   return out;
 }
 
-/// The case at disc mesh size h (Allmesh -h; the committed mesh is h = a/8), solved.
-std::string solvePenny(Case& c, const std::string& h) {
+/// The case at disc mesh size h (Allmesh -h; the committed mesh is h = a/8), solved with
+/// elements of `order`.
+std::string solvePenny(Case& c, const std::string& h, int order = 1) {
   if (h != "0.125") c.remesh("-h " + h);
+  if (order == 2) c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
   const int rc = c.solve();
   INFO(c.log());
   REQUIRE(rc == 0);
@@ -76,6 +78,17 @@ TEST_CASE("penny crack, P1: the slip converges to the analytic slip", "[regressi
   CHECK(e8 <= 0.25);
   CHECK(e16 <= 0.145);
   CHECK(e8 / e16 >= 1.5);
+}
+
+TEST_CASE("penny crack, P2: three times more accurate than P1 on the same mesh",
+          "[regression][3d][penny]") {
+  Case c("pennyCrack", "penny-P2-h8");
+  const double e = pennyValue(solvePenny(c, "0.125", 2), "relL2Error");
+  // Measured 0.0722 at h = a/8 (P1: 0.2235); the fault tractions of P2 triangles come from
+  // the consistent mass of Γ (docs/method.md §4). The integrated error of even the exact
+  // nodal values is 0.015 here (the √ at the rim): P2 is not at that floor yet.
+  CHECK(e <= 0.08);
+  CHECK(e >= 0.015);
 }
 
 TEST_CASE("penny crack, P1 at h = a/32 (long: 90 s, 5 GB)", "[.][pennyLong]") {

@@ -307,17 +307,47 @@ TEST_CASE("3D restart: stopped at 0.5 and continued, every file as the uninterru
   }
 }
 
-TEST_CASE("3D with elementOrder 2 is refused with the reason, nothing written",
-          "[regression][3d][bad]") {
-  // P2 fault triangles: a uniform traction would be recovered as 0 at the vertices and 4/3 of
-  // itself at the mid-edge nodes (lumped weights A/12, A/4 against ∫φ = 0, A/3).
+TEST_CASE("3D P2: Coulomb node by node, no spurious opening, sigma_n close to P1's",
+          "[regression][3d][p2]") {
+  // P2 fault triangles recover their tractions with the consistent mass of Γ (lumping would
+  // give a uniform traction back as 0 at the vertices and 4/3 of it at the mid-edge nodes:
+  // vertices 'open' under compression, docs/method.md §4).
+  Case p1(kCase, "3d-P1-reference");
+  REQUIRE(p1.solve() == 0);
+  const Table a = p1.namedTable("1", "fault");
   Case c(kCase, "3d-P2");
   c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
-  CHECK(c.solve() == 1);
-  CHECK_THAT(c.log(), Catch::Contains("frictionSolution") &&
-                          Catch::Contains("key 'elementOrder': 2 on a 3D mesh is not available"));
-  CHECK_FALSE(fs::exists(c.dir() / "0.25"));
-  CHECK_FALSE(fs::exists(c.dir() / "VTK"));
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  const Table t = c.namedTable("1", "fault");
+  REQUIRE(t.rows.size() > a.rows.size());  // the mid-edge nodes
+  CHECK(count(t, "open") == 0);
+  int slipping = 0;
+  std::vector<double> differences;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    if (t.state[i] == "tip") continue;
+    INFO("row " << i);
+    const double sn = t.at(i, "sigmaN"), tau = t.at(i, "tauMagnitude");
+    CHECK(sn < 0);
+    if (t.state[i] == "slip") {
+      ++slipping;
+      CHECK(tau == Approx(0.2 * -sn).epsilon(1e-7));
+    }
+    // The same vertex in the P1 run (mid-edge nodes have none).
+    for (std::size_t j = 0; j < a.rows.size(); ++j)
+      if (a.state[j] != "tip" && std::abs(a.at(j, "x") - t.at(i, "x")) < 1e-9 &&
+          std::abs(a.at(j, "y") - t.at(i, "y")) < 1e-9)
+        differences.push_back(std::abs(sn - a.at(j, "sigmaN")) / std::abs(a.at(j, "sigmaN")));
+  }
+  CHECK(slipping >= 20);
+  REQUIRE(differences.size() >= 10);
+  // Two discretisations of one σ_n: measured median 4.5 % over the 24 shared vertices on this
+  // coarse mesh (at most 12 %, at nodes next to the tip line, where both are least accurate);
+  // the lumped recovery was 100 % off at every vertex.
+  std::sort(differences.begin(), differences.end());
+  CHECK(differences[differences.size() / 2] <= 0.08);
+  CHECK(differences.back() <= 0.3);
 }
 
 TEST_CASE("3D invariance: rotated, mirrored or renumbered, the slip is the mapped slip",
