@@ -87,10 +87,10 @@ Table solve3D(int hDivisor) {
 
 struct Agreement {
   double slip = 0;  ///< max over layers of ‖v3 − v2‖_L²(Γ) / ‖v2‖_L²(Γ), slip vectors
-  double sigmaN = 0;                    ///< the same for σ_n
-  double tau = 0;                       ///< the same for |τ|
-  double slipZ = 0;                     ///< max |slipZ| / max |slip2D|
-  double analytic3 = 0, analytic2 = 0;  ///< relative L²(Γ) slip error against the formula
+  double sigmaN = 0;                       ///< the same for σ_n
+  double tau = 0;                          ///< the same for |τ|
+  double slipZFaces = 0, slipZInside = 0;  ///< max |slipZ| / max |slip2D|: z faces, inside
+  double analytic3 = 0, analytic2 = 0;     ///< relative L²(Γ) slip error against the formula
   int layers = 0, states = 0, compared = 0;
 };
 
@@ -135,7 +135,9 @@ Agreement compare(const std::vector<Row>& two, const Table& three) {
       ds += w[j] * (std::pow(three.at(i, "slipX") - ex, 2) +
                     std::pow(three.at(i, "slipY") - ey, 2) + std::pow(three.at(i, "slipZ"), 2));
       ns += w[j] * two[j].slip * two[j].slip;
-      a.slipZ = std::max(a.slipZ, std::abs(three.at(i, "slipZ")) / slipMax);
+      double& slipZ =
+          z == layer.begin()->first || z == layer.rbegin()->first ? a.slipZFaces : a.slipZInside;
+      slipZ = std::max(slipZ, std::abs(three.at(i, "slipZ")) / slipMax);
       const double ana = analyticSlip(xiOf(x, y));
       da += w[j] * std::pow(three.at(i, "slipMagnitude") - ana, 2);
       na += w[j] * ana * ana;
@@ -157,9 +159,15 @@ Agreement compare(const std::vector<Row>& two, const Table& three) {
 
 // [!shouldfail]: a fracture node on a patch that fixes any displacement component holds its
 // whole jump at zero (README, fracture node states: "every node on a Dirichlet patch"), so
-// the rollers u_z = 0 hold the slip of every crack node on the z faces, and the 3D solution is
-// not the plane-strain one. Remove the tag when a roller holds only the jump components it
-// fixes; then set the tolerances below from the measured agreement.
+// the rollers u_z = 0 hold both slip components of every crack node on the z faces: the
+// slip there is 0 and the 3D solution is not the plane-strain one (relative difference 1).
+// Remove the tag when a roller holds only the jump components it fixes (here t1 = e_z).
+//
+// The tolerances are 1.5 times what a per-component hold gives (measured with that change
+// applied to the library, not committed): slip difference 0.0168 (a/8), 0.0077 (a/16),
+// 0.0037 (a/32), order 1.1; sigma_n and |tau| 0.024, 0.020, 0.017 (the nodal tractions
+// next to the tips converge slowly in both); max |slipZ| / max |slip| 1.3e-3, 7.8e-4
+// inside, 0 on the z faces; against the formula 3D 0.120, 0.065, 2D 0.112, 0.062.
 TEST_CASE("3D: the inclined crack extruded in z agrees with the 2D solver on the base mesh",
           "[regression][3d][!shouldfail]") {
   std::map<int, Agreement> at;
@@ -170,20 +178,26 @@ TEST_CASE("3D: the inclined crack extruded in z agrees with the 2D solver on the
     at[d] = a;
     WARN("h = a/" << d << ": " << a.layers << " layers, " << a.compared
                   << " nodes; relative L2 difference 3D - 2D: slip " << a.slip << ", sigmaN "
-                  << a.sigmaN << ", |tau| " << a.tau << "; max |slipZ| / max |slip| " << a.slipZ
-                  << "; states equal " << a.states << "/" << a.compared
-                  << "; relative L2 error against the formula: 3D " << a.analytic3 << ", 2D "
-                  << a.analytic2);
+                  << a.sigmaN << ", |tau| " << a.tau << "; max |slipZ| / max |slip|: z faces "
+                  << a.slipZFaces << ", inside " << a.slipZInside << "; states equal " << a.states
+                  << "/" << a.compared << "; relative L2 error against the formula: 3D "
+                  << a.analytic3 << ", 2D " << a.analytic2);
+    // Two layers of thickness h: the z faces and one layer inside.
     CHECK(a.layers == 3);
-    // The 2D reference on this mesh meets the inclined-crack test's bound (2.5 h/a).
+    // Both within the inclined-crack test's bound of the formula (2.5 h/a).
     CHECK(a.analytic2 <= 2.5 / d);
-    // A-priori until measured (see the tag): both solutions within 2.5 h/a of the formula.
     CHECK(a.analytic3 <= 2.5 / d);
-    CHECK(a.slip <= 5.0 / d);
-    CHECK(a.sigmaN <= 5.0 / d);
-    CHECK(a.tau <= 5.0 / d);
+    // Discretisation error: slip to 0.2 h/a (measured 0.13 h/a), tractions to 3 %.
+    CHECK(a.slip <= 0.2 / d);
+    CHECK(a.sigmaN <= 0.03);
+    CHECK(a.tau <= 0.03);
     CHECK(a.states == a.compared);
+    // u_z = 0 on both copies on the z faces: no z slip there at all. Inside, the cut of the
+    // prisms is not symmetric in z, so a small z slip of the discretisation's size remains.
+    CHECK(a.slipZFaces == 0.0);
+    CHECK(a.slipZInside <= 2e-3);
   }
-  // Discretisation error, not a modelling one: the difference shrinks with h.
-  CHECK(at[16].slip < at[8].slip);
+  // Discretisation error, not a modelling one: the difference shrinks with h at order >= 0.75
+  // (as the inclined-crack test requires of the error itself; measured 1.1).
+  CHECK(at[16].slip <= std::pow(2.0, -0.75) * at[8].slip);
 }
