@@ -27,6 +27,16 @@ inline std::string readText(const fs::path& p) {
 
 inline void writeText(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 
+/// The "(x y z)" value lines of an OpenFOAM field file (e.g. <time>/D), in file order.
+inline std::vector<std::string> vectorLines(const std::string& text) {
+  std::vector<std::string> v;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);)
+    if (!l.empty() && l[0] == '(' && l.back() == ')' && l.find(' ') != std::string::npos)
+      v.push_back(l);
+  return v;
+}
+
 /// Run a shell command; output goes to logFile. Returns the exit status.
 inline int run(const std::string& command, const fs::path& logFile) {
   const std::string full = command + " > '" + logFile.string() + "' 2>&1";

@@ -184,16 +184,8 @@ TEST_CASE("3D known answers: mu_f = 2 sticks everywhere, equal to the unsplit so
   CHECK(count(t, "stick") > 0);
   // The unsplit points come first in the split mesh: their displacement lines agree to the
   // last digit with the unsplit solve (same factor, same right-hand side, a zero jump).
-  const auto lines = [](const std::string& s) {
-    std::vector<std::string> v;
-    std::istringstream in(s);
-    for (std::string l; std::getline(in, l);)
-      if (!l.empty() && l[0] == '(' && l.back() == ')' && l.find(' ') != std::string::npos)
-        v.push_back(l);
-    return v;
-  };
-  const auto a = lines(readText(plain.dir() / "1" / "D"));
-  const auto b = lines(readText(c.dir() / "1" / "D"));
+  const auto a = vectorLines(readText(plain.dir() / "1" / "D"));
+  const auto b = vectorLines(readText(c.dir() / "1" / "D"));
   REQUIRE(a.size() > 500);
   REQUIRE(b.size() > a.size());
   int differ = 0;

@@ -203,15 +203,7 @@ TEST_CASE("known answers: no slip with mu_f = 0.4 and 2, equal to the unsplit so
     // points' displacements are identical text, and the copies repeat their origin's values
     // (checked by the unit tests), so the first lines of the fields agree to the last digit.
     const std::string d = readText(c.dir() / "1" / "D");
-    const auto lines = [](const std::string& s) {
-      std::vector<std::string> v;
-      std::istringstream in(s);
-      for (std::string l; std::getline(in, l);)
-        if (!l.empty() && l[0] == '(' && l.back() == ')' && l.find(' ') != std::string::npos)
-          v.push_back(l);
-      return v;
-    };
-    const auto a = lines(ref), b = lines(d);
+    const auto a = vectorLines(ref), b = vectorLines(d);
     REQUIRE(a.size() > 100);
     REQUIRE(b.size() > a.size());
     int differ = 0;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../regression/CaseRunner.hpp"
+#include "StabilityChecks.hpp"
 
 using namespace friction::regression;
 
@@ -127,17 +128,6 @@ void useGridMesh(Case& c, const std::vector<double>& zs, int n, bool toRight = f
 
 // ---- the checks every run gets ----
 
-std::map<std::string, std::string> readStatus(const fs::path& file) {
-  std::map<std::string, std::string> m;
-  std::istringstream in(readText(file));
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream s(line);
-    std::string k, v;
-    if (s >> k >> v && !v.empty() && v.back() == ';') m[k] = v.substr(0, v.size() - 1);
-  }
-  return m;
-}
-
 struct RunSummary {
   std::vector<std::string> times, statuses;
   std::vector<double> relResidual;
@@ -163,28 +153,8 @@ RunSummary checkRun(Case& c, int exitCode) {
   for (const auto& [time, name] : folders) {
     const fs::path dir = c.dir() / name;
     INFO("time folder " << name);
-    // No NaN or Inf written, except a tip row's traction columns (sigmaN .. residual).
-    for (const auto& f : fs::recursive_directory_iterator(dir)) {
-      if (!f.is_regular_file()) continue;
-      INFO(f.path().string());
-      std::istringstream in(readText(f.path()));
-      for (std::string line; std::getline(in, line);) {
-        std::vector<std::string> items;
-        std::istringstream s(line);
-        for (std::string item; s >> item;) items.push_back(item);
-        const bool tipRow =
-            f.path().extension() == ".dat" && items.size() == 21 && items[20] == "tip";
-        INFO(line);
-        for (std::size_t i = 0; i < items.size(); ++i) {
-          if (tipRow && i >= 14 && i <= 19) {
-            CHECK(items[i] == "nan");
-            continue;
-          }
-          for (const char* bad : {"nan", "NaN", "inf", "Inf"})
-            CHECK(items[i].find(bad) == std::string::npos);
-        }
-      }
-    }
+    // No NaN or Inf written, except a tip row's traction columns.
+    checkWrittenFinite(dir, 21, 14, 19);
     const auto status = readStatus(dir / "solverStatus");
     REQUIRE(status.count("status"));
     REQUIRE(status.count("relResidual"));

@@ -19,6 +19,7 @@
 #include <random>
 
 #include "../regression/CaseRunner.hpp"
+#include "StabilityChecks.hpp"
 #include "friction/mesh/MeshReader.hpp"
 
 using namespace friction::regression;
@@ -99,18 +100,6 @@ struct RunSummary {
   std::vector<std::string> statuses;
 };
 
-// Fields of a time folder's solverStatus ("key value;" lines).
-std::map<std::string, std::string> readStatus(const fs::path& file) {
-  std::map<std::string, std::string> m;
-  std::istringstream in(readText(file));
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream s(line);
-    std::string k, v;
-    if (s >> k >> v && !v.empty() && v.back() == ';') m[k] = v.substr(0, v.size() - 1);
-  }
-  return m;
-}
-
 RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exitCode) {
   INFO(c.log());
   // 0: converged; 3: some step did not converge — then the log and status must say so.
@@ -123,29 +112,8 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     if (!e.is_directory() || name == "0" || *end != '\0' || name[0] == '.') continue;
     ++sum.steps;
     INFO("time folder " << name);
-    // No NaN or Inf anywhere in what was written, except the traction columns of a tip's
-    // row (sigmaN tau ST residual: a tip has no traction, written as nan).
-    for (const auto& f : fs::recursive_directory_iterator(e.path())) {
-      if (!f.is_regular_file()) continue;
-      INFO(f.path().string());
-      std::istringstream in(readText(f.path()));
-      for (std::string line; std::getline(in, line);) {
-        std::vector<std::string> items;
-        std::istringstream s(line);
-        for (std::string item; s >> item;) items.push_back(item);
-        const bool tipRow =
-            f.path().extension() == ".dat" && items.size() == 10 && items[9] == "tip";
-        INFO(line);
-        for (std::size_t i = 0; i < items.size(); ++i) {
-          if (tipRow && i >= 5 && i <= 8) {
-            CHECK(items[i] == "nan");
-            continue;
-          }
-          for (const char* bad : {"nan", "NaN", "inf", "Inf"})
-            CHECK(items[i].find(bad) == std::string::npos);
-        }
-      }
-    }
+    // No NaN or Inf written, except a tip row's traction columns.
+    checkWrittenFinite(e.path(), 10, 5, 8);
     const auto status = readStatus(e.path() / "solverStatus");
     REQUIRE(status.count("status"));
     sum.statuses.push_back(status.at("status"));

@@ -1,0 +1,56 @@
+// Checks shared by the 2D and 3D stability suites: the fields of a solverStatus file, and
+// "nothing non-finite written" over a time folder.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../regression/CaseRunner.hpp"
+
+namespace friction::regression {
+
+/// Fields of a time folder's solverStatus ("key value;" lines).
+inline std::map<std::string, std::string> readStatus(const fs::path& file) {
+  std::map<std::string, std::string> m;
+  std::istringstream in(readText(file));
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream s(line);
+    std::string k, v;
+    if (s >> k >> v && !v.empty() && v.back() == ';') m[k] = v.substr(0, v.size() - 1);
+  }
+  return m;
+}
+
+/// No NaN or Inf in any file of the time folder `dir`, except the traction columns of a tip's
+/// row in a fracture table (a tip has no traction, written as nan): rows of `columns` items
+/// ending in "tip", items firstNan … lastNan.
+inline void checkWrittenFinite(const fs::path& dir, std::size_t columns, std::size_t firstNan,
+                               std::size_t lastNan) {
+  for (const auto& f : fs::recursive_directory_iterator(dir)) {
+    if (!f.is_regular_file()) continue;
+    INFO(f.path().string());
+    std::istringstream in(readText(f.path()));
+    for (std::string line; std::getline(in, line);) {
+      std::vector<std::string> items;
+      std::istringstream s(line);
+      for (std::string item; s >> item;) items.push_back(item);
+      const bool tipRow =
+          f.path().extension() == ".dat" && items.size() == columns && items.back() == "tip";
+      INFO(line);
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        if (tipRow && i >= firstNan && i <= lastNan) {
+          CHECK(items[i] == "nan");
+          continue;
+        }
+        for (const char* bad : {"nan", "NaN", "inf", "Inf"})
+          CHECK(items[i].find(bad) == std::string::npos);
+      }
+    }
+  }
+}
+
+}  // namespace friction::regression
