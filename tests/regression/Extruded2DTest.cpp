@@ -157,19 +157,16 @@ Agreement compare(const std::vector<Row>& two, const Table& three) {
 
 }  // namespace
 
-// [!shouldfail]: a fracture node on a patch that fixes any displacement component holds its
-// whole jump at zero (README, fracture node states: "every node on a Dirichlet patch"), so
-// the rollers u_z = 0 hold both slip components of every crack node on the z faces: the
-// slip there is 0 and the 3D solution is not the plane-strain one (relative difference 1).
-// Remove the tag when a roller holds only the jump components it fixes (here t1 = e_z).
+// A roller holds only the jump component it fixes: on the z faces the crack's nodes keep
+// their slip along the in-plane tangent and the slip's z component is held at zero
+// (README, fracture node states).
 //
-// The tolerances are 1.5 times what a per-component hold gives (measured with that change
-// applied to the library, not committed): slip difference 0.0168 (a/8), 0.0077 (a/16),
-// 0.0037 (a/32), order 1.1; sigma_n and |tau| 0.024, 0.020, 0.017 (the nodal tractions
-// next to the tips converge slowly in both); max |slipZ| / max |slip| 1.3e-3, 7.8e-4
-// inside, 0 on the z faces; against the formula 3D 0.120, 0.065, 2D 0.112, 0.062.
+// The tolerances are about 1.5 times the measured values: slip difference 0.0168 (a/8),
+// 0.0077 (a/16), order 1.1; sigma_n and |tau| 0.024, 0.020 (the nodal tractions next to the
+// tips converge slowly in both); max |slipZ| / max |slip| 1.3e-3, 7.8e-4 inside, 0 on the z
+// faces; against the formula 3D 0.120, 0.065, 2D 0.112, 0.062.
 TEST_CASE("3D: the inclined crack extruded in z agrees with the 2D solver on the base mesh",
-          "[regression][3d][!shouldfail]") {
+          "[regression][3d]") {
   std::map<int, Agreement> at;
   for (int d : {8, 16}) {
     const std::vector<Row> two = solve2D(d);

@@ -254,6 +254,10 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   if (int held = system_->numHeldOnDirichlet())
     log << "Note: " << held
         << " fracture node(s) lie on a Dirichlet patch: their jump is held at zero\n";
+  if (int partly = system_->numPartlyHeldOnDirichlet())
+    log << "Note: " << partly
+        << " fracture node(s) lie on a roller patch: their jump is held along the fixed "
+           "direction only\n";
   log << "Assemblies: " << system_->numAssemblies() << " stiffness matri"
       << (system_->numAssemblies() == 1 ? "x" : "ces")
       << (n == 0 ? " (no fracture: no split stiffness, no control loop)" : "") << "\n";

@@ -30,9 +30,10 @@ ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen
   const Eigen::Index n = response_.size(), k = response_.blockSize();
   componentMask_.resize(k * n);
   componentWeights_.resize(k * n);
+  const Eigen::VectorXd components = response_.componentMask();
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index c = 0; c < k; ++c) {
-      componentMask_[k * i + c] = response_.freeMask()[i];
+      componentMask_[k * i + c] = components[k * i + c];
       componentWeights_[k * i + c] = response_.weights()[i];
     }
 }

@@ -75,7 +75,7 @@ class ControlProblem {
   int blockSize() const { return response_.blockSize(); }
   /// 1 where the node's jump is free, per node (n).
   const Eigen::VectorXd& freeMask() const { return response_.freeMask(); }
-  /// freeMask repeated over each node's k components (k·n).
+  /// 1 where a component of β is an unknown (k·n): the response's componentMask.
   const Eigen::VectorXd& componentMask() const { return componentMask_; }
   const Eigen::VectorXd& mu() const { return mu_; }
   double gamma() const { return gamma_; }
@@ -90,7 +90,7 @@ class ControlProblem {
 
   SlipResponse& response_;
   Eigen::VectorXd mu_, cohesion_;
-  Eigen::VectorXd componentMask_, componentWeights_;  ///< freeMask, weights repeated k times
+  Eigen::VectorXd componentMask_, componentWeights_;  ///< componentMask; weights repeated k times
   double gamma_, zeta_;
   GradientKind gradientKind_;
   long numPrimal_ = 0, numDual_ = 0;

@@ -464,6 +464,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
     for (Eigen::Index i = 0; i < n; ++i) {
       if (mask[i] == 0) continue;
       for (Eigen::Index c = 0; c < k; ++c) {
+        if (p.componentMask()[k * i + c] == 0) continue;  // held by a roller: β stays 0
         if (s.node[i].state == SlipState::stick)
           dir[k * i + c] = -s.beta[k * i + c];
         else

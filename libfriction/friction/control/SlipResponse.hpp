@@ -46,6 +46,16 @@ class SlipResponse {
   virtual const Eigen::VectorXd& weights() const = 0;
   /// 1 where β is an unknown, 0 where the jump is held (tips, nodes on Dirichlet patches).
   virtual const Eigen::VectorXd& freeMask() const = 0;
+  /// Per tangential component (k·n): 1 where that component of β is an unknown. A roller
+  /// holds only the jump's components it fixes, so a node may be free (freeMask 1) with some
+  /// components held. This default holds a node's components together.
+  virtual Eigen::VectorXd componentMask() const {
+    const Eigen::Index n = size(), k = blockSize();
+    Eigen::VectorXd m(k * n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (Eigen::Index c = 0; c < k; ++c) m[k * i + c] = freeMask()[i];
+    return m;
+  }
 
   /// Primal solve: this step's loads, jump Σ_c (s_n + β)_c t_c. Returns τ (k·n) and σ_n (n)
   /// [Pa].

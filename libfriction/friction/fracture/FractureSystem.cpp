@@ -225,23 +225,58 @@ int FractureSystem::numHeldOnDirichlet() const {
   return c;
 }
 
+int FractureSystem::numPartlyHeldOnDirichlet() const {
+  int c = 0;
+  for (const auto& v : nodes_) c += v.heldComponent >= 0;
+  return c;
+}
+
 FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfaceOperator) {
   const Index n = size();
-  // Jumps are held where a copy's unsplit node carries a Dirichlet condition: a jump there
-  // would move one side off its prescribed value.
+  // A Dirichlet condition at a copy's unsplit node fixing the Cartesian component c forbids
+  // the jump's component along e_c: the jump, tangential, is held along the projection of e_c
+  // on the tangent plane (none if e_c is along n_Γ). Constraint directions spanning the
+  // tangent plane (2D: any) hold the whole jump; in 3D directions all along one p (rollers)
+  // hold only that component: the basis is turned so that t₂ ∥ p and the slip goes on along
+  // t₁.
+  const int kb = blockSize();
   mask_ = Eigen::VectorXd::Ones(n);
+  componentMask_ = Eigen::VectorXd::Ones(kb * n);
   {
     // Row i of P holds one entry, at the unsplit dof of split dof i.
     const Eigen::SparseMatrix<double, Eigen::RowMajor> Pr = P_;
-    for (Index k = 0; k < n; ++k) {
-      ControlNode& v = nodes_[k];
+    for (Index i = 0; i < n; ++i) {
+      ControlNode& v = nodes_[i];
       v.onDirichlet = false;
+      v.heldComponent = -1;
+      std::vector<Eigen::Vector3d> held;  // unit constraint directions in the tangent plane
       for (int c = 0; c < dim_; ++c) {
         Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Pr,
                                                                        splitSpace_->dof(v.plus, c));
-        if (it && dirichlet_->isFixed(static_cast<Index>(it.col()))) v.onDirichlet = true;
+        if (!it || !dirichlet_->isFixed(static_cast<Index>(it.col()))) continue;
+        Eigen::Vector3d p = Eigen::Vector3d::Zero();
+        p[c] = 1;
+        p -= p.dot(v.normal) * v.normal;
+        if (p.norm() >= 1e-12) held.push_back(p.normalized());
       }
-      if (v.tip || v.onDirichlet) mask_[k] = 0;
+      bool spanning = dim_ == 2 && !held.empty();
+      for (std::size_t a = 1; a < held.size() && !spanning; ++a)
+        spanning = held[a].cross(held[0]).norm() >= 1e-12;
+      if (spanning) {
+        v.onDirichlet = true;
+      } else if (!held.empty() && !v.tip) {
+        for (int c = 0; c < kb && v.heldComponent < 0; ++c)
+          if (std::abs(v.tangent[c].dot(held[0])) >= 1 - 1e-12) v.heldComponent = c;
+        if (v.heldComponent < 0) {
+          setTangentBasis(i, held[0].cross(v.normal).normalized());
+          v.heldComponent = 1;
+        }
+        componentMask_[kb * i + v.heldComponent] = 0;
+      }
+      if (v.tip || v.onDirichlet) {
+        mask_[i] = 0;
+        for (int c = 0; c < kb; ++c) componentMask_[kb * i + c] = 0;
+      }
     }
   }
 
@@ -359,7 +394,7 @@ bool FractureSystem::buildRecovery() {
   recovered_.clear();
   std::vector<Index> row(static_cast<std::size_t>(n), -1);
   for (Index k = 0; k < n; ++k)
-    if (mask_[k] > 0) {
+    if (mask_[k] > 0 && nodes_[k].heldComponent < 0) {
       row[k] = static_cast<Index>(recovered_.size());
       recovered_.push_back(k);
     }
@@ -440,9 +475,9 @@ void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
   for (Index i = 0; i < n; ++i) {
     const ControlNode& v = nodes_[i];
     for (int a = 0; a < d; ++a) {
-      double ja = mask_[i] * (slip_[k * i] + beta[k * i]) * v.tangent[0][a];
+      double ja = componentMask_[k * i] * (slip_[k * i] + beta[k * i]) * v.tangent[0][a];
       for (int c = 1; c < k; ++c)
-        ja += mask_[i] * (slip_[k * i + c] + beta[k * i + c]) * v.tangent[c][a];
+        ja += componentMask_[k * i + c] * (slip_[k * i + c] + beta[k * i + c]) * v.tangent[c][a];
       j[d * i + a] = ja;
     }
   }
@@ -452,11 +487,16 @@ void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
   sigmaN.resize(n);
   for (Index i = 0; i < n; ++i) {
     for (int c = 0; c < k; ++c) tau[k * i + c] = project(sigma, i, nodes_[i].tangent[c]);
+    // A partly held node's traction along its held direction is the roller's reaction, not a
+    // friction traction: the law acts on the free component alone (docs/method.md §4).
+    if (nodes_[i].heldComponent >= 0) tau[k * i + nodes_[i].heldComponent] = 0;
     sigmaN[i] = project(sigma, i, nodes_[i].normal);
   }
   if (offsetSigmaN_.size() == n) {
     sigmaN += offsetSigmaN_;
     tau += offsetTau_;
+    for (Index i = 0; i < n; ++i)
+      if (nodes_[i].heldComponent >= 0) tau[k * i + nodes_[i].heldComponent] = 0;
   }
 }
 
@@ -476,16 +516,19 @@ void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
   for (Index i = 0; i < n; ++i) {
     const ControlNode& v = nodes_[i];
     for (int a = 0; a < d; ++a) {
-      double ja = qt[k * i] * v.tangent[0][a];
-      for (int c = 1; c < k; ++c) ja += qt[k * i + c] * v.tangent[c][a];
+      double ja = v.heldComponent == 0 ? 0.0 : qt[k * i] * v.tangent[0][a];
+      for (int c = 1; c < k; ++c)
+        if (v.heldComponent != c) ja += qt[k * i + c] * v.tangent[c][a];
       j[d * i + a] = mask_[i] * (ja + qn[i] * v.normal[a]);
     }
   }
   Eigen::VectorXd sigma;
   solve(j, false, sigma);
   tauDual.resize(k * n);
-  for (Index i = 0; i < n; ++i)
+  for (Index i = 0; i < n; ++i) {
     for (int c = 0; c < k; ++c) tauDual[k * i + c] = project(sigma, i, nodes_[i].tangent[c]);
+    if (nodes_[i].heldComponent >= 0) tauDual[k * i + nodes_[i].heldComponent] = 0;
+  }
   if (sigmaNDual) {
     sigmaNDual->resize(n);
     for (Index i = 0; i < n; ++i) (*sigmaNDual)[i] = project(sigma, i, nodes_[i].normal);
@@ -506,8 +549,10 @@ void FractureSystem::adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& q
   for (Index i = 0; i < n; ++i) {
     const ControlNode& v = nodes_[i];
     for (int a = 0; a < d; ++a) {
-      double ya = qt[k * i] * v.tangent[0][a];
-      for (int c = 1; c < k; ++c) ya += qt[k * i + c] * v.tangent[c][a];
+      // τ's held component at a partly held node is 0 whatever β: its q does not enter.
+      double ya = v.heldComponent == 0 ? 0.0 : qt[k * i] * v.tangent[0][a];
+      for (int c = 1; c < k; ++c)
+        if (v.heldComponent != c) ya += qt[k * i + c] * v.tangent[c][a];
       y(d * i + a, 0) = weights_[i] * (ya + qn[i] * v.normal[a]);
     }
   }
@@ -517,7 +562,8 @@ void FractureSystem::adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& q
   tauAdjoint.resize(k * n);
   for (Index i = 0; i < n; ++i)
     for (int c = 0; c < k; ++c)
-      tauAdjoint[k * i + c] = mask_[i] * project(sigma, i, nodes_[i].tangent[c]) / weights_[i];
+      tauAdjoint[k * i + c] =
+          componentMask_[k * i + c] * project(sigma, i, nodes_[i].tangent[c]) / weights_[i];
 }
 
 InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
@@ -552,7 +598,7 @@ InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
   Eigen::MatrixXd columns(d * m, k * m);  // (M·S) t_c,j for each node j, zero where held
   for (Index a = 0; a < m; ++a)
     for (int c = 0; c < k; ++c) {
-      const Eigen::Vector3d t = nodes_[node[a]].tangent[c] * mask_[node[a]];
+      const Eigen::Vector3d t = nodes_[node[a]].tangent[c] * componentMask_[k * node[a] + c];
       Eigen::VectorXd col = MS.col(d * a) * t[0];
       for (int e = 1; e < d; ++e) col += MS.col(d * a + e) * t[e];
       columns.col(k * a + c) = col;
@@ -574,6 +620,8 @@ InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
         s[e] =
             consistent_ ? recovered(d * node[b] + e, a) : columns(d * b + e, a) / weights_[node[b]];
       for (int r = 0; r < k; ++r) op.Stt(k * node[b] + r, col) = project(s, 0, v.tangent[r]);
+      if (v.heldComponent >= 0)  // the roller's reaction: 0 in τ (primal)
+        op.Stt(k * node[b] + v.heldComponent, col) = 0;
       op.Snt(node[b], col) = project(s, 0, v.normal);
     }
   return op;

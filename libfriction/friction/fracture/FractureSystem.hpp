@@ -57,6 +57,11 @@ struct ControlNode {
   double weight = 0;         ///< lumped mass of Γ [m^(d−1)]
   bool tip = false;          ///< single node: no jump
   bool onDirichlet = false;  ///< on a Dirichlet patch: jump held at zero
+  /// 3D: the tangential component (0 or 1) a roller holds, the slip going on along the other;
+  /// −1 if none. It is the component of tangentBasis(n_Γ) along the roller's constraint
+  /// direction p when there is one (e.g. p = e_z on a vertical fault), else the basis is
+  /// turned (t₂ ∥ p) and it is 1.
+  int heldComponent = -1;
 };
 
 class FractureSystem : public SlipResponse {
@@ -97,6 +102,8 @@ class FractureSystem : public SlipResponse {
   void setTangentBasis(Index node, const Eigen::Vector3d& t1);
   /// Control nodes where the jump is held although the fracture is there (Dirichlet).
   int numHeldOnDirichlet() const;
+  /// 3D: control nodes where a roller holds one tangential component of the jump.
+  int numPartlyHeldOnDirichlet() const;
 
   // SlipResponse
   Eigen::Index size() const override { return static_cast<Eigen::Index>(nodes_.size()); }
@@ -105,6 +112,7 @@ class FractureSystem : public SlipResponse {
   int dimension() const { return dim_; }
   const Eigen::VectorXd& weights() const override { return weights_; }
   const Eigen::VectorXd& freeMask() const override { return mask_; }
+  Eigen::VectorXd componentMask() const override { return componentMask_; }
   void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau, Eigen::VectorXd& sigmaN) override;
   void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
             Eigen::VectorXd* sigmaNDual = nullptr) override;
@@ -162,7 +170,7 @@ class FractureSystem : public SlipResponse {
   std::unique_ptr<SparseFactor> factor_;
 
   std::vector<ControlNode> nodes_;
-  Eigen::VectorXd weights_, mask_;
+  Eigen::VectorXd weights_, mask_, componentMask_;
   Eigen::SparseMatrix<double> P_;   ///< split dofs × unsplit dofs
   Eigen::SparseMatrix<double> L_;   ///< split dofs × d·control nodes
   Eigen::SparseMatrix<double> B_;   ///< Pᵀ K_split L

@@ -6,6 +6,7 @@
 
 #include "friction/core/AtomicFile.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
+#include "friction/fracture/SignConventions.hpp"
 
 namespace friction {
 
@@ -36,6 +37,13 @@ bool oneFrame(const std::vector<FractureRow>& rows) {
         (r.tangent[1] - a.tangent[1]).cwiseAbs().maxCoeff() > 1e-12)
       return false;
   return true;
+}
+
+// Some node's t₁ is not tangentBasis(n): a roller turned its basis (docs/method.md §4).
+bool turnedFrame(const std::vector<FractureRow>& rows) {
+  for (const FractureRow& r : rows)
+    if ((r.tangent[0] - tangentBasis(r.normal)[0]).cwiseAbs().maxCoeff() > 1e-12) return true;
+  return false;
 }
 
 }  // namespace
@@ -77,7 +85,11 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
     out << "\n";
   } else {
     out << "# frame per node: n in columns nx ny nz, t1 = tangentBasis(n), t2 = n x t1 "
-           "(docs/method.md)\n";
+           "(docs/method.md)"
+        << (turnedFrame(rows) ? "; on roller patches t2 may be turned to the roller's held "
+                                "direction (slipX slipY slipZ give the slip vector)"
+                              : "")
+        << "\n";
   }
   for (const FractureRow& r : rows) {
     const Eigen::Vector3d slip = r.slip[0] * r.tangent[0] + r.slip[1] * r.tangent[1];
