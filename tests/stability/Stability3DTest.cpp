@@ -194,22 +194,7 @@ RunSummary checkRun(Case& c, int exitCode) {
   CHECK(!sum.statuses.empty());
   CHECK((exitCode == 0) == sum.allConverged());
   if (exitCode == 3) CHECK_THAT(c.log(), Catch::Contains("did not converge"));
-  // J never increases within a step (Newton's merit line search).
-  std::istringstream hist(readText(c.dir() / "postProcessing" / "convergence.dat"));
-  double lastTime = NAN, lastJ = 0;
-  int records = 0;
-  for (std::string line; std::getline(hist, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    ++records;
-    std::istringstream s(line);
-    double t, k, J;
-    s >> t >> k >> J;
-    CHECK(std::isfinite(J));
-    if (t == lastTime) CHECK(J <= lastJ * (1 + 1e-12) + 1e-300);
-    lastTime = t;
-    lastJ = J;
-  }
-  CHECK(records > 0);
+  checkHistoryDecreasing(c.dir());
   return sum;
 }
 

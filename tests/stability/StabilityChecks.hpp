@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <string>
@@ -51,6 +52,26 @@ inline void checkWrittenFinite(const fs::path& dir, std::size_t columns, std::si
       }
     }
   }
+}
+
+/// J never increases within a step of postProcessing/convergence.dat (Newton's merit line
+/// search; Armijo's decrease rule), every J finite, and the history not empty.
+inline void checkHistoryDecreasing(const fs::path& caseDir) {
+  std::istringstream hist(readText(caseDir / "postProcessing" / "convergence.dat"));
+  double lastTime = NAN, lastJ = 0;
+  int records = 0;
+  for (std::string line; std::getline(hist, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    ++records;
+    std::istringstream s(line);
+    double t, k, J;
+    s >> t >> k >> J;
+    CHECK(std::isfinite(J));
+    if (t == lastTime) CHECK(J <= lastJ * (1 + 1e-12) + 1e-300);
+    lastTime = t;
+    lastJ = J;
+  }
+  CHECK(records > 0);  // an empty history would check nothing
 }
 
 }  // namespace friction::regression

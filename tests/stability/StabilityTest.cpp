@@ -142,22 +142,7 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     }
   }
   if (exitCode == 3) CHECK_THAT(c.log(), Catch::Contains("did not converge"));
-  // J never increases within a step (Newton's merit line search; Armijo's decrease rule).
-  std::istringstream hist(readText(c.dir() / "postProcessing" / "convergence.dat"));
-  double lastTime = NAN, lastJ = 0;
-  int records = 0;
-  for (std::string line; std::getline(hist, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    ++records;
-    std::istringstream s(line);
-    double t, k, J;
-    s >> t >> k >> J;
-    CHECK(std::isfinite(J));
-    if (t == lastTime) CHECK(J <= lastJ * (1 + 1e-12) + 1e-300);
-    lastTime = t;
-    lastJ = J;
-  }
-  CHECK(records > 0);  // an empty history would check nothing
+  checkHistoryDecreasing(c.dir());
   return sum;
 }
 
