@@ -2,6 +2,7 @@
 // the known answers of docs/method.md §10, the analytic inclined crack, the paper benchmark.
 // References are analytic where one exists; each tolerance says why it is what it is.
 #include <catch2/catch.hpp>
+#include <regex>
 
 #include <algorithm>
 #include <cmath>
@@ -266,6 +267,23 @@ TEST_CASE("one factorisation for a multi-step run", "[regression]") {
   const std::string log = c.log();
   CHECK_THAT(log, Catch::Contains("Factorisations 1 ("));
   for (const char* t : {"0.25", "0.5", "0.75", "1"}) CHECK(fs::exists(c.dir() / t / "D"));
+  // What the run cost in memory, and what the factor is (the user pays for it at scale): the
+  // values are positive numbers (a 2D case of a few thousand unknowns needs more than 1 MB
+  // and less than 10 GB; the factor has at least one entry per unknown).
+  std::smatch m;
+  REQUIRE(std::regex_search(log, m, std::regex("peak memory ([0-9.e+-]+) GB\n")));
+  CHECK(std::stod(m[1]) > 1e-3);
+  CHECK(std::stod(m[1]) < 10);
+  REQUIRE(std::regex_search(
+      log, m,
+      std::regex("\nFactor: (AMD|METIS|NESDIS) ordering, ([0-9.e+]+) entries \\(([0-9.e+-]+) GB "
+                 "of values\\), ([0-9.e+]+) flops, jump unknowns last\n")));
+  const std::regex dofs("([0-9]+) dofs");
+  std::smatch d;
+  REQUIRE(std::regex_search(log, d, dofs));
+  CHECK(std::stod(m[2]) >= std::stod(d[1]));
+  CHECK(std::stod(m[3]) == Approx(std::stod(m[2]) * 8 / 1e9).epsilon(0.01));
+  CHECK(std::stod(m[4]) >= std::stod(m[2]));
 }
 
 TEST_CASE("the paper's steepest descent and Armijo decrease J", "[regression][paper]") {

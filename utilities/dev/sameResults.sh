@@ -21,7 +21,10 @@ set -u
 a=$1 b=$2
 [ -d "$a" ] && [ -d "$b" ] || { echo "$0: both arguments must be folders" >&2; exit 2; }
 normalise() {
-  sed -E -e 's/[0-9.]+(e[-+]?[0-9]+)? ?(s|ms|MB|GB|MiB|GiB)\b/<t>/g' \
+  # The factor's size line and the peak memory are costs, like the timings (the solver logs
+  # them since 2026-11-25; an older tree has neither).
+  sed -E -e '/^Factor: /d' -e 's/, peak memory [0-9.]+ GB//' \
+    -e 's/[0-9.]+(e[-+]?[0-9]+)? ?(s|ms|MB|GB|MiB|GiB)\b/<t>/g' \
     -e 's/~[^]]*left/~<t> left/g' -e "s#/[^ :'\"]*/tests/(regression|stability)/work#<work>#g" -e "s#/[^ :'\"]*/build/#<build>/#g" -e 's/[0-9]{4}-[0-9]{2}-[0-9]{2}[ T][0-9:.]+/<date>/g' "$1"
 }
 onlyPaths() { sed -E -e "s#/[^ :'\"]*/tests/(regression|stability)/work#<work>#g" -e "s#/[^ :'\"]*/build/#<build>/#g" "$1"; }

@@ -6,6 +6,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -31,12 +32,14 @@ class SparseFactor::Backend {
   virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const = 0;
   /// Factor the bordered matrix [A B; Bᵀ C] with the border last and return C − Bᵀ A⁻¹ B in
   /// `schur`; afterwards pivots() and solve() are those of A. Returns false when the backend
-  /// cannot (then nothing was changed and the caller factors A alone).
+  /// cannot (then nothing was changed, `whyNot` says why, and the caller factors A alone).
   virtual bool factorBordered(const SparseMatrix& /*A*/, const SparseMatrix& /*B*/,
                               const SparseMatrix& /*C*/, Eigen::MatrixXd& /*schur*/,
-                              FactorStatus& /*status*/) {
+                              FactorStatus& /*status*/, std::string& /*whyNot*/) {
     return false;
   }
+  /// The ordering and size of the last analysis, as far as the backend knows them.
+  virtual FactorAnalysis analysis() const { return {}; }
 };
 
 namespace {
@@ -65,35 +68,47 @@ class SimplicialLdltBackend : public SparseFactor::Backend {
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
 };
 
+// CHOLMOD is called with 64-bit indices (its cholmod_l_ functions): with 32-bit ones a factor
+// is limited to 2³¹ entries (16 GB of values), which a 3D mesh of 850 000 unknowns reaches.
+using CholmodIndex = SuiteSparse_long;
+using CholmodMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, CholmodIndex>;
+
 /// Eigen's wrapper with access to the CHOLMOD factor, which we need to read the pivots and to
 /// check that the analysis succeeded before factorising (Eigen would dereference a null
 /// factor after a failed analysis).
-class CholmodLlt : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+class CholmodLlt : public Eigen::CholmodSupernodalLLT<CholmodMatrix, Eigen::Lower> {
  public:
   const cholmod_factor* cholmodFactor() const { return m_cholmodFactor; }
+  /// Release the factor (or the analysis) held: the bordered path needs only its ordering.
+  void release() {
+    if (m_cholmodFactor) cholmod_l_free_factor(&m_cholmodFactor, &cholmod());
+    m_cholmodFactor = nullptr;
+    m_analysisIsOk = m_factorizationIsOk = false;
+  }
 };
 
 // Pivots of a CHOLMOD factor (d of LDLᵀ, l² of LLᵀ) for the first `rows` original rows.
 Eigen::VectorXd cholmodPivots(const cholmod_factor& L, Eigen::Index rows) {
+  using I = CholmodIndex;
   const auto n = static_cast<Eigen::Index>(L.n);
   const double* x = static_cast<const double*>(L.x);
-  const int* perm = static_cast<const int*>(L.Perm);
+  const I* perm = static_cast<const I*>(L.Perm);
   Eigen::VectorXd inFactorOrder(n);
   if (L.is_super) {
     // Supernode s: columns super[s] .. super[s+1]−1, stored as a dense column-major block
     // of pi[s+1] − pi[s] rows starting at px[s]; its diagonal has stride rows + 1.
-    const int* super = static_cast<const int*>(L.super);
-    const int* pi = static_cast<const int*>(L.pi);
-    const int* px = static_cast<const int*>(L.px);
+    const I* super = static_cast<const I*>(L.super);
+    const I* pi = static_cast<const I*>(L.pi);
+    const I* px = static_cast<const I*>(L.px);
     for (std::size_t s = 0; s < L.nsuper; ++s) {
-      const int nrows = pi[s + 1] - pi[s];
-      for (int j = 0; j < super[s + 1] - super[s]; ++j) {
+      const I nrows = pi[s + 1] - pi[s];
+      for (I j = 0; j < super[s + 1] - super[s]; ++j) {
         const double l = x[px[s] + j * (nrows + 1)];
         inFactorOrder[super[s] + j] = l * l;
       }
     }
   } else {
-    const int* p = static_cast<const int*>(L.p);
+    const I* p = static_cast<const I*>(L.p);
     for (Eigen::Index k = 0; k < n; ++k) {
       const double d = x[p[k]];
       inFactorOrder[k] = L.is_ll ? d * d : d;
@@ -108,17 +123,17 @@ Eigen::VectorXd cholmodPivots(const cholmod_factor& L, Eigen::Index rows) {
   return out;
 }
 
-// An Eigen column-major sparse matrix (compressed) as CHOLMOD sees it, lower triangle read.
-cholmod_sparse viewLower(const SparseMatrix& A) {
+// A compressed column-major sparse matrix as CHOLMOD sees it, lower triangle read.
+cholmod_sparse viewLower(const CholmodMatrix& A) {
   cholmod_sparse c{};
   c.nrow = static_cast<std::size_t>(A.rows());
   c.ncol = static_cast<std::size_t>(A.cols());
   c.nzmax = static_cast<std::size_t>(A.nonZeros());
-  c.p = const_cast<int*>(A.outerIndexPtr());
-  c.i = const_cast<int*>(A.innerIndexPtr());
+  c.p = const_cast<CholmodIndex*>(A.outerIndexPtr());
+  c.i = const_cast<CholmodIndex*>(A.innerIndexPtr());
   c.x = const_cast<double*>(A.valuePtr());
   c.stype = -1;
-  c.itype = CHOLMOD_INT;
+  c.itype = CHOLMOD_LONG;
   c.xtype = CHOLMOD_REAL;
   c.dtype = CHOLMOD_DOUBLE;
   c.sorted = 1;
@@ -138,6 +153,41 @@ cholmod_dense viewDense(Eigen::MatrixXd& X) {
   return d;
 }
 
+// Why CHOLMOD stopped, in a user's words (cholmod_common::status).
+std::string cholmodProblem(int status) {
+  switch (status) {
+    case CHOLMOD_OUT_OF_MEMORY:
+      return "out of memory";
+    case CHOLMOD_TOO_LARGE:
+      return "the factor would exceed CHOLMOD's 32-bit index range (2^31 entries)";
+    case CHOLMOD_NOT_POSDEF:
+      return "not positive definite";
+    default:
+      return "CHOLMOD status " + std::to_string(status);
+  }
+}
+
+const char* cholmodOrderingName(int ordering) {
+  switch (ordering) {
+    case CHOLMOD_NATURAL:
+      return "natural";
+    case CHOLMOD_GIVEN:
+      return "given";
+    case CHOLMOD_AMD:
+      return "AMD";
+    case CHOLMOD_METIS:
+      return "METIS";
+    case CHOLMOD_NESDIS:
+      return "NESDIS";
+    case CHOLMOD_COLAMD:
+      return "COLAMD";
+    case CHOLMOD_POSTORDERED:
+      return "natural, postordered";
+    default:
+      return "unknown";
+  }
+}
+
 class CholmodBackend : public SparseFactor::Backend {
  public:
   CholmodBackend() {
@@ -148,9 +198,11 @@ class CholmodBackend : public SparseFactor::Backend {
   CholmodBackend(const CholmodBackend&) = delete;
   CholmodBackend& operator=(const CholmodBackend&) = delete;
 
-  FactorStatus factor(const SparseMatrix& A) override {
+  FactorStatus factor(const SparseMatrix& A32) override {
     freeBordered();
+    const CholmodMatrix A = A32;
     llt_.analyzePattern(A);
+    recordAnalysis(llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
     if (!llt_.cholmodFactor() || llt_.cholmod().status < 0) return FactorStatus::failed;
     llt_.factorize(A);
     const int status = llt_.cholmod().status;
@@ -164,7 +216,7 @@ class CholmodBackend : public SparseFactor::Backend {
                                      static_cast<Eigen::Index>(llt_.cholmodFactor()->n));
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override {
-    if (!bordered_) return llt_.solve(b);
+    if (!bordered_) return Eigen::VectorXd(llt_.solve(b));
     Eigen::MatrixXd B = b;
     return solveBordered(B).col(0);
   }
@@ -177,53 +229,61 @@ class CholmodBackend : public SparseFactor::Backend {
   // L₂₂ L₂₂ᵀ = C − Bᵀ A⁻¹ B. C is shifted by σ I (σ = the largest diagonal entry of C)
   // before factoring, and σ taken off again, because the complement itself may be only
   // semi-definite (a part held only by a fracture can move rigidly with the jump).
-  bool factorBordered(const SparseMatrix& A, const SparseMatrix& B, const SparseMatrix& C,
-                      Eigen::MatrixXd& schur, FactorStatus& status) override {
+  bool factorBordered(const SparseMatrix& A32, const SparseMatrix& B, const SparseMatrix& C,
+                      Eigen::MatrixXd& schur, FactorStatus& status, std::string& whyNot) override {
     freeBordered();
+    using I = CholmodIndex;
     cholmod_common& cm = llt_.cholmod();
-    const int n = static_cast<int>(A.rows()), m = static_cast<int>(B.cols());
-    // 1. A's own fill-reducing ordering, chosen exactly as factor() chooses it.
-    llt_.analyzePattern(A);
-    if (!llt_.cholmodFactor() || cm.status < 0) {
-      status = FactorStatus::failed;
-      return true;
+    const I n = A32.rows(), m = B.cols();
+    // 1. A's own fill-reducing ordering, chosen exactly as factor() chooses it. Nothing but
+    //    the ordering is kept: at 10⁶ unknowns in 3D the factorisation below needs the memory.
+    std::vector<I> perm(static_cast<std::size_t>(n + m));
+    int orderingA = -1;
+    {
+      llt_.analyzePattern(CholmodMatrix(A32));
+      recordAnalysis(llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
+      if (!llt_.cholmodFactor() || cm.status < 0) {
+        status = FactorStatus::failed;
+        return true;
+      }
+      orderingA = llt_.cholmodFactor()->ordering;
+      const I* permA = static_cast<const I*>(llt_.cholmodFactor()->Perm);
+      for (I i = 0; i < n; ++i) perm[i] = permA ? permA[i] : i;
+      for (I a = 0; a < m; ++a) perm[n + a] = n + a;
+      llt_.release();
     }
-    std::vector<int> perm(static_cast<std::size_t>(n + m));
-    const int* permA = static_cast<const int*>(llt_.cholmodFactor()->Perm);
-    for (int i = 0; i < n; ++i) perm[i] = permA ? permA[i] : i;
-    for (int a = 0; a < m; ++a) perm[n + a] = n + a;
 
     // 2. The bordered matrix, lower triangle.
     double sigma = 0;
-    for (int a = 0; a < m; ++a) sigma = std::max(sigma, C.coeff(a, a));
+    for (I a = 0; a < m; ++a) sigma = std::max(sigma, C.coeff(a, a));
     if (!(sigma > 0)) sigma = 1;
     // Written column by column in compressed form (no triplet sort: at 10⁶ unknowns the
     // sort alone took seconds): column j < n holds A's entries on and below the diagonal,
     // then row n + a for every B(j, a); column n + a holds C's lower part plus σ.
     const Eigen::SparseMatrix<double, Eigen::RowMajor> Brows = B;  // row j: the a with B(j, a)
     Eigen::SparseMatrix<double> Clower = C.triangularView<Eigen::Lower>();
-    for (int a = 0; a < m; ++a) Clower.coeffRef(a, a) += sigma;
+    for (I a = 0; a < m; ++a) Clower.coeffRef(a, a) += sigma;
     Clower.makeCompressed();
-    SparseMatrix Ab(n + m, n + m);
+    CholmodMatrix Ab(n + m, n + m);
     Eigen::Index nnz = Brows.nonZeros() + Clower.nonZeros();
-    for (int j = 0; j < n; ++j)
-      for (SparseMatrix::InnerIterator it(A, j); it; ++it) nnz += it.row() >= j;
+    for (I j = 0; j < n; ++j)
+      for (SparseMatrix::InnerIterator it(A32, j); it; ++it) nnz += it.row() >= j;
     Ab.resizeNonZeros(nnz);
-    int* outer = Ab.outerIndexPtr();
-    int* inner = Ab.innerIndexPtr();
+    I* outer = Ab.outerIndexPtr();
+    I* inner = Ab.innerIndexPtr();
     double* value = Ab.valuePtr();
-    int pos = 0;
-    for (int j = 0; j < n; ++j) {
+    I pos = 0;
+    for (I j = 0; j < n; ++j) {
       outer[j] = pos;
-      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
-        if (it.row() >= j) inner[pos] = static_cast<int>(it.row()), value[pos++] = it.value();
+      for (SparseMatrix::InnerIterator it(A32, j); it; ++it)
+        if (it.row() >= j) inner[pos] = it.row(), value[pos++] = it.value();
       for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Brows, j); it; ++it)
-        inner[pos] = n + static_cast<int>(it.col()), value[pos++] = it.value();
+        inner[pos] = n + it.col(), value[pos++] = it.value();
     }
-    for (int a = 0; a < m; ++a) {
+    for (I a = 0; a < m; ++a) {
       outer[n + a] = pos;
       for (SparseMatrix::InnerIterator it(Clower, a); it; ++it)
-        inner[pos] = n + static_cast<int>(it.row()), value[pos++] = it.value();
+        inner[pos] = n + it.row(), value[pos++] = it.value();
     }
     outer[n + m] = pos;
     FRICTION_ASSERT(pos == nnz, "bordered matrix: entry count");
@@ -235,67 +295,78 @@ class CholmodBackend : public SparseFactor::Backend {
     cm.nmethods = 1;
     cm.method[0].ordering = CHOLMOD_GIVEN;
     cm.postorder = 0;
-    cholmod_factor* L = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &cm);
+    cholmod_factor* L = cholmod_l_analyze_p(&view, perm.data(), nullptr, 0, &cm);
     cm.nmethods = nmethods;
     cm.method[0].ordering = ordering;
     cm.postorder = postorder;
     if (!L || cm.status < 0) {
-      if (L) cholmod_free_factor(&L, &cm);
+      whyNot = "the bordered analysis failed: " + cholmodProblem(cm.status);
+      if (L) cholmod_l_free_factor(&L, &cm);
       return false;
     }
-    const int* permL = static_cast<const int*>(L->Perm);
+    const I* permL = static_cast<const I*>(L->Perm);
     bool borderLast = permL != nullptr;
-    for (int a = 0; borderLast && a < m; ++a) borderLast = permL[n + a] == n + a;
+    for (I a = 0; borderLast && a < m; ++a) borderLast = permL[n + a] == n + a;
     if (!borderLast || !L->is_super) {
-      cholmod_free_factor(&L, &cm);
+      whyNot = borderLast ? "CHOLMOD chose a simplicial factor for the bordered matrix"
+                          : "CHOLMOD did not keep the jump unknowns last";
+      cholmod_l_free_factor(&L, &cm);
       return false;
     }
+    recordAnalysis(orderingA);
 
     // 4. Numeric factorisation. A pivot failure in A's columns is A's (the caller reports
     //    it); one in the border should not happen with the shift: fall back.
-    cholmod_factorize(&view, L, &cm);
+    cholmod_l_factorize(&view, L, &cm);
+    CholmodMatrix().swap(Ab);  // the factor holds everything now
     if (cm.status == CHOLMOD_NOT_POSDEF) {
       const bool inA = L->minor < static_cast<std::size_t>(n);
-      cholmod_free_factor(&L, &cm);
-      if (!inA) return false;
+      cholmod_l_free_factor(&L, &cm);
+      if (!inA) {
+        whyNot = "a pivot of the shifted jump block was not positive";
+        return false;
+      }
       status = FactorStatus::notPositiveDefinite;
       return true;
     }
     if (cm.status < 0) {
-      cholmod_free_factor(&L, &cm);
-      status = FactorStatus::failed;
-      return true;
+      // Out of memory with the border: A alone may still fit (then its complement comes
+      // from blocks of solves).
+      whyNot = "the bordered factorisation failed: " + cholmodProblem(cm.status);
+      cholmod_l_free_factor(&L, &cm);
+      return false;
     }
 
-    // 5. L₂₂ from the supernodes whose columns reach into the border.
-    Eigen::MatrixXd L22 = Eigen::MatrixXd::Zero(m, m);
-    const int* super = static_cast<const int*>(L->super);
-    const int* pi = static_cast<const int*>(L->pi);
-    const int* px = static_cast<const int*>(L->px);
-    const int* Ls = static_cast<const int*>(L->s);
+    // 5. L₂₂ from the supernodes whose columns reach into the border, written reversed:
+    //    U = J L₂₂ J with J the reversal (U(m−1−r, m−1−c) = L₂₂(r, c)) is upper triangular.
+    Eigen::MatrixXd U = Eigen::MatrixXd::Zero(m, m);
+    const I* super = static_cast<const I*>(L->super);
+    const I* pi = static_cast<const I*>(L->pi);
+    const I* px = static_cast<const I*>(L->px);
+    const I* Ls = static_cast<const I*>(L->s);
     const double* Lx = static_cast<const double*>(L->x);
     for (std::size_t s = 0; s < L->nsuper; ++s) {
-      const int k1 = super[s], k2 = super[s + 1];
+      const I k1 = super[s], k2 = super[s + 1];
       if (k2 <= n) continue;
-      const int nrows = pi[s + 1] - pi[s];
-      const int* rows = Ls + pi[s];
+      const I nrows = pi[s + 1] - pi[s];
+      const I* rows = Ls + pi[s];
       const double* X = Lx + px[s];
-      for (int jj = std::max(k1, n) - k1; jj < k2 - k1; ++jj)
-        for (int ii = jj; ii < nrows; ++ii)
-          L22(rows[ii] - n, k1 + jj - n) = X[ii + static_cast<std::ptrdiff_t>(jj) * nrows];
+      for (I jj = std::max(k1, n) - k1; jj < k2 - k1; ++jj)
+        for (I ii = jj; ii < nrows; ++ii)
+          U(m - 1 - (rows[ii] - n), m - 1 - (k1 + jj - n)) = X[ii + jj * nrows];
     }
     // 6. The complement: L₂₂ L₂₂ᵀ − σ I.
     //    LAPACK's dlauum forms U Uᵀ for an upper triangular U in m³/3 operations (blocked,
     //    threaded), a third of a general product and far faster than Eigen's at m in the
-    //    thousands, where this is the largest dense operation of the run. With J the
-    //    reversal, U = J L₂₂ J is upper triangular and J (U Uᵀ) J = L₂₂ L₂₂ᵀ.
-    Eigen::MatrixXd U = L22.reverse();
-    L22.resize(0, 0);
+    //    thousands, where this is the largest dense operation of the run; J (U Uᵀ) J = L₂₂ L₂₂ᵀ.
     int info = 0;
-    dlauum_("U", &m, U.data(), &m, &info);
+    const int m32 = static_cast<int>(m);
+    dlauum_("U", &m32, U.data(), &m32, &info);
     FRICTION_ASSERT(info == 0, "dlauum failed");
     U.triangularView<Eigen::StrictlyLower>() = U.transpose();
-    schur = U.reverse();
+    // J X J of a column-major square matrix is its storage read backwards: in place.
+    std::reverse(U.data(), U.data() + U.size());
+    schur.swap(U);
     schur.diagonal().array() -= sigma;
     bordered_ = L;
     rows_ = n;
@@ -303,9 +374,19 @@ class CholmodBackend : public SparseFactor::Backend {
     return true;
   }
 
+  FactorAnalysis analysis() const override { return analysis_; }
+
  private:
+  // The analysis CHOLMOD just made (its common block holds the last one's counts).
+  void recordAnalysis(int ordering) {
+    const cholmod_common& cm = llt_.cholmod();
+    analysis_.ordering = ordering >= 0 ? cholmodOrderingName(ordering) : "";
+    analysis_.entries = cm.lnz > 0 ? cm.lnz : 0;
+    analysis_.flops = cm.fl > 0 ? cm.fl : 0;
+  }
+
   void freeBordered() {
-    if (bordered_) cholmod_free_factor(&bordered_, &llt_.cholmod());
+    if (bordered_) cholmod_l_free_factor(&bordered_, &llt_.cholmod());
     bordered_ = nullptr;
   }
 
@@ -318,31 +399,32 @@ class CholmodBackend : public SparseFactor::Backend {
     Eigen::MatrixXd X = Eigen::MatrixXd::Zero(N, B.cols());
     X.topRows(n) = B;
     cholmod_dense view = viewDense(X);
-    cholmod_dense* y = cholmod_solve(CHOLMOD_P, bordered_, &view, &cm);
-    cholmod_dense* z = y ? cholmod_solve(CHOLMOD_L, bordered_, y, &cm) : nullptr;
-    cholmod_free_dense(&y, &cm);
+    cholmod_dense* y = cholmod_l_solve(CHOLMOD_P, bordered_, &view, &cm);
+    cholmod_dense* z = y ? cholmod_l_solve(CHOLMOD_L, bordered_, y, &cm) : nullptr;
+    cholmod_l_free_dense(&y, &cm);
     if (z) {
       // The border is last in the factor's order: rows n … N−1 of the permuted vector.
       double* zx = static_cast<double*>(z->x);
       for (std::size_t c = 0; c < z->ncol; ++c)
         for (std::size_t r = static_cast<std::size_t>(n); r < z->nrow; ++r) zx[r + c * z->d] = 0;
     }
-    cholmod_dense* w = z ? cholmod_solve(CHOLMOD_Lt, bordered_, z, &cm) : nullptr;
-    cholmod_free_dense(&z, &cm);
-    cholmod_dense* u = w ? cholmod_solve(CHOLMOD_Pt, bordered_, w, &cm) : nullptr;
-    cholmod_free_dense(&w, &cm);
+    cholmod_dense* w = z ? cholmod_l_solve(CHOLMOD_Lt, bordered_, z, &cm) : nullptr;
+    cholmod_l_free_dense(&z, &cm);
+    cholmod_dense* u = w ? cholmod_l_solve(CHOLMOD_Pt, bordered_, w, &cm) : nullptr;
+    cholmod_l_free_dense(&w, &cm);
     FRICTION_ASSERT(u != nullptr, "CHOLMOD solve with the bordered factor failed");
     Eigen::MatrixXd out(n, B.cols());
     const double* ux = static_cast<const double*>(u->x);
     for (Eigen::Index c = 0; c < B.cols(); ++c)
       for (Eigen::Index r = 0; r < n; ++r) out(r, c) = ux[r + c * static_cast<Eigen::Index>(u->d)];
-    cholmod_free_dense(&u, &cm);
+    cholmod_l_free_dense(&u, &cm);
     return out;
   }
 
   mutable CholmodLlt llt_;
   cholmod_factor* bordered_ = nullptr;
   Eigen::Index rows_ = 0;
+  FactorAnalysis analysis_;
 };
 
 struct BackendEntry {
@@ -437,6 +519,8 @@ FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix*
   schur_.resize(0, 0);
   schurSolves_ = 0;
   schurSeconds_ = 0;
+  schurFallbackReason_.clear();
+  analysis_ = {};
   maxAbsEntry_ = 0.0;
   for (Eigen::Index k = 0; k < A.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(A, k); it; ++it)
@@ -458,9 +542,10 @@ FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix*
     for (const SparseMatrix* M : {B, C})
       for (Eigen::Index k = 0; k < M->outerSize(); ++k)
         for (SparseMatrix::InnerIterator it(*M, k); it; ++it) finite &= std::isfinite(it.value());
-    bordered = finite && impl_->factorBordered(A, *B, *C, schur_, status_);
+    bordered = finite && impl_->factorBordered(A, *B, *C, schur_, status_, schurFallbackReason_);
   }
   if (!bordered) status_ = impl_->factor(A);
+  analysis_ = impl_->analysis();
   factored_ = true;
   status_ = judgePivots(A);
   if (status_ != FactorStatus::ok) schur_.resize(0, 0);

@@ -34,6 +34,14 @@ enum class FactorStatus {
 /// "ok", "notPositiveDefinite", "failed", "nonFinite".
 const char* toString(FactorStatus status);
 
+/// What the last analysis of a sparse Cholesky factorisation chose and will cost (for the log:
+/// at 10⁶ unknowns in 3D the factor, not the control loop, sets the time and the memory).
+struct FactorAnalysis {
+  std::string ordering;  ///< fill-reducing ordering, e.g. "METIS" (empty: unknown)
+  double entries = 0;    ///< nonzeros of the factor L (0: unknown)
+  double flops = 0;      ///< floating-point operations of the numeric factorisation (0: unknown)
+};
+
 class SparseFactor {
  public:
   /// Select the backend by name (see backendNames()). Throws InputError naming `where`
@@ -90,6 +98,11 @@ class SparseFactor {
   const Eigen::MatrixXd& schurComplement() const { return schur_; }
   /// Back-substitutions the last complement cost (0 when it came from the factorisation).
   long schurSolves() const { return schurSolves_; }
+  /// Why the last complement came from blocks of solves although the backend has a bordered
+  /// factorisation (e.g. "its factor would exceed 2³¹ entries"); empty otherwise.
+  const std::string& schurFallbackReason() const { return schurFallbackReason_; }
+  /// The ordering and size of the last factor (of the bordered matrix when it was bordered).
+  const FactorAnalysis& analysis() const { return analysis_; }
   /// Wall time [s] of the blocked solves of the last complement (0 when it came from the
   /// factorisation: its cost is then part of factorSeconds()).
   double schurSeconds() const { return schurSeconds_; }
@@ -133,6 +146,8 @@ class SparseFactor {
   Eigen::MatrixXd schur_;
   long schurSolves_ = 0;
   double schurSeconds_ = 0.0;
+  std::string schurFallbackReason_;
+  FactorAnalysis analysis_;
 
   // factor() and factorWithSchur(): A alone, or bordered by B and C where the backend can.
   FactorStatus factorImpl(const Eigen::SparseMatrix<double>& A,

@@ -217,3 +217,40 @@ TEST_CASE("linalg SparseFactor: a semi-definite complement is formed, a singular
   CHECK(factor.factorWithSchur(K, BK, CK) == FactorStatus::notPositiveDefinite);
   CHECK_FALSE(factor.ok());
 }
+
+TEST_CASE("linalg SparseFactor reports the ordering and the size of the factor it made",
+          "[linalg]") {
+  const Eigen::SparseMatrix<double> A = spdMatrix();
+  const Eigen::Index n = A.rows();
+  const Eigen::SparseMatrix<double> lower = A.triangularView<Eigen::Lower>();
+
+  SparseFactor cholmod("cholmod");
+  REQUIRE(cholmod.factor(A) == FactorStatus::ok);
+  const FactorAnalysis plain = cholmod.analysis();
+  // L holds at least the lower triangle of A (no cancellation is assumed by the symbolic
+  // count) and at most a dense triangle; a factorisation costs at least one operation per
+  // entry of L.
+  CHECK(plain.entries >= static_cast<double>(lower.nonZeros()));
+  CHECK(plain.entries <= 0.5 * static_cast<double>(n) * static_cast<double>(n + 1));
+  CHECK(plain.flops >= plain.entries);
+  CHECK_THAT(std::string("natural given AMD METIS NESDIS COLAMD"), Catch::Contains(plain.ordering));
+  CHECK_FALSE(plain.ordering.empty());
+  CHECK(cholmod.schurFallbackReason().empty());
+
+  // Bordered: the same ordering of A, and the border's rows and block on top of A's factor.
+  const Eigen::Index m = 40;
+  Eigen::SparseMatrix<double> B, C;
+  border(n, m, B, C);
+  REQUIRE(cholmod.factorWithSchur(A, B, C) == FactorStatus::ok);
+  REQUIRE(cholmod.schurSolves() == 0);
+  CHECK(cholmod.schurFallbackReason().empty());
+  CHECK(cholmod.analysis().ordering == plain.ordering);
+  CHECK(cholmod.analysis().entries >= plain.entries + 0.5 * m * (m + 1));
+  CHECK(cholmod.analysis().flops > plain.flops);
+
+  // A backend that does not know its factor's size says so with zeros (no line in the log).
+  SparseFactor ldlt("simplicialLDLT");
+  REQUIRE(ldlt.factor(A) == FactorStatus::ok);
+  CHECK(ldlt.analysis().entries == 0);
+  CHECK(ldlt.analysis().ordering.empty());
+}
