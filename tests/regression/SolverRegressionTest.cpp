@@ -282,7 +282,8 @@ TEST_CASE("one factorisation for a multi-step run", "[regression]") {
   std::smatch d;
   REQUIRE(std::regex_search(log, d, dofs));
   CHECK(std::stod(m[2]) >= std::stod(d[1]));
-  CHECK(std::stod(m[3]) == Approx(std::stod(m[2]) * 8 / 1e9).epsilon(0.01));
+  // The values' memory: at least 8 bytes per entry (dense supernodes add padding zeros).
+  CHECK(std::stod(m[3]) >= std::stod(m[2]) * 8 / 1e9 * (1 - 1e-3));
   CHECK(std::stod(m[4]) >= std::stod(m[2]));
 }
 

@@ -267,7 +267,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   if (const FactorAnalysis& a = f.analysis(); a.entries > 0) {
     std::ostringstream line;
     line << std::setprecision(3) << "Factor: " << a.ordering << " ordering, " << a.entries
-         << " entries (" << a.entries * 8 / 1e9 << " GB of values), " << a.flops << " flops"
+         << " entries (" << a.bytes / 1e9 << " GB of values), " << a.flops << " flops"
          << (f.schurComplement().size() > 0 && f.schurSolves() == 0 ? ", jump unknowns last" : "");
     log << line.str() << "\n";
   }

@@ -202,7 +202,8 @@ class CholmodBackend : public SparseFactor::Backend {
     freeBordered();
     const CholmodMatrix A = A32;
     llt_.analyzePattern(A);
-    recordAnalysis(llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
+    recordAnalysis(llt_.cholmodFactor(),
+                   llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
     if (!llt_.cholmodFactor() || llt_.cholmod().status < 0) return FactorStatus::failed;
     llt_.factorize(A);
     const int status = llt_.cholmod().status;
@@ -241,7 +242,8 @@ class CholmodBackend : public SparseFactor::Backend {
     int orderingA = -1;
     {
       llt_.analyzePattern(CholmodMatrix(A32));
-      recordAnalysis(llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
+      recordAnalysis(llt_.cholmodFactor(),
+                     llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
       if (!llt_.cholmodFactor() || cm.status < 0) {
         status = FactorStatus::failed;
         return true;
@@ -313,7 +315,7 @@ class CholmodBackend : public SparseFactor::Backend {
       cholmod_l_free_factor(&L, &cm);
       return false;
     }
-    recordAnalysis(orderingA);
+    recordAnalysis(L, orderingA);
 
     // 4. Numeric factorisation. A pivot failure in A's columns is A's (the caller reports
     //    it); one in the border should not happen with the shift: fall back.
@@ -378,11 +380,14 @@ class CholmodBackend : public SparseFactor::Backend {
 
  private:
   // The analysis CHOLMOD just made (its common block holds the last one's counts).
-  void recordAnalysis(int ordering) {
+  void recordAnalysis(const cholmod_factor* L, int ordering) {
     const cholmod_common& cm = llt_.cholmod();
     analysis_.ordering = ordering >= 0 ? cholmodOrderingName(ordering) : "";
     analysis_.entries = cm.lnz > 0 ? cm.lnz : 0;
     analysis_.flops = cm.fl > 0 ? cm.fl : 0;
+    // A supernodal factor stores its supernodes as dense blocks, with the zeros that
+    // amalgamation let in: that, not the entry count, is the memory.
+    analysis_.bytes = L ? 8.0 * static_cast<double>(L->is_super ? L->xsize : L->nzmax) : 0;
   }
 
   void freeBordered() {

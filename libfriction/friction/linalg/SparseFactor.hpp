@@ -39,6 +39,7 @@ const char* toString(FactorStatus status);
 struct FactorAnalysis {
   std::string ordering;  ///< fill-reducing ordering, e.g. "METIS" (empty: unknown)
   double entries = 0;    ///< nonzeros of the factor L (0: unknown)
+  double bytes = 0;      ///< memory of L's values, padding of dense blocks included (0: unknown)
   double flops = 0;      ///< floating-point operations of the numeric factorisation (0: unknown)
 };
 

@@ -233,6 +233,7 @@ TEST_CASE("linalg SparseFactor reports the ordering and the size of the factor i
   CHECK(plain.entries >= static_cast<double>(lower.nonZeros()));
   CHECK(plain.entries <= 0.5 * static_cast<double>(n) * static_cast<double>(n + 1));
   CHECK(plain.flops >= plain.entries);
+  CHECK(plain.bytes >= 8 * plain.entries);
   CHECK_THAT(std::string("natural given AMD METIS NESDIS COLAMD"), Catch::Contains(plain.ordering));
   CHECK_FALSE(plain.ordering.empty());
   CHECK(cholmod.schurFallbackReason().empty());
