@@ -277,7 +277,8 @@ TEST_CASE("one factorisation for a multi-step run", "[regression]") {
   REQUIRE(std::regex_search(
       log, m,
       std::regex("\nFactor: (AMD|METIS|NESDIS) ordering, ([0-9.e+]+) entries \\(([0-9.e+-]+) GB "
-                 "of values\\), ([0-9.e+]+) flops, jump unknowns last\n")));
+                 "of values\\), ([0-9.e+]+) flops, jump unknowns last; [0-9.e+-]+ s ordering and "
+                 "analysis, [0-9.e+-]+ s numeric, [0-9.e+-]+ s the complement\n")));
   const std::regex dofs("([0-9]+) dofs");
   std::smatch d;
   REQUIRE(std::regex_search(log, d, dofs));

@@ -15,7 +15,8 @@
 #     run stops depends on the machine's load): noDataLoss/{sigint,sigterm},
 #     noDataLoss/killRestart/{kill*,random}, and the logs of solver/*-secondSignal and
 #     solver/*-controlDictDeleted (the warning's place among the step lines).
-# Prints "same" and exits 0, or lists the files that differ and exits 1.
+# Prints "same" and exits 0, or lists the files that differ and exits 1 (files only in B,
+# e.g. new tests' outputs, are listed and counted but are not a difference).
 set -u
 [ $# -eq 2 ] || { echo "usage: $0 DIR_A DIR_B" >&2; exit 2; }
 a=$1 b=$2
@@ -30,6 +31,7 @@ normalise() {
 onlyPaths() { sed -E -e "s#/[^ :'\"]*/tests/(regression|stability)/work#<work>#g" -e "s#/[^ :'\"]*/build/#<build>/#g" "$1"; }
 status=0
 n=0
+newer=
 while IFS= read -r -d '' f; do
   rel=${f#"$a"/}
   n=$((n + 1))
@@ -53,8 +55,10 @@ while IFS= read -r -d '' f; do
     noDataLoss/sigint/* | noDataLoss/sigterm/* | noDataLoss/killRestart/kill* | \
       noDataLoss/killRestart/random/*) continue ;;
   esac
-  [ -e "$a/$rel" ] || { echo "only in $b: $rel"; status=1; }
+  [ -e "$a/$rel" ] || { echo "only in $b: $rel"; newer=$((newer + 1)); }
 done < <(find "$b" -type f -print0)
 [ "$n" -gt 0 ] || { echo "$0: no files in $a" >&2; exit 2; }
-[ $status -eq 0 ] && echo "same ($n files)"
+# Files only in B (new tests' outputs) are listed but are not a difference: every file of A
+# is in B and the same.
+[ $status -eq 0 ] && echo "same ($n files${newer:+; $newer more only in $b})"
 exit $status

@@ -58,7 +58,7 @@ summary() {  # summary CASE TITLE
   local log=$1/log.frictionSolver
   echo "$2"
   grep -E "^(Split mesh|Factorisation|Factor:|Interface operator|Factorisations)" "$log" | sed 's/^/    /'
-  grep -E "^Time = " "$log" | sed -E 's/  \|D\|.*\[/  [/; s/^/    /'
+  grep -E "^Time = " "$log" | sed 's/^/    /'
 }
 echo
 summary "$work/linear" "linear elastic solve (wall $tl s):"

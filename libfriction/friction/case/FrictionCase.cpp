@@ -269,6 +269,11 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     line << std::setprecision(3) << "Factor: " << a.ordering << " ordering, " << a.entries
          << " entries (" << a.bytes / 1e9 << " GB of values), " << a.flops << " flops"
          << (f.schurComplement().size() > 0 && f.schurSolves() == 0 ? ", jump unknowns last" : "");
+    if (a.numericSeconds > 0) {
+      line << "; " << a.analysisSeconds << " s ordering and analysis, " << a.numericSeconds
+           << " s numeric";
+      if (a.complementSeconds > 0) line << ", " << a.complementSeconds << " s the complement";
+    }
     log << line.str() << "\n";
   }
   // Condensed Newton's S: a by-product of the factorisation, or blocks of solves where the

@@ -44,6 +44,10 @@ class SparseFactor::Backend {
 
 namespace {
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 class SimplicialLdltBackend : public SparseFactor::Backend {
  public:
   FactorStatus factor(const SparseMatrix& A) override {
@@ -200,12 +204,18 @@ class CholmodBackend : public SparseFactor::Backend {
 
   FactorStatus factor(const SparseMatrix& A32) override {
     freeBordered();
+    analysis_ = {};
     const CholmodMatrix A = A32;
+    auto clock = std::chrono::steady_clock::now();
     llt_.analyzePattern(A);
+    const double analysisSeconds = secondsSince(clock);
     recordAnalysis(llt_.cholmodFactor(),
                    llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
     if (!llt_.cholmodFactor() || llt_.cholmod().status < 0) return FactorStatus::failed;
+    clock = std::chrono::steady_clock::now();
     llt_.factorize(A);
+    analysis_.analysisSeconds = analysisSeconds;
+    analysis_.numericSeconds = secondsSince(clock);
     const int status = llt_.cholmod().status;
     if (status == CHOLMOD_NOT_POSDEF || llt_.info() == Eigen::NumericalIssue)
       return FactorStatus::notPositiveDefinite;
@@ -233,6 +243,7 @@ class CholmodBackend : public SparseFactor::Backend {
   bool factorBordered(const SparseMatrix& A32, const SparseMatrix& B, const SparseMatrix& C,
                       Eigen::MatrixXd& schur, FactorStatus& status, std::string& whyNot) override {
     freeBordered();
+    analysis_ = {};
     using I = CholmodIndex;
     cholmod_common& cm = llt_.cholmod();
     const I n = A32.rows(), m = B.cols();
@@ -240,6 +251,7 @@ class CholmodBackend : public SparseFactor::Backend {
     //    the ordering is kept: at 10⁶ unknowns in 3D the factorisation below needs the memory.
     std::vector<I> perm(static_cast<std::size_t>(n + m));
     int orderingA = -1;
+    auto clock = std::chrono::steady_clock::now();
     {
       llt_.analyzePattern(CholmodMatrix(A32));
       recordAnalysis(llt_.cholmodFactor(),
@@ -319,7 +331,11 @@ class CholmodBackend : public SparseFactor::Backend {
 
     // 4. Numeric factorisation. A pivot failure in A's columns is A's (the caller reports
     //    it); one in the border should not happen with the shift: fall back.
+    const double analysisSeconds = secondsSince(clock);
+    clock = std::chrono::steady_clock::now();
     cholmod_l_factorize(&view, L, &cm);
+    const double numericSeconds = secondsSince(clock);
+    clock = std::chrono::steady_clock::now();
     CholmodMatrix().swap(Ab);  // the factor holds everything now
     if (cm.status == CHOLMOD_NOT_POSDEF) {
       const bool inA = L->minor < static_cast<std::size_t>(n);
@@ -370,6 +386,9 @@ class CholmodBackend : public SparseFactor::Backend {
     std::reverse(U.data(), U.data() + U.size());
     schur.swap(U);
     schur.diagonal().array() -= sigma;
+    analysis_.analysisSeconds = analysisSeconds;
+    analysis_.numericSeconds = numericSeconds;
+    analysis_.complementSeconds = secondsSince(clock);
     bordered_ = L;
     rows_ = n;
     status = FactorStatus::ok;
@@ -472,10 +491,6 @@ class SingleBlasThread {
       reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
   int saved_ = 1;
 };
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 }  // namespace
 

@@ -41,6 +41,12 @@ struct FactorAnalysis {
   double entries = 0;    ///< nonzeros of the factor L (0: unknown)
   double bytes = 0;      ///< memory of L's values, padding of dense blocks included (0: unknown)
   double flops = 0;      ///< floating-point operations of the numeric factorisation (0: unknown)
+  // Wall time of the phases [s] (0: unknown): the ordering and the symbolic analysis (with a
+  // border: A's ordering, then the bordered matrix's analysis), the numeric factorisation,
+  // and the dense work that turns the border's block into the complement.
+  double analysisSeconds = 0;
+  double numericSeconds = 0;
+  double complementSeconds = 0;
 };
 
 class SparseFactor {
