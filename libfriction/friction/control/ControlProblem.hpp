@@ -79,6 +79,9 @@ class ControlProblem {
   const Eigen::VectorXd& componentMask() const { return componentMask_; }
   const Eigen::VectorXd& mu() const { return mu_; }
   double gamma() const { return gamma_; }
+  /// The γ of D from now on (semismoothNewton iterates with its own where the case's is far
+  /// below the interface stiffness: D = 0 does not depend on γ, the path does).
+  void setGamma(double gamma) { gamma_ = gamma; }
   double zeta() const { return zeta_; }
   SlipResponse& response() { return response_; }
   long numPrimal() const { return numPrimal_; }

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 #include <Eigen/Core>
 
@@ -447,14 +449,52 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
     const Eigen::VectorXd bm = b.cwiseProduct(p.componentMask());
     return p.stateFrom(bm, tau0 + Stt_ * bm, sigma0 + Snt_ * bm);
   };
+  // In 3D (k ≥ 2) the slip's direction enters D through N̂ = (τ − γβ)/|τ − γβ|, whose
+  // linearisation holds only while γ|Δβ| is small against |N| − ρ: with γ far below the
+  // interface stiffness (the diagonal of S_tt), Newton's steps along the slip's direction
+  // overshoot and the line search cuts them to nothing (measured: gammaRelative 1e-5 on the
+  // fault in a cube, J falling 1 % an iteration over 100). D = 0 does not depend on γ (only
+  // the path does), so Newton then iterates with γ_N = the mean diagonal of S_tt and checks
+  // the stop rule with the case's γ before it stops. With k = 1 there is no such direction:
+  // 2D iterates with the case's γ, as always.
+  const double gammaCase = p.gamma();
+  double gammaNewton = gammaCase;
+  if (k >= 2) {
+    double diagonal = 0;
+    int count = 0;
+    for (Eigen::Index j = 0; j < size; ++j)
+      if (p.componentMask()[j] != 0 && Stt_(j, j) > 0) diagonal += Stt_(j, j), ++count;
+    if (count > 0 && gammaCase < 1e-2 * diagonal / count) gammaNewton = diagonal / count;
+  }
+  struct RestoreGamma {
+    ControlProblem& p;
+    double gamma;
+    ~RestoreGamma() { p.setGamma(gamma); }
+  } restore{p, gammaCase};
+  p.setGamma(gammaNewton);
+  if (gammaNewton != gammaCase) {
+    std::ostringstream note;
+    note << std::setprecision(3) << "Newton's gamma " << gammaNewton
+         << " Pa/m: the case's is < 1e-2 x the interface stiffness";
+    r.note = note.str();
+  }
   ControlState s = stateAt(beta);
   r.history.push_back(record(p, s, 0, -1));
   double lastStep = -1;
   std::vector<SlipState> states;
   for (int it = 1; it <= stop_.maxIterations; ++it) {
     if (converged(p, s, lastStep)) {
-      r.status = OptimizerStatus::converged;
-      break;
+      if (p.gamma() == gammaCase) {
+        r.status = OptimizerStatus::converged;
+        break;
+      }
+      // The same β with the case's γ: converged there too, or Newton goes on with it.
+      p.setGamma(gammaCase);
+      s = stateAt(s.beta);
+      if (converged(p, s, lastStep)) {
+        r.status = OptimizerStatus::converged;
+        break;
+      }
     }
     // Generalised Jacobian on the free nodes. Stick rows read γ δ_i = −γ β_i: they give
     // δ_i = −β_i exactly (β = 0 at once), so only the other nodes' components enter the
@@ -500,6 +540,13 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
       r.status = converged(p, s, 0) ? OptimizerStatus::converged : OptimizerStatus::stalled;
       break;
     }
+  }
+  // What is written and judged is the state with the case's γ.
+  if (p.gamma() != gammaCase) {
+    p.setGamma(gammaCase);
+    s = stateAt(s.beta);
+    if (r.status == OptimizerStatus::converged && !converged(p, s, 0))
+      r.status = OptimizerStatus::maxIterations;
   }
   return finish(p, s, lastStep, r, beta);
 }
