@@ -226,6 +226,10 @@ bad "-line of one point" "-line: the two points of '1,2,3:1,2,3' coincide" -case
 bad "-line off the fault" \
   "-line: the segment (10 10 10) -> (11 10 10) does not cross fracture 'fault'" \
   -case "$b" -line 10,10,10:11,10,10 -profileCsv "$b/p.csv"
+# A value with a leading minus is the option's value, not another option.
+bad "-line with a leading minus" \
+  "-line: the segment (-10 10 10) -> (-11 10 10) does not cross fracture 'fault'" \
+  -case "$b" -line -10,10,10:-11,10,10 -profileCsv "$b/p.csv"
 bad "-samples" "-samples: expected a whole number >= 2, got '1'" -case "$b" -samples 1
 bad "image format" "unknown image format 'xyz'" -case "$b" -o "$b/maps.xyz"
 noOutput "$b" "bad options"

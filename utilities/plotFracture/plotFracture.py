@@ -676,7 +676,18 @@ def main(argv):
                     help="3D: also write the profile's samples as CSV (time,distance,x,y,z,"
                     "slipMagnitude,sigmaN,tauMagnitude,ST; nan off the fault)")
     ap.add_argument("-samples", metavar="N", help="3D: points along the profile (default 201)")
-    a = ap.parse_args(argv)
+    # A value that starts with a minus sign (-line -250,-433,0:250,433,0) would be read as an
+    # option: joined to its option as -line=VALUE, which argparse takes as it is.
+    joined, i = [], 0
+    while i < len(argv):
+        if (argv[i] in ("-line", "-times", "-samples") and i + 1 < len(argv)
+                and re.match(r"-[0-9.]", argv[i + 1])):
+            joined.append(argv[i] + "=" + argv[i + 1])
+            i += 2
+        else:
+            joined.append(argv[i])
+            i += 1
+    a = ap.parse_args(joined)
 
     case = a.case
     if not os.path.isdir(case):
