@@ -296,7 +296,7 @@ GEO
   expect "$out" "(gmsh .msh 4.1, 3D)"
   expect "$out" "volume:      1"
   expect "$out" "fault           5"
-  expect "$out" "unlabelled boundary triangles: 0"
+  expect "$out" "    unlabelled boundary faces: 0"
   # The square [1/4, 3/4]² at z = 1/2 lies inside the cube: its rim is the tip line (single
   # nodes), only its inner nodes are duplicated; n_Γ = (0, 0, −1) (Ω⁺ above).
   expect "$out" "Fracture fault (label 5)"

@@ -78,7 +78,9 @@ void printChecks(const Mesh& mesh, const MeshSettings& settings,
   std::vector<const Index*> unlabelled;
   for (std::size_t i = 0; i < found.unlabelled.size(); i += nf)
     unlabelled.push_back(&found.unlabelled[i]);
-  std::cout << "\n    unlabelled boundary " << facetName(mesh.dim) << "s: " << unlabelled.size();
+  // "faces" in 3D: as long as 2D's "edges", so that the column stays aligned.
+  std::cout << "\n    unlabelled boundary " << (mesh.dim == 3 ? "faces" : "edges") << ": "
+            << unlabelled.size();
   if (!unlabelled.empty())
     std::cout << ", in patch " << settings.defaultPatch
               << " (defaultPatch): " << few(unlabelled, [&](const Index* f) {
