@@ -2,15 +2,18 @@
 """frictionStudy: what accuracy costs in time.
 
 Sweeps stopping tolerance, optimizer, element order and mesh on copies of
-cases/inclinedCrack (analytic slip) and cases/paperBenchmark (reference: the finest mesh of
-the sweep, same order, semismoothNewton at tolerance 1e-12), runs splitFractureNodes and
+cases/inclinedCrack (2D, analytic slip), cases/paperBenchmark (2D; reference: the finest
+mesh of the sweep, same order, semismoothNewton at tolerance 1e-12) and cases/pennyCrack
+(3D, analytic slip, measured by the case's pennyError.py), runs splitFractureNodes and
 frictionSolver on each, and writes study.csv, study.md and study.png to --out. It also
 measures, on the finest paperBenchmark level, how much faster semismoothNewton reaches the
 slip error of 2000 steepestDescent iterations (alpha 2e-4, the paper's step; where it
 diverges on that mesh, alphaRelative 1, the scale-free default).
 
-Usage: frictionStudy.py [--quick] [--bin DIR] [--work DIR] [--out DIR] [--timeout S]
-  defaults: --bin <repo>/build/bin, --work <repo>/build/study, --out <work>/results.
+Usage: frictionStudy.py [--quick] [--cases CASE...] [--bin DIR] [--work DIR] [--out DIR]
+                        [--timeout S]
+  defaults: every case, --bin <repo>/build/bin, --work <repo>/build/study,
+  --out <work>/results.
 Nothing is written into cases/: the case folders are copied into --work.
 """
 import argparse
@@ -35,6 +38,12 @@ E_IC, NU_IC, TAU_IC, SIGN_IC, MU_IC, R_IC = 10e9, 0.25, 4.3301e6, 2.5e6, 0.4, 1.
 CENTRE = np.array([0.5, 0.5])
 DIRECTION = np.array([math.cos(math.radians(60.0)), math.sin(math.radians(60.0))])
 
+# pennyCrack: disc radius a = 1 m (cases/pennyCrack/README.md); meshes h = a/d on the disc.
+# a/16 is left out: its P2 run takes minutes and about 10 GB.
+PENNY_MESHES = (4, 6, 8)
+PENNY_A = 1.0
+
+CASES = ["inclinedCrack", "paperBenchmark", "pennyCrack"]
 OPTIMIZERS = ["steepestDescent", "armijo", "barzilaiBorwein", "lbfgs", "semismoothNewton",
               "semismoothNewton; variant krylov"]
 CSV_COLUMNS = ["case", "mesh", "hOrN", "order", "optimizer", "tolerance", "status",
@@ -44,12 +53,14 @@ CSV_COLUMNS = ["case", "mesh", "hOrN", "order", "optimizer", "tolerance", "statu
 
 def sd_alpha(case, h):
     """Fixed step of steepestDescent: the solver's scale-free default (alphaRelative 1, i.e.
-    (w/E)^2 with w the node spacing), stable on both cases and both orders; the paper's own
-    2e-4 is used for the promise below (P1 paper benchmark, where it is stable)."""
+    (w/E)^2 with w the node spacing), stable on both 2D cases and both orders and on the
+    penny's P1; on the penny's P2 it diverges within a few iterations, and the rows say so
+    (status diverged). The paper's own 2e-4 is used for the promise below (P1 paper
+    benchmark, where it is stable)."""
     return None
 
 
-def plan(quick):
+def plan(quick, cases=CASES):
     """The sweep: a list of (case, meshLabel, hOrN, order, optimizer, tolerance, maxIter)."""
     runs = []
     if quick:
@@ -70,6 +81,17 @@ def plan(quick):
                     for tol in tols:
                         mi = 2000 if opt in ("steepestDescent", "armijo") else 20000
                         runs.append(("paperBenchmark", "n=%d" % n, n, order, opt, tol, mi))
+        # pennyCrack: the coarsest mesh with both orders, the next with P1 (3D runs cost
+        # seconds where the 2D ones cost milliseconds; lbfgs on P2 a/4 needs 40 s for 1e-4);
+        # steepestDescent checks that the default step is stable in 3D.
+        for d, order in ((4, 1), (4, 2), (6, 1)):
+            opts = ["semismoothNewton"] if order == 2 else ["lbfgs", "semismoothNewton"]
+            if (d, order) == (4, 1):
+                opts = ["steepestDescent"] + opts
+            for opt in opts:
+                for tol in tols:
+                    mi = 2000 if opt == "steepestDescent" else 20000
+                    runs.append(("pennyCrack", "a/%d" % d, PENNY_A / d, order, opt, tol, mi))
     else:
         tols = [1e-2, 1e-4, 1e-6, 1e-8, 1e-10]
         for d in (8, 16, 32, 64, 128):
@@ -82,7 +104,13 @@ def plan(quick):
                 for opt in OPTIMIZERS:
                     for tol in tols:
                         runs.append(("paperBenchmark", "n=%d" % n, n, order, opt, tol, 20000))
-    return runs
+        for d in PENNY_MESHES:
+            for order in (1, 2):
+                for opt in OPTIMIZERS:
+                    for tol in tols:
+                        runs.append(("pennyCrack", "a/%d" % d, PENNY_A / d, order, opt, tol,
+                                     20000))
+    return [r for r in runs if r[0] in cases]
 
 
 def sh(cmd, cwd=None, log=None):
@@ -103,14 +131,17 @@ def base_case(work, case, label, value):
     shutil.copytree(os.path.join(REPO, "cases", case), d,
                     ignore=shutil.ignore_patterns("log.*", "postProcessing", "VTK", "splitMesh",
                                                   "[1-9]*"))
-    arg = ["-h", repr(value)] if case == "inclinedCrack" else ["-n", str(value)]
+    arg = ["-n", str(value)] if case == "paperBenchmark" else ["-h", repr(value)]
     sh(["./Allmesh"] + arg, cwd=d, log=os.path.join(d, "log.Allmesh"))
     cd = os.path.join(d, "system", "controlDict")
     with open(cd) as f:
         text = f.read()
     text = re.sub(r"(?m)^\s*writeVTK\s+[^;]*;\s*\n?", "", text)
+    # pennyError.py integrates over the fault triangles, which only the .vtp gives: the
+    # penny's runs write VTK (its time is in their wall time).
     with open(cd, "w") as f:
-        f.write(text.rstrip("\n") + "\nwriteVTK        no;\n")
+        f.write(text.rstrip("\n") + "\nwriteVTK        %s;\n"
+                % ("yes" if case == "pennyCrack" else "no"))
     open(stamp, "w").close()
     return d
 
@@ -218,13 +249,47 @@ def run_one(work, base, tag, order, opt, tol, max_iter, alpha, binary, timeout):
         return res, None
     fdir = os.path.join(d, "1", "fractures")
     tab = read_table(os.path.join(fdir, sorted(os.listdir(fdir))[0]))
-    # keep the work folder small: the fields are not needed
+    # keep the work folder small: the fields are not needed (the fault's .vtp is)
     shutil.rmtree(os.path.join(d, "1", "uniform"), ignore_errors=True)
-    try:
-        os.remove(os.path.join(d, "1", "D"))
-    except OSError:
-        pass
+    vtk = os.path.join(d, "VTK")
+    for path in [os.path.join(d, "1", "D")] + \
+            [os.path.join(vtk, f) for f in (os.listdir(vtk) if os.path.isdir(vtk) else [])
+             if f.endswith(".vtu")]:
+        try:
+            os.remove(path)
+        except OSError:
+            pass
     return res, tab
+
+
+_penny = []
+
+
+def penny_error(run_dir):
+    """relL2Error of cases/pennyCrack/pennyError.py on a run folder: the relative L2(Gamma)
+    error of |slip| against the analytic penny slip (the module is imported once: each
+    call as a subprocess would pay for importing VTK again)."""
+    if not _penny:
+        import importlib.util
+        spec = importlib.util.spec_from_file_location(
+            "pennyError", os.path.join(REPO, "cases", "pennyCrack", "pennyError.py"))
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        _penny.append(mod)
+    mod = _penny[0]
+    import contextlib
+    import io
+    buf = io.StringIO()
+    try:
+        with contextlib.redirect_stdout(buf):
+            rc = mod.main(["-case", run_dir])
+    except mod.InputError as e:
+        raise RuntimeError("pennyError.py on %s: %s" % (run_dir, e))
+    m = re.search(r"(?m)^relL2Error\s+(\S+)$", buf.getvalue())
+    if rc != 0 or not m:
+        raise RuntimeError("pennyError.py on %s: exit %s, no relL2Error line:\n%s"
+                           % (run_dir, rc, buf.getvalue()))
+    return float(m.group(1))
 
 
 def machine():
@@ -286,11 +351,20 @@ def write_outputs(out, rows, ratio_lines, mode, total_seconds, refs):
           "Mode: %s; total study time %.1f s." % (mode, total_seconds), "",
           "Machine: `nproc` %s, CPU %s, memory %s, Python %s." % (
               nproc, cpu, mem, platform.python_version()), "",
-          "slipError: relative L²(Γ) error of the slip; inclinedCrack against the analytic "
-          "slip, paperBenchmark against %s. wallSeconds: the whole frictionSolver run "
-          "(reading, assembly, factorisation, iterations, writing). Status `maxIterations`: "
-          "the tolerance was not reached (a data point, not a failure)." % refs, ""]
-    for case in ("inclinedCrack", "paperBenchmark"):
+          "slipError: relative L²(Γ) error of the slip; " + "; ".join(
+              text for case, text in (
+                  ("inclinedCrack", "inclinedCrack against the analytic slip"),
+                  ("paperBenchmark", "paperBenchmark against %s" % refs),
+                  ("pennyCrack", "pennyCrack (3D, P1 and P2 on the same tetrahedra, h = a/d "
+                   "on the disc): the error of |slip| against the analytic penny slip "
+                   "(`relL2Error` of cases/pennyCrack/pennyError.py; its interpolation floor "
+                   "is 0.055 (P1) and 0.015 (P2) at a/8, the cube's finite size about 0.005)"))
+              if any(r["case"] == case for r in rows)) +
+          ". wallSeconds: the whole frictionSolver run (reading, assembly, factorisation, "
+          "iterations, writing; the penny's runs also write their VTK files, which "
+          "pennyError.py reads). Status `maxIterations`: the tolerance was not reached (a data "
+          "point, not a failure).", ""]
+    for case in CASES:
         sel = [r for r in rows if r["case"] == case]
         if not sel:
             continue
@@ -305,8 +379,10 @@ def write_outputs(out, rows, ratio_lines, mode, total_seconds, refs):
                 fmt(r["factorSeconds"], "s"), fmt(r["wallSeconds"], "s"),
                 fmt(r["relResidual"]), fmt(r["maxExcessST"]), fmt(r["slipError"])))
         md.append("")
-    md += ["## Semismooth Newton against the paper's steepest descent", ""] + \
-          ["* " + s for s in ratio_lines] + ["", "## GetFEM", "", getfem_note(), ""]
+    if ratio_lines:
+        md += ["## Semismooth Newton against the paper's steepest descent", ""] + \
+              ["* " + s for s in ratio_lines] + [""]
+    md += ["## GetFEM", "", getfem_note(), ""]
     with open(os.path.join(out, "study.md"), "w") as f:
         f.write("\n".join(md))
     plot(out, rows)
@@ -316,8 +392,9 @@ def plot(out, rows):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    cases = ["inclinedCrack", "paperBenchmark"]
-    fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
+    cases = [c for c in CASES if any(r["case"] == c for r in rows)]
+    fig, axes = plt.subplots(1, len(cases), figsize=(6.5 * len(cases), 5.5), squeeze=False)
+    axes = axes[0]
     markers = dict(zip(OPTIMIZERS, "os^Dvx"))
     colors = dict(zip(OPTIMIZERS, ["C0", "C1", "C2", "C3", "C4", "C5"]))
     for ax, case in zip(axes, cases):
@@ -340,8 +417,9 @@ def plot(out, rows):
         ax.set_yscale("log")
         ax.set_xlabel("frictionSolver wall time [s]")
         ax.set_ylabel("relative L²(Γ) slip error (0 drawn at 1e-16)")
-        ax.set_title(case + (" (vs analytic slip)" if case == "inclinedCrack"
-                             else " (vs finest-mesh reference)"))
+        ax.set_title(case + {"inclinedCrack": " (vs analytic slip)",
+                             "paperBenchmark": " (vs finest-mesh reference)",
+                             "pennyCrack": " (3D, |slip| vs analytic)"}[case])
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
     fig.suptitle("What accuracy costs: points are tolerances × meshes")
@@ -354,6 +432,8 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[1],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--quick", action="store_true", help="the small sweep (a few minutes)")
+    p.add_argument("--cases", nargs="+", choices=CASES, default=CASES, metavar="CASE",
+                   help="the cases to sweep (default all: %s)" % " ".join(CASES))
     p.add_argument("--bin", default=os.path.join(REPO, "build", "bin"))
     p.add_argument("--work", default=os.path.join(REPO, "build", "study"))
     p.add_argument("--out", default=None, help="default: WORK/results")
@@ -372,7 +452,8 @@ def main():
             sys.exit("frictionStudy: refusing to write into cases/ (%s)" % d)
     os.makedirs(work, exist_ok=True)
     t_start = time.perf_counter()
-    runs = plan(a.quick)
+    a.cases = [c for c in CASES if c in a.cases]
+    runs = plan(a.quick, a.cases)
 
     bases = {}
     for case, label, v, *_ in runs:
@@ -380,17 +461,19 @@ def main():
             bases[(case, label)] = base_case(work, case, label, v)
     # paperBenchmark reference: finest level, per order, semismoothNewton at 1e-12
     pb_levels = sorted({v for c, l, v, *_ in runs if c == "paperBenchmark"})
-    finest = pb_levels[-1]
-    fbase = bases[("paperBenchmark", "n=%d" % finest)]
+    finest = pb_levels[-1] if pb_levels else None
+    fbase = bases[("paperBenchmark", "n=%d" % finest)] if pb_levels else None
     refs = {}
-    for order in (1, 2):
+    for order in ((1, 2) if pb_levels else ()):
         res, tab = run_one(work, fbase, "reference_P%d" % order, order, "semismoothNewton",
                            1e-12, 200, None, binary, timeout)
         if tab is None or res["status"] != "converged":
             sys.exit("frictionStudy: the paperBenchmark reference (n=%d, P%d) failed: %s"
                      % (finest, order, res["status"]))
         refs[order] = tab
-    print("reference: paperBenchmark n=%d, semismoothNewton tolerance 1e-12 (P1, P2)" % finest)
+    if pb_levels:
+        print("reference: paperBenchmark n=%d, semismoothNewton tolerance 1e-12 (P1, P2)"
+              % finest)
 
     rows = []
     hit_max = {}   # (case, mesh, order, opt) -> row of the loosest tolerance that hit the limit
@@ -411,7 +494,15 @@ def main():
         row.update(res)
         err = float("nan")
         if tab is not None:
-            err = ic_error(tab) if case == "inclinedCrack" else pb_error(tab, refs[order])
+            if case == "inclinedCrack":
+                err = ic_error(tab)
+            elif case == "paperBenchmark":
+                err = pb_error(tab, refs[order])
+            else:
+                try:
+                    err = penny_error(os.path.join(work, "runs", tag))
+                except RuntimeError as e:
+                    print("frictionStudy: %s" % e, file=sys.stderr)
         row["slipError"] = err
         rows.append(row)
         if row["status"] != "converged":
@@ -423,7 +514,7 @@ def main():
     # The promise: semismoothNewton vs 2000 steepestDescent iterations (alpha 2e-4) on the
     # finest paperBenchmark level of this sweep, P1 (P2 reported as well).
     ratio_lines = []
-    for order in (1, 2):
+    for order in ((1, 2) if pb_levels else ()):
         res, tab = run_one(work, fbase, "ratio_sd_P%d" % order, order, "steepestDescent", 1e-14,
                            2000, 2e-4, binary, timeout)
         if tab is None:
@@ -473,8 +564,11 @@ def main():
             print(line)
 
     total = time.perf_counter() - t_start
-    write_outputs(out, rows, ratio_lines, "quick" if a.quick else "full", total,
-                  "semismoothNewton at tolerance 1e-12 on n = %d (same order)" % finest)
+    mode = ("quick" if a.quick else "full") + \
+        ("" if a.cases == CASES else " (cases %s)" % ", ".join(a.cases))
+    write_outputs(out, rows, ratio_lines, mode, total,
+                  "semismoothNewton at tolerance 1e-12 on n = %d (same order)" % finest
+                  if pb_levels else None)
     bad = [r for r in rows if r["status"].startswith(("crash", "timeout"))]
     print("wrote %s/study.csv (%d rows), study.md, study.png in %.1f s%s"
           % (out, len(rows), total, "; %d runs crashed or timed out" % len(bad) if bad else ""))
