@@ -27,13 +27,9 @@ sed -i '/^crack/,$d' "$work/linear/constant/fractureProperties"
 "$bin/splitFractureNodes" -case "$work/linear" >"$work/linear/log.splitFractureNodes"
 grep -E "points:|tips" "$work/friction/log.splitFractureNodes" | head -3
 
-run() {  # run CASE: wall seconds of frictionSolver
-  local t0 t1
-  t0=$(date +%s.%N)
-  "$bin/frictionSolver" -case "$1" >"$1/log.frictionSolver" 2>&1
-  t1=$(date +%s.%N)
-  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f", b - a }'
-}
+# shellcheck source=timedRun.sh
+source "$root/utilities/frictionStudy/timedRun.sh"
+run() { timedRun "$bin" "$1"; }  # run CASE: wall seconds of frictionSolver
 tl=$(run "$work/linear")   # the reference first, then each variant, on the same machine state
 for variant in condensed krylov; do
   rm -rf "$work/friction/1" "$work/friction/postProcessing"

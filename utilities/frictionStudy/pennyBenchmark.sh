@@ -43,13 +43,9 @@ sed -i '/^fault/,$d' "$work/linear/constant/fractureProperties"
 "$bin/splitFractureNodes" -case "$work/linear" >"$work/linear/log.splitFractureNodes"
 grep -E "^ +nodes:" "$work/friction/log.splitFractureNodes" | head -1 | sed 's/^ */fault /'
 
-run() {  # run CASE: wall seconds of frictionSolver
-  local t0 t1
-  t0=$(date +%s.%N)
-  "$bin/frictionSolver" -case "$1" >"$1/log.frictionSolver" 2>&1
-  t1=$(date +%s.%N)
-  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", b - a }'
-}
+# shellcheck source=timedRun.sh
+source "$root/utilities/frictionStudy/timedRun.sh"
+run() { timedRun "$bin" "$1"; }  # run CASE: wall seconds of frictionSolver
 echo "Running the linear solve, then the frictional one ..."
 tl=$(run "$work/linear")
 tf=$(run "$work/friction")
