@@ -7,10 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <numeric>
 #include <set>
+#include <sstream>
 
 #include <Eigen/Geometry>
 
@@ -492,4 +494,42 @@ TEST_CASE("penny crack invariance: rotated, mirrored or renumbered, the slip is 
           "[regression][3d][invariance][penny]") {
   // The committed mesh (h = a/8), P1: each run about a second.
   checkInvariance("pennyCrack", "pennyCrack", "penny-invariance", mapRemoteStress);
+}
+
+TEST_CASE("3D P2: the gradient methods' default steps do not diverge",
+          "[regression][3d][optimizer]") {
+  // With the P1 step scale the fixed step diverged on P2 from alphaRelative 0.2 (this case)
+  // and 0.5 (penny a/4) within a few iterations; the P2 scale is a twentieth of it. Every
+  // gradient method with its default step: no step diverges; with the fixed step and with
+  // Armijo's rule J never increases within a step (Barzilai–Borwein and L-BFGS need not be
+  // monotone).
+  for (const char* type : {"steepestDescent", "armijo", "barzilaiBorwein", "lbfgs"}) {
+    Case c(kCase, std::string("3d-P2-default-") + type);
+    c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+    c.edit("system/frictionSolution", "type +semismoothNewton;", std::string("type ") + type + ";");
+    c.edit("system/frictionSolution", "maxIterations +100;", "maxIterations 60;");
+    const int rc = c.solve();
+    INFO(type << "\n" << c.log());
+    CHECK((rc == 0 || rc == 3));
+    CHECK_THAT(c.log(), !Catch::Contains("diverged"));
+    std::ifstream history(c.dir() / "postProcessing" / "convergence.dat");
+    REQUIRE(history);
+    std::string line, lastTime;
+    double lastJ = 0;
+    int rows = 0, increases = 0;
+    while (std::getline(history, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream in(line);
+      std::string time;
+      int iteration = 0;
+      double J = 0;
+      in >> time >> iteration >> J;
+      CHECK(std::isfinite(J));
+      if (time == lastTime && iteration > 0 && J > lastJ * (1 + 1e-12)) ++increases;
+      lastTime = time, lastJ = J, ++rows;
+    }
+    CHECK(rows >= 4 * 2);  // four steps, an iteration at least each: not an empty history
+    const std::string t = type;
+    if (t == "steepestDescent" || t == "armijo") CHECK(increases == 0);
+  }
 }
