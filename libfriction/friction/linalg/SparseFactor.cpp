@@ -73,7 +73,8 @@ class SimplicialLdltBackend : public SparseFactor::Backend {
 };
 
 // CHOLMOD is called with 64-bit indices (its cholmod_l_ functions): with 32-bit ones a factor
-// is limited to 2³¹ entries (16 GB of values), which a 3D mesh of 850 000 unknowns reaches.
+// is limited to 2³¹ stored values (16 GB), and the bordered factor of a 3D penny of 849 360
+// unknowns (1.77e9 entries, more with the supernodes' padding) failed with them.
 using CholmodIndex = SuiteSparse_long;
 using CholmodMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, CholmodIndex>;
 
@@ -163,7 +164,7 @@ std::string cholmodProblem(int status) {
     case CHOLMOD_OUT_OF_MEMORY:
       return "out of memory";
     case CHOLMOD_TOO_LARGE:
-      return "the factor would exceed CHOLMOD's 32-bit index range (2^31 entries)";
+      return "the factor is too large for CHOLMOD's integer type";
     case CHOLMOD_NOT_POSDEF:
       return "not positive definite";
     default:
@@ -209,8 +210,7 @@ class CholmodBackend : public SparseFactor::Backend {
     auto clock = std::chrono::steady_clock::now();
     llt_.analyzePattern(A);
     const double analysisSeconds = secondsSince(clock);
-    recordAnalysis(llt_.cholmodFactor(),
-                   llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
+    recordAnalysis(llt_.cholmodFactor());
     if (!llt_.cholmodFactor() || llt_.cholmod().status < 0) return FactorStatus::failed;
     clock = std::chrono::steady_clock::now();
     llt_.factorize(A);
@@ -254,8 +254,7 @@ class CholmodBackend : public SparseFactor::Backend {
     auto clock = std::chrono::steady_clock::now();
     {
       llt_.analyzePattern(CholmodMatrix(A32));
-      recordAnalysis(llt_.cholmodFactor(),
-                     llt_.cholmodFactor() ? llt_.cholmodFactor()->ordering : -1);
+      recordAnalysis(llt_.cholmodFactor());
       if (!llt_.cholmodFactor() || cm.status < 0) {
         status = FactorStatus::failed;
         return true;
@@ -398,8 +397,10 @@ class CholmodBackend : public SparseFactor::Backend {
   FactorAnalysis analysis() const override { return analysis_; }
 
  private:
-  // The analysis CHOLMOD just made (its common block holds the last one's counts).
-  void recordAnalysis(const cholmod_factor* L, int ordering) {
+  // The analysis CHOLMOD just made (its common block holds the last one's counts); the
+  // ordering is L's own unless given (a bordered factor's is "given": A's is the one chosen).
+  void recordAnalysis(const cholmod_factor* L, int ordering = -2) {
+    if (ordering == -2) ordering = L ? L->ordering : -1;
     const cholmod_common& cm = llt_.cholmod();
     analysis_.ordering = ordering >= 0 ? cholmodOrderingName(ordering) : "";
     analysis_.entries = cm.lnz > 0 ? cm.lnz : 0;
