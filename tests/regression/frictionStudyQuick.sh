@@ -7,6 +7,12 @@
 set -euo pipefail
 bin=$1 src=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
+# A case name the study does not know: exit 2, naming the valid ones, before any run.
+rc=0
+err=$(/usr/bin/python3 "$src/utilities/frictionStudy/frictionStudy.py" --cases nope --bin "$bin" \
+  --work "$work/bad" 2>&1) || rc=$?
+[[ $rc == 2 && $err == *"'pennyCrack'"* && ! -e $work/bad/runs ]] ||
+  { echo "FAIL: --cases nope: exit $rc: $err" >&2; exit 1; }
 /usr/bin/python3 "$src/utilities/frictionStudy/frictionStudy.py" --quick --bin "$bin" \
   --work "$work" --out "$work/results" | tee "$work/log.frictionStudy"
 out=$work/results
