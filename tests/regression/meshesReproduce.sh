@@ -34,6 +34,11 @@ cp "$src/cases/pennyCrack/constant/mesh/pennyCrack.geo" "$work/pennyCrack/"
   fail "gmsh failed: $(tail "$work/pennyCrack/gmsh.log")"
 cmp -s "$work/pennyCrack/pennyCrack.msh" "$src/cases/pennyCrack/constant/mesh/pennyCrack.msh" ||
   fail "cases/pennyCrack/constant/mesh/pennyCrack.msh differs from what pennyCrack.geo makes; run its Allmesh"
+cp "$src/cases/sneddonCrack/constant/mesh/sneddonCrack.geo" "$work/"
+(cd "$work" && gmsh -2 -format msh41 sneddonCrack.geo -o sneddonCrack.msh >gmsh.log 2>&1) ||
+  fail "gmsh failed: $(tail "$work/gmsh.log")"
+cmp -s "$work/sneddonCrack.msh" "$src/cases/sneddonCrack/constant/mesh/sneddonCrack.msh" ||
+  fail "cases/sneddonCrack/constant/mesh/sneddonCrack.msh differs from what sneddonCrack.geo makes; run its Allmesh"
 # 3D meshes are large: the work folders hold results compared across builds, keep only 2D's.
 rm -rf "$work/pennyCrack"
 echo "PASS: committed meshes match their generators"

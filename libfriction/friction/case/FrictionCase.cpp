@@ -113,7 +113,13 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
     if (!fp.isDict(g.name))
       throw InputError(fp.location(), "no entry for fracture '" + g.name +
                                           "' (expected a sub-dictionary with its 'law')");
-    fractures_.push_back({g.name, FrictionLaw::New(fp.subDict(g.name))});
+    const Dictionary& fd = fp.subDict(g.name);
+    // Bilateral is the paper's model (the faces slide but never separate) and the answer of a
+    // fracture held shut; unilateral lets the faces open (docs/method.md §8).
+    const bool unilateral =
+        fd.getChoiceOr("contact", {"bilateral", "unilateral"}, "bilateral") == "unilateral";
+    fractures_.push_back({g.name, FrictionLaw::New(fd), unilateral});
+    opening_ |= unilateral;
   }
   fp.checkAllRead();
 
@@ -147,12 +153,30 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   } else {
     gammaRelative_ = control.getScalarOr("gammaRelative", 1.0, Bounds::positive());
   }
+  // γ_n: by default γ's own value (both weigh a traction against a jump).
+  switch (control.alternative({{"gammaNormal"}, {"gammaNormalRelative"}}, 2)) {
+    case 0:
+      gammaNGiven_ = GammaNGiven::absolute;
+      gammaN_ = control.getScalar("gammaNormal", Bounds::positive());
+      break;
+    case 1:
+      gammaNGiven_ = GammaNGiven::relative;
+      gammaNRelative_ = control.getScalar("gammaNormalRelative", Bounds::positive());
+      break;
+    default:
+      break;
+  }
   zeta_ = control.getScalarOr("zeta", 0.0, Bounds::nonNegative());
   gradient_ = control.getChoiceOr("gradient", {"exact", "frozenRho"}, "exact") == "exact"
                   ? GradientKind::exact
                   : GradientKind::frozenRho;
   warmStart_ = control.getBoolOr("warmStart", false);
   optimizer_ = Optimizer::New(control.subDict("optimizer"));
+  if (opening_ && !optimizer_->handlesOpening())
+    control.subDict("optimizer")
+        .fail("variant",
+              "key 'variant': the krylov variant does not take fractures that open (contact "
+              "unilateral in constant/fractureProperties); use variant condensed");
   sol.checkAllRead();
 }
 
@@ -169,6 +193,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
     log << "Fracture " << f.name << ": law " << f.law->name();
     if (f.law->mu() > 0) log << ", frictionCoefficient " << f.law->mu();
     if (f.law->cohesion() > 0) log << ", threshold " << f.law->cohesion() << " Pa";
+    if (opening_) log << ", contact " << (f.unilateral ? "unilateral" : "bilateral");
     log << "\n";
   }
   log << "Control: optimizer " << optimizer_->name() << ", gradient "
@@ -176,6 +201,12 @@ void FrictionCase::printSettings(std::ostream& log) const {
       << " Pa/m"
       << (gammaAbsolute_ ? "" : " (gammaRelative " + formatNumber(gammaRelative_) + " x E/h)")
       << ", zeta " << zeta_;
+  if (opening_)
+    log << ", gammaNormal " << gammaN_ << " Pa/m"
+        << (gammaNGiven_ == GammaNGiven::relative
+                ? " (gammaNormalRelative " + formatNumber(gammaNRelative_) + " x E/h)"
+            : gammaNGiven_ == GammaNGiven::sameAsGamma ? " (gamma's)"
+                                                       : "");
   if (optimizer_->name() != "semismoothNewton")
     log << ", alpha " << optimizer_->alpha() << " m/Pa"
         << (optimizer_->alphaIsRelative() ? " (alphaRelative x (h/E)^2)" : "");
@@ -216,6 +247,13 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   // length h (docs/method.md §4): then γβ and τ are of the same size for slips of order h·τ/E.
   const double h = meanFractureEdge();
   if (!gammaAbsolute_) gamma_ = h > 0 ? gammaRelative_ * material_->youngModulus() / h : 1.0;
+  if (gammaNGiven_ == GammaNGiven::relative)
+    gammaN_ = h > 0 ? gammaNRelative_ * material_->youngModulus() / h : 1.0;
+  else if (gammaNGiven_ == GammaNGiven::sameAsGamma)
+    gammaN_ = gamma_;
+  unilateral_.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k)
+    unilateral_[k] = fractures_[nodes[k].fracture].unilateral ? 1.0 : 0.0;
   // Gradient steps scale like (w/E)², w the length of the smallest lumped weight of Γ (the M
   // of the M-gradient): h for P1, h/3 at the vertices for P2 (Simpson) in 2D.
   if (n > 0) {
@@ -622,9 +660,25 @@ long FrictionCase::restart(std::ostream& log) {
                         "order changed since this folder was written");
   const long step = st.getInt("step", Bounds::nonNegative());
   const double t0 = st.getScalar("time");
+  std::vector<double> opening;
+  if (opening_) {
+    if (!st.found("opening"))
+      throw InputError(st.location(),
+                       "no key 'opening': this folder was written by a run whose fractures "
+                       "could not open (contact unilateral in constant/fractureProperties "
+                       "changed since)");
+    opening = st.getScalarList("opening");
+    if (static_cast<Eigen::Index>(opening.size()) != system_->size())
+      st.fail("opening", "key 'opening': " + std::to_string(opening.size()) +
+                             " values, expected one per fracture node (" +
+                             std::to_string(system_->size()) + ")");
+  }
   st.checkAllRead();
   slip_ = Eigen::Map<const Eigen::VectorXd>(slip.data(), expected);
-  lastBeta_ = Eigen::Map<const Eigen::VectorXd>(beta.data(), expected);
+  lastBeta_.resize(expected + static_cast<Eigen::Index>(opening.size()));
+  lastBeta_.head(expected) = Eigen::Map<const Eigen::VectorXd>(beta.data(), expected);
+  for (std::size_t i = 0; i < opening.size(); ++i)
+    lastBeta_[expected + static_cast<Eigen::Index>(i)] = opening[i];
 
   // What a killed run wrote after t0 goes: every time after it has a name that reads back
   // above both t0 and the value of t0's own name (names are distinct, TimeControl.hpp).
@@ -653,7 +707,9 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   FractureSystem& sys = *system_;
   // k tangential components per control node (SlipResponse.hpp): β, τ and the slip are k·n.
   const Eigen::Index n = sys.size(), perNode = sys.blockSize();
-  Eigen::VectorXd beta = Eigen::VectorXd::Zero(perNode * n);
+  // The control: β (k·n), then with openings g (n).
+  const Eigen::Index controlSize = opening_ ? perNode * n + n : perNode * n;
+  Eigen::VectorXd beta = Eigen::VectorXd::Zero(controlSize);
   lastBeta_ = beta;
   if (!outputPrepared_) prepareOutput(false, log);
   long first = 1;
@@ -685,7 +741,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       r.reused = true;
       r.report.status = OptimizerStatus::converged;
       r.relResidual = results.back().relResidual;
-      last_.beta.setZero();
+      last_.beta.head(perNode * n).setZero();  // no slip increment; the openings stay
     } else
       try {
         sys.setStep(load, slip_);
@@ -697,8 +753,10 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         }
         // ρ = c − μ(σ_n + p): the pressure lowers the cohesion term node by node.
         const Eigen::VectorXd cohesion = cohesion_ - mu_.cwiseProduct(pressure);
-        ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_);
-        beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(perNode * n);
+        OpeningSettings openings{unilateral_, pressure, gammaN_};
+        ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_,
+                               opening_ ? &openings : nullptr);
+        beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(controlSize);
         if (n > 0)
           r.report = optimizer_->minimize(problem, beta);
         else
@@ -730,7 +788,9 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     r.lastStepNorm = r.report.history.empty() ? 0 : std::max(0.0, r.report.history.back().stepNorm);
     for (Eigen::Index i = 0; i < n; ++i) {
       const double effective = last_.sigmaN[i] + pressure[i];
-      if (sys.freeMask()[i] > 0 && effective < 0)
+      // Open faces (contact unilateral) carry no friction: σ'_n = 0 there up to round-off.
+      const bool open = !last_.contact.empty() && !last_.contact[i];
+      if (sys.freeMask()[i] > 0 && effective < 0 && !open)
         r.maxExcessST = std::max(
             r.maxExcessST,
             (blockNorm(last_.tau.segment(perNode * i, perNode)) - std::max(last_.rho[i], 0.0)) /
@@ -746,7 +806,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       results.push_back(std::move(r));
       break;
     }
-    slip_ += last_.beta;
+    slip_ += last_.beta.head(perNode * n);
     lastBeta = last_.beta;
     // The time as its folder name: it identifies the step when a restart trims the history.
     std::ostringstream lines;
@@ -801,8 +861,15 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         << "  maxExcessST " << r.maxExcessST << "  |dBeta| " << r.lastStepNorm << "  "
         << toString(r.report.status)
         << (!r.reused && n > 0 && r.report.iterations == 0 ? " (stuck at the trial state)" : "")
-        << (r.report.note.empty() ? "" : "  [" + r.report.note + "]")
-        << (r.written ? "  (written)" : "");
+        << (r.report.note.empty() ? "" : "  [" + r.report.note + "]");
+    if (opening_) {
+      // Fractures that open: how many nodes are in each state (all fractures together).
+      std::map<std::string, long> count;
+      for (Eigen::Index i = 0; i < n; ++i) ++count[nodeState(i)];
+      log << "  nodes stick " << count["stick"] << " slip " << count["slip"] << " open "
+          << count["open"] << " tip " << count["tip"];
+    }
+    log << (r.written ? "  (written)" : "");
     // Progress: step k of n, elapsed, estimated remaining (on the step's own line, so a
     // log gets no extra lines).
     const double elapsed =
@@ -832,7 +899,8 @@ void FrictionCase::judgeStep(StepResult& r) const {
   std::vector<std::string> bad;
   if (!sys.lastSplitDisplacement().allFinite()) bad.push_back("displacement");
   if (!last_.tau.allFinite() || !last_.sigmaN.allFinite()) bad.push_back("tractions");
-  if (!last_.beta.allFinite() || !(slip_ + last_.beta).allFinite()) bad.push_back("slip");
+  if (!last_.beta.allFinite() || !(slip_ + last_.beta.head(slip_.size())).allFinite())
+    bad.push_back("slip");
   if (!last_.D.allFinite() || !std::isfinite(r.J) || !std::isfinite(r.relResidual) ||
       !std::isfinite(r.maxExcessST))
     bad.push_back("residual or J");
@@ -889,6 +957,20 @@ void FrictionCase::judgeStep(StepResult& r) const {
   }
 }
 
+std::string FrictionCase::nodeState(Eigen::Index k) const {
+  const FractureSystem& sys = *system_;
+  if (sys.controlNodes()[k].tip) return "tip";
+  // Nodes on Dirichlet patches have their jump held at zero: they stick.
+  if (sys.freeMask()[k] == 0) return "stick";
+  // Faces apart (contact unilateral): open, whatever the tangential law says (τ = 0 there).
+  if (!last_.contact.empty() && !last_.contact[k]) return "open";
+  // The law's bound ρ ≤ 0 frees a node; it is open only where σ'_n ≥ 0 — compressed
+  // (frictionless, μ_f = 0) it slides freely.
+  const double effective = last_.sigmaN[k] + (pressure_.size() ? pressure_[k] : 0.0);
+  const SlipState law = last_.node[k].state;
+  return law == SlipState::open ? (effective >= 0 ? "open" : "slip") : toString(law);
+}
+
 void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step) {
   const int precision = time_->writePrecision();
   TimeFolder folder(caseDir_, time_->timeName(r.time));
@@ -941,14 +1023,11 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
       const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
       const double tauNorm = blockNorm(last_.tau.segment(at, kb));
       row.ST = tip ? nan : effective < 0 ? tauNorm / -effective : 0.0;
-      // Nodes on Dirichlet patches have their jump held at zero: they stick. The law's bound
-      // ρ ≤ 0 frees a node; it is open only where σ'_n ≥ 0 — compressed (frictionless, μ_f = 0)
-      // it slides freely.
-      const SlipState law = last_.node[k].state;
-      row.state = tip                      ? "tip"
-                  : held                   ? "stick"
-                  : law == SlipState::open ? (effective >= 0 ? "open" : "slip")
-                                           : toString(law);
+      row.state = nodeState(static_cast<Eigen::Index>(k));
+      if (opening_) {
+        row.hasOpening = true;
+        row.opening = beta[kb * static_cast<Eigen::Index>(nodes.size()) + k];
+      }
       rowOfPlus[nodes[k].plus] = static_cast<Index>(rows.size());
       rows.push_back(row);
     }
@@ -999,7 +1078,11 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   state.entry("time", r.time);
   state.entry("step", static_cast<long>(step));
   state.entry("slip", std::vector<double>(slip_.data(), slip_.data() + slip_.size()));
-  state.entry("lastIncrement", std::vector<double>(beta.data(), beta.data() + beta.size()));
+  state.entry("lastIncrement", std::vector<double>(beta.data(), beta.data() + slip_.size()));
+  // With fractures that open: the opening g per node [m] (0 where a fracture may not open).
+  if (opening_)
+    state.entry("opening",
+                std::vector<double>(beta.data() + slip_.size(), beta.data() + beta.size()));
   state.writeAtomic(folder.file("uniform/frictionState"));
 
   // The VTK files first: the rename of the time folder commits the time. A run killed before

@@ -104,9 +104,12 @@ class FrictionCase {
   struct FractureSettings {
     std::string name;
     std::unique_ptr<FrictionLaw> law;
+    bool unilateral = false;  ///< contact unilateral: the faces may open
   };
 
   void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step);
+  /// Control node k's state in the last step: stick, slip, open or tip.
+  std::string nodeState(Eigen::Index k) const;
   /// Judge the state to be written (last_, the primal solve just done): non-finite values
   /// make the step diverged; a residual above the tolerance makes a 'converged' step
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.
@@ -130,6 +133,16 @@ class FrictionCase {
   std::string linearSolver_ = "cholmod";
   double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
   bool gammaAbsolute_ = false, warmStart_ = false;
+  /// Fractures that open (docs/method.md §8): any fracture with contact unilateral; γ_n and
+  /// how it was given (gammaNormal, gammaNormalRelative, or γ's own value).
+  bool opening_ = false;
+  double gammaN_ = 0, gammaNRelative_ = 0;
+  enum class GammaNGiven {
+    sameAsGamma,
+    absolute,
+    relative
+  } gammaNGiven_ = GammaNGiven::sameAsGamma;
+  Eigen::VectorXd unilateral_;  ///< per control node: 1 where its fracture may open
   GradientKind gradient_ = GradientKind::exact;
   std::unique_ptr<Optimizer> optimizer_;
 
@@ -137,7 +150,9 @@ class FrictionCase {
   Eigen::VectorXd mu_, cohesion_, slip_;
   ControlState last_;
   Eigen::VectorXd pressure_;  ///< p of the last step, per control node
-  Eigen::VectorXd lastBeta_;  ///< increment of the last step (warm start, restart)
+  /// Control of the last step (warm start, restart): the slip increment, then with openings
+  /// the opening g per node [m] (a state: the faces' separation at the end of that step).
+  Eigen::VectorXd lastBeta_;
   std::string stoppedEarly_;
   std::vector<FloatingPart> floating_;
   double diameter_ = 0;                  ///< diagonal of the mesh's bounding box [m]

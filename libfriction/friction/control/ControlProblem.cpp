@@ -17,25 +17,39 @@
 namespace friction {
 
 ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen::VectorXd cohesion,
-                               double gamma, double zeta, GradientKind gradient)
+                               double gamma, double zeta, GradientKind gradient,
+                               const OpeningSettings* opening)
     : response_(response),
       mu_(std::move(mu)),
       cohesion_(std::move(cohesion)),
       gamma_(gamma),
       zeta_(zeta),
-      gradientKind_(gradient) {
+      gradientKind_(gradient),
+      opening_(opening != nullptr) {
   FRICTION_ASSERT(mu_.size() == response_.size(), "one μ per fracture node");
   FRICTION_ASSERT(cohesion_.size() == response_.size(), "one cohesion per fracture node");
   FRICTION_ASSERT(gamma_ > 0, "γ > 0");
   const Eigen::Index n = response_.size(), k = response_.blockSize();
-  componentMask_.resize(k * n);
-  componentWeights_.resize(k * n);
+  const Eigen::Index total = opening_ ? k * n + n : k * n;
+  componentMask_.resize(total);
+  componentWeights_.resize(total);
   const Eigen::VectorXd components = response_.componentMask();
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index c = 0; c < k; ++c) {
       componentMask_[k * i + c] = components[k * i + c];
       componentWeights_[k * i + c] = response_.weights()[i];
     }
+  if (opening_) {
+    openingSettings_ = *opening;
+    FRICTION_ASSERT(
+        openingSettings_.unilateral.size() == n && openingSettings_.pressure.size() == n,
+        "one opening flag and pressure per fracture node");
+    FRICTION_ASSERT(openingSettings_.gammaN > 0, "γ_n > 0");
+    for (Eigen::Index i = 0; i < n; ++i) {
+      componentMask_[k * n + i] = openingSettings_.unilateral[i] * response_.freeMask()[i];
+      componentWeights_[k * n + i] = response_.weights()[i];
+    }
+  }
 }
 
 double ControlProblem::relativeResidual(const ControlState& s) const {
@@ -48,7 +62,14 @@ double ControlProblem::relativeResidual(const ControlState& s) const {
 }
 
 double ControlProblem::dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
-  return (a.array() * b.array() * componentWeights_.array()).sum();
+  if (!opening_) return (a.array() * b.array() * componentWeights_.array()).sum();
+  // The tangential part summed as without openings, then the openings': where every node is
+  // in contact with g = 0, the sums (and so the stop rule) are those of the bilateral case.
+  const Eigen::Index kn = blockSize() * numNodes(), n = numNodes();
+  const double tangential =
+      (a.head(kn).array() * b.head(kn).array() * componentWeights_.head(kn).array()).sum();
+  return tangential +
+         (a.tail(n).array() * b.tail(n).array() * componentWeights_.tail(n).array()).sum();
 }
 
 double ControlProblem::nodeDot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
@@ -74,8 +95,32 @@ ControlState ControlProblem::stateFrom(const Eigen::VectorXd& beta, Eigen::Vecto
   s.sigmaN = std::move(sigmaN);
   const Eigen::Index n = numNodes(), k = blockSize();
   s.rho = cohesion_ - mu_.cwiseProduct(s.sigmaN);
-  s.D.resize(k * n);
+  s.D.resize(size());
   s.node.resize(n);
+  if (opening_) {
+    // The normal complementarity D_n = max(σ'_n, −γ_n g) (docs/method.md §8): in contact
+    // (σ'_n + γ_n g < 0) D_n = −γ_n g and the friction bound comes from the augmented normal
+    // stress, ρ = c − μ(σ'_n + γ_n g); open, D_n = σ'_n and ρ = 0, so that τ = 0 is sought.
+    // cohesion_ holds c − μ p already. A fracture that may not open is always in contact.
+    s.contact.assign(n, 1);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (componentMask_[k * n + i] == 0) {
+        s.D[k * n + i] = 0;
+        continue;
+      }
+      const double g = s.beta[k * n + i];
+      const double effective = s.sigmaN[i] + openingSettings_.pressure[i];
+      const double augmented = effective + openingSettings_.gammaN * g;
+      if (augmented < 0) {
+        s.rho[i] = cohesion_[i] - mu_[i] * (s.sigmaN[i] + openingSettings_.gammaN * g);
+        s.D[k * n + i] = -openingSettings_.gammaN * g;
+      } else {
+        s.contact[i] = 0;
+        s.rho[i] = 0;
+        s.D[k * n + i] = effective;
+      }
+    }
+  }
   for (Eigen::Index i = 0; i < n; ++i) {
     s.node[i] =
         complementarity(s.tau.segment(k * i, k), s.beta.segment(k * i, k), s.rho[i], gamma_);
@@ -83,7 +128,14 @@ ControlState ControlProblem::stateFrom(const Eigen::VectorXd& beta, Eigen::Vecto
   }
   // Where the jump is held (tips, Dirichlet), the friction law is not asked of the node.
   s.D = s.D.cwiseProduct(componentMask_);
-  s.J = 0.5 * dot(s.D, s.D) + 0.5 * zeta_ * dot(s.beta, s.beta);
+  if (!opening_) {
+    s.J = 0.5 * dot(s.D, s.D) + 0.5 * zeta_ * dot(s.beta, s.beta);
+    return s;
+  }
+  // ζ regularises the slip increment only: the opening is a state, not an increment.
+  Eigen::VectorXd slip = s.beta;
+  slip.tail(n).setZero();
+  s.J = 0.5 * dot(s.D, s.D) + 0.5 * zeta_ * dot(slip, slip);
   return s;
 }
 
@@ -113,10 +165,54 @@ Eigen::VectorXd ControlProblem::gradient(const ControlState& s) {
     qn[i] = normal;
   }
   Eigen::VectorXd tauDual;
-  response_.adjoint(qt, qn, tauDual);
+  if (!opening_) {
+    response_.adjoint(qt, qn, tauDual);
+    ++numDual_;
+    Eigen::VectorXd g = tauDual + local + zeta_ * s.beta;
+    return g.cwiseProduct(componentMask_);
+  }
+  // The openings' part: a normal row reads −γ_n g in contact (local) and σ'_n where open
+  // (through σ_n: the adjoint's input qn); the friction bound ρ = c − μ(σ'_n + γ_n g) adds
+  // μ γ_n P'_ρ·D locally in contact (with the exact gradient, as its σ_n part). A unit opening
+  // is the jump −n_Γ: its adjoint is minus the adjoint's normal part.
+  Eigen::VectorXd localN = Eigen::VectorXd::Zero(n);
+  const double gammaN = openingSettings_.gammaN;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (componentMask_[k * n + i] == 0) continue;
+    const double Dn = s.D[k * n + i];
+    if (s.contact[i]) {
+      localN[i] = -gammaN * Dn;
+      if (gradientKind_ == GradientKind::exact) localN[i] += gammaN * qn[i];
+    } else {
+      qn[i] += Dn;
+    }
+  }
+  Eigen::VectorXd normalAdjoint;
+  response_.adjoint(qt, qn, tauDual, &normalAdjoint);
   ++numDual_;
-  Eigen::VectorXd g = tauDual + local + zeta_ * s.beta;
+  Eigen::VectorXd g(size());
+  g.head(k * n) = tauDual + local + zeta_ * s.beta.head(k * n);
+  g.tail(n) = -normalAdjoint + localN;
   return g.cwiseProduct(componentMask_);
+}
+
+double ControlProblem::jacobianEntryWithOpening(const ControlState& s, const InterfaceOperator& S,
+                                                Eigen::Index row, Eigen::Index col) const {
+  const Eigen::Index n = numNodes(), k = blockSize(), kn = k * n;
+  if (row >= kn) {  // the normal row of node i
+    const Eigen::Index i = row - kn;
+    if (s.contact[i]) return col == row ? -openingSettings_.gammaN : 0.0;
+    return col < kn ? S.Snt(i, col) : S.Snn(i, col - kn);
+  }
+  if (col < kn) return jacobianEntry(s, S.Stt, S.Snt, row, col);
+  const Eigen::Index i = row / k, r = row % k, j = col - kn;
+  const NodeComplementarity& c = s.node[i];
+  double g = ((r == 0 ? 1.0 : 0.0) - c.dPdN(r, 0)) * S.Stn(k * i, j);
+  for (Eigen::Index q = 1; q < k; ++q)
+    g += ((r == q ? 1.0 : 0.0) - c.dPdN(r, q)) * S.Stn(k * i + q, j);
+  g += mu_[i] * c.dPdRho[r] * S.Snn(i, j);
+  if (i == j && s.contact[i]) g += mu_[i] * c.dPdRho[r] * openingSettings_.gammaN;
+  return g;
 }
 
 }  // namespace friction

@@ -20,11 +20,23 @@ enum class GradientKind {
   frozenRho  ///< the paper's (46)–(47), (54): ρ treated as fixed (Tresca-like)
 };
 
+/// Fractures that open (docs/method.md §8): which nodes may, the fluid pressure, and γ_n.
+struct OpeningSettings {
+  Eigen::VectorXd unilateral;  ///< n: 1 where the node's fracture may open, 0 where it may not
+  Eigen::VectorXd pressure;    ///< n: the fracture pressure p [Pa] (σ'_n = σ_n + p)
+  double gammaN = 1;           ///< γ_n > 0 [Pa/m] of the normal complementarity
+};
+
 /// Everything known at one β.
 struct ControlState {
-  Eigen::VectorXd beta, tau, D;           ///< k·n, node-major
+  /// The control (k·n tangential entries, node-major, then n openings g with OpeningSettings)
+  /// and the residual D in the same layout; τ k·n.
+  Eigen::VectorXd beta, tau, D;
   Eigen::VectorXd sigmaN, rho;            ///< n
   std::vector<NodeComplementarity> node;  ///< n
+  /// With openings: per node 1 where the faces are in contact (σ'_n + γ_n g < 0, or the
+  /// fracture may not open), 0 where open (τ = 0, σ'_n = 0 sought).
+  std::vector<char> contact;
   double J = 0;
   long primalSolves = 0;  ///< running count, for the report
 };
@@ -32,8 +44,10 @@ struct ControlState {
 class ControlProblem {
  public:
   /// mu, cohesion: per node μ (–) and c [Pa]; gamma [Pa/m] > 0; zeta [Pa/m] ≥ 0.
+  /// opening: fractures that may open (the control gains the n openings); none: bilateral.
+  /// cohesion holds c − μ p where a fracture pressure p acts.
   ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen::VectorXd cohesion, double gamma,
-                 double zeta, GradientKind gradient);
+                 double zeta, GradientKind gradient, const OpeningSettings* opening = nullptr);
 
   /// Primal solve at β, then D, J. (One back-substitution.)
   ControlState evaluate(const Eigen::VectorXd& beta);
@@ -60,6 +74,12 @@ class ControlProblem {
     return g;
   }
 
+  /// Entry (row, col) of dD/dx for the whole control x = (β, g) (with openings): the
+  /// tangential block is jacobianEntry's; a column of g_j adds (I − P'_N) S_tn + μ P'_ρ (S_nn
+  /// + γ_n δ_ij) in contact; a normal row reads −γ_n δ in contact, (S_nt, S_nn) where open.
+  double jacobianEntryWithOpening(const ControlState& s, const InterfaceOperator& S,
+                                  Eigen::Index row, Eigen::Index col) const;
+
   /// ‖D‖_M / ‖Σ‖_M on the free nodes, Σ = (τ, σ_n) the traction on Γ: the relative
   /// residual of the friction law. The scale is the whole traction, not ‖τ‖ alone, because
   /// the answer may be τ = 0 (frictionless, or open in tension), where ‖D‖/‖τ‖ stays 1.
@@ -69,13 +89,17 @@ class ControlProblem {
   double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
   double norm(const Eigen::VectorXd& a) const { return std::sqrt(dot(a, a)); }
 
-  /// Length of β: k·n.
+  /// Length of the control: k·n, or k·n + n with openings.
   Eigen::Index size() const { return componentMask_.size(); }
+  /// True when the control holds the openings g after the k·n tangential entries.
+  bool hasOpening() const { return opening_; }
+  const OpeningSettings& openingSettings() const { return openingSettings_; }
   Eigen::Index numNodes() const { return response_.size(); }
   int blockSize() const { return response_.blockSize(); }
   /// 1 where the node's jump is free, per node (n).
   const Eigen::VectorXd& freeMask() const { return response_.freeMask(); }
-  /// 1 where a component of β is an unknown (k·n): the response's componentMask.
+  /// 1 where a component of the control is an unknown: the response's componentMask, then
+  /// with openings 1 at the free nodes of fractures that may open.
   const Eigen::VectorXd& componentMask() const { return componentMask_; }
   const Eigen::VectorXd& mu() const { return mu_; }
   double gamma() const { return gamma_; }
@@ -96,6 +120,8 @@ class ControlProblem {
   Eigen::VectorXd componentMask_, componentWeights_;  ///< componentMask; weights repeated k times
   double gamma_, zeta_;
   GradientKind gradientKind_;
+  bool opening_ = false;
+  OpeningSettings openingSettings_;
   long numPrimal_ = 0, numDual_ = 0;
 };
 

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "friction/core/Assert.hpp"
 #include "friction/core/StopRequest.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
@@ -392,7 +393,7 @@ Eigen::VectorXd gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&
 bool SemismoothNewton::lineSearch(
     ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
     const std::function<ControlState(const Eigen::VectorXd&)>& stateAt, double& lastStep,
-    std::vector<SlipState>& states) {
+    std::vector<int>& states) {
   // Backtracking on the merit ½‖D‖²_M; counts active-set changes for the cycling report.
   const double merit = 0.5 * p.dot(s.D, s.D);
   double t = 1;
@@ -400,8 +401,10 @@ bool SemismoothNewton::lineSearch(
     ControlState trial = stateAt(s.beta + t * dir);
     if (0.5 * p.dot(trial.D, trial.D) <= (1 - 1e-4 * t) * merit) {
       lastStep = p.norm(trial.beta - s.beta);
-      std::vector<SlipState> now;
-      for (const auto& c : trial.node) now.push_back(c.state);
+      // A node's stick/slip/open state, and with openings whether its faces touch.
+      std::vector<int> now;
+      for (const auto& c : trial.node) now.push_back(static_cast<int>(c.state));
+      for (const char c : trial.contact) now.push_back(c);
       if (!states.empty() && now != states) ++activeSetChanges_;
       states = std::move(now);
       s = std::move(trial);
@@ -419,7 +422,8 @@ OptimizerReport& SemismoothNewton::finish(ControlProblem& p, const ControlState&
   // instead of looping silently.
   if (r.status != OptimizerStatus::converged && activeSetChanges_ > 2)
     r.note = "active set changed " + std::to_string(activeSetChanges_) +
-             " times without converging (cycling between stick and slip)";
+             " times without converging (cycling between " +
+             (p.hasOpening() ? "stick, slip, open and closed)" : "stick and slip)");
   beta = s.beta;
   return r;
 }
@@ -430,12 +434,12 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   const Eigen::Index n = p.numNodes(), k = p.blockSize(), size = p.size();
   const Eigen::VectorXd& mask = resp.freeMask();
   long setupSolves = 0;
-  if (cachedFor_ != &resp || Stt_.rows() != size) {
+  const bool opening = p.hasOpening();
+  const Eigen::Index kn = k * n;
+  if (cachedFor_ != &resp || S_.Stt.rows() != kn || (opening && S_.Snn.rows() != n)) {
     // Once per run: S depends only on the mesh and the Dirichlet patches.
-    InterfaceOperator op = resp.interfaceOperator(interfaceMethod_);
-    Stt_ = std::move(op.Stt);
-    Snt_ = std::move(op.Snt);
-    setupSolves = op.solves;
+    S_ = resp.interfaceOperator(interfaceMethod_, opening);
+    setupSolves = S_.solves;
     cachedFor_ = &resp;
   }
 
@@ -447,8 +451,11 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   const Eigen::VectorXd tau0 = s0.tau, sigma0 = s0.sigmaN;
   auto stateAt = [&](const Eigen::VectorXd& b) {
     const Eigen::VectorXd bm = b.cwiseProduct(p.componentMask());
-    return p.stateFrom(bm, tau0 + Stt_ * bm, sigma0 + Snt_ * bm);
+    if (!opening) return p.stateFrom(bm, tau0 + S_.Stt * bm, sigma0 + S_.Snt * bm);
+    const auto bt = bm.head(kn), g = bm.tail(n);
+    return p.stateFrom(bm, tau0 + S_.Stt * bt + S_.Stn * g, sigma0 + S_.Snt * bt + S_.Snn * g);
   };
+
   // In 3D (k ≥ 2) the slip's direction enters D through N̂ = (τ − γβ)/|τ − γβ|, whose
   // linearisation holds only while γ|Δβ| is small against |N| − ρ: with γ far below the
   // interface stiffness (the diagonal of S_tt), Newton's steps along the slip's direction
@@ -462,8 +469,8 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   if (k >= 2) {
     double diagonal = 0;
     int count = 0;
-    for (Eigen::Index j = 0; j < size; ++j)
-      if (p.componentMask()[j] != 0 && Stt_(j, j) > 0) diagonal += Stt_(j, j), ++count;
+    for (Eigen::Index j = 0; j < kn; ++j)
+      if (p.componentMask()[j] != 0 && S_.Stt(j, j) > 0) diagonal += S_.Stt(j, j), ++count;
     if (count > 0 && gammaCase < 1e-2 * diagonal / count) gammaNewton = diagonal / count;
   }
   struct RestoreGamma {
@@ -481,7 +488,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   ControlState s = stateAt(beta);
   r.history.push_back(record(p, s, 0, -1));
   double lastStep = -1;
-  std::vector<SlipState> states;
+  std::vector<int> states;
   for (int it = 1; it <= stop_.maxIterations; ++it) {
     if (converged(p, s, lastStep)) {
       if (p.gamma() == gammaCase) {
@@ -511,17 +518,29 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
           active.push_back(k * i + c);
       }
     }
+    // Openings: a node in contact reads −γ_n δg = γ_n g, so g = 0 at once, like a stick row;
+    // an open node's g is an unknown of the linear solve.
+    for (Eigen::Index i = 0; opening && i < n; ++i) {
+      if (p.componentMask()[kn + i] == 0) continue;
+      if (s.contact[i])
+        dir[kn + i] = -s.beta[kn + i];
+      else
+        active.push_back(kn + i);
+    }
+    const auto entry = [&](Eigen::Index row, Eigen::Index col) {
+      return opening ? p.jacobianEntryWithOpening(s, S_, row, col)
+                     : p.jacobianEntry(s, S_.Stt, S_.Snt, row, col);
+    };
     const Eigen::Index m = static_cast<Eigen::Index>(active.size());
     if (m > 0) {
       Eigen::MatrixXd G(m, m);
       Eigen::VectorXd rhs(m);
       for (Eigen::Index a = 0; a < m; ++a) {
-        for (Eigen::Index b = 0; b < m; ++b)
-          G(a, b) = p.jacobianEntry(s, Stt_, Snt_, active[a], active[b]);
+        for (Eigen::Index b = 0; b < m; ++b) G(a, b) = entry(active[a], active[b]);
         // Move the known stick increments to the right-hand side.
         double known = 0;
         for (Eigen::Index j = 0; j < size; ++j)
-          if (dir[j] != 0) known += p.jacobianEntry(s, Stt_, Snt_, active[a], j) * dir[j];
+          if (dir[j] != 0) known += entry(active[a], j) * dir[j];
         rhs[a] = -s.D[active[a]] - known;
       }
       // LAPACK's LU: at thousands of slipping nodes this is the iteration's whole cost.
@@ -552,6 +571,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
 }
 
 OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::VectorXd& beta) {
+  FRICTION_ASSERT(!p.hasOpening(), "the krylov variant is refused for fractures that open");
   SlipResponse& resp = p.response();
   const Eigen::Index n = p.numNodes(), k = p.blockSize(), size = p.size();
   const Eigen::VectorXd& mask = resp.freeMask();
@@ -560,7 +580,7 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   ControlState s = p.evaluate(beta);
   r.history.push_back(record(p, s, 0, -1));
   double lastStep = -1;
-  std::vector<SlipState> states;
+  std::vector<int> states;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   for (int it = 1; it <= stop_.maxIterations; ++it) {
     if (converged(p, s, lastStep)) {

@@ -66,6 +66,9 @@ class Optimizer {
   /// True when the optimizer uses the interface operator S formed by the factorisation
   /// (then the caller factors the bordered matrix: docs/method.md §4).
   virtual bool wantsInterfaceOperator() const { return false; }
+  /// False where the optimizer cannot take fractures that open (the opening control of
+  /// docs/method.md §8); the case refuses that combination.
+  virtual bool handlesOpening() const { return true; }
 
   /// Minimise from beta (in: start, out: result).
   virtual OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) = 0;
@@ -170,12 +173,14 @@ class SemismoothNewton : public Optimizer {
     return variant_ == Variant::condensed && interfaceMethod_ == InterfaceMethod::factorisation;
   }
   InterfaceMethod interfaceMethod() const { return interfaceMethod_; }
+  /// The krylov variant's products carry no normal rows yet.
+  bool handlesOpening() const override { return variant_ == Variant::condensed; }
 
  private:
   OptimizerReport minimizeKrylov(ControlProblem& problem, Eigen::VectorXd& beta);
   bool lineSearch(ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
                   const std::function<ControlState(const Eigen::VectorXd&)>& stateAt,
-                  double& lastStep, std::vector<SlipState>& states);
+                  double& lastStep, std::vector<int>& states);
   OptimizerReport& finish(ControlProblem& p, const ControlState& s, double lastStep,
                           OptimizerReport& r, Eigen::VectorXd& beta);
 
@@ -183,7 +188,7 @@ class SemismoothNewton : public Optimizer {
   Variant variant_;
   InterfaceMethod interfaceMethod_;
   int activeSetChanges_ = 0;
-  Eigen::MatrixXd Stt_, Snt_;  // cached for the run
+  InterfaceOperator S_;  // cached for the run
   const SlipResponse* cachedFor_ = nullptr;
 };
 

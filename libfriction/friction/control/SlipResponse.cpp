@@ -18,7 +18,7 @@ const char* toString(InterfaceMethod method) {
   return "unknown";
 }
 
-InterfaceOperator SlipResponse::interfaceOperator(InterfaceMethod /*method*/) {
+InterfaceOperator SlipResponse::interfaceOperator(InterfaceMethod /*method*/, bool withOpening) {
   const Eigen::Index n = size(), k = blockSize();
   const Eigen::VectorXd& mask = freeMask();
   InterfaceOperator op;
@@ -38,6 +38,21 @@ InterfaceOperator SlipResponse::interfaceOperator(InterfaceMethod /*method*/) {
       op.Stt.col(col) = t;
       op.Snt.col(col) = sn;
     }
+  }
+  if (!withOpening) return op;
+  op.Stn.setZero(k * n, n);
+  op.Snn.setZero(n, n);
+  const Eigen::VectorXd zeroT = Eigen::VectorXd::Zero(k * n);
+  Eigen::VectorXd open = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (mask[i] == 0) continue;
+    throwIfStopNow();
+    open[i] = -1;  // a unit opening is the jump −n_Γ
+    dual(zeroT, open, t, &sn);
+    ++op.solves;
+    open[i] = 0;
+    op.Stn.col(i) = t;
+    op.Snn.col(i) = sn;
   }
   return op;
 }

@@ -29,7 +29,10 @@ const char* toString(InterfaceMethod method);
 struct InterfaceOperator {
   Eigen::MatrixXd Stt;  ///< k·n × k·n [Pa/m]; columns of held nodes (freeMask 0) are zero
   Eigen::MatrixXd Snt;  ///< n × k·n [Pa/m]; likewise
-  long solves = 0;      ///< back-substitutions spent forming it
+  /// Only when asked for (withOpening): τ (k·n × n) and σ_n (n × n) [Pa/m] caused by a unit
+  /// opening g at node i (the jump −n_Γ); columns of held nodes are zero.
+  Eigen::MatrixXd Stn, Snn;
+  long solves = 0;                                       ///< back-substitutions spent forming it
   InterfaceMethod method = InterfaceMethod::dualSolves;  ///< how it was formed
 };
 
@@ -57,8 +60,8 @@ class SlipResponse {
     return m;
   }
 
-  /// Primal solve: this step's loads, jump Σ_c (s_n + β)_c t_c. Returns τ (k·n) and σ_n (n)
-  /// [Pa].
+  /// Primal solve: this step's loads, jump Σ_c (s_n + β)_c t_c − g n_Γ. beta: k·n entries, or
+  /// k·n + n with the openings g [m] last (none: g = 0). Returns τ (k·n) and σ_n (n) [Pa].
   virtual void primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
                       Eigen::VectorXd& sigmaN) = 0;
   /// Dual solve: no loads, zero Dirichlet data, jump Σ_c qt_c t_c + qn n_Γ (qt: k·n, qn: n,
@@ -69,16 +72,19 @@ class SlipResponse {
   /// The adjoint of β ↦ (τ, σ_n) in the M inner product of weights(): M⁻¹ (S_ttᵀ M qt +
   /// S_ntᵀ M qn) (qt: k·n, qn: n), zero at held nodes — what the exact gradient needs. Where
   /// M·S is symmetric (tractions recovered with the lumped M) it is the dual solve's τ, the
-  /// default; an implementation that recovers with another mass overrides it.
+  /// default; an implementation that recovers with another mass overrides it. With
+  /// normalAdjoint, also the adjoint's normal part M⁻¹ (S_tnᵀ M qt + S_nnᵀ M qn) on the jump
+  /// +n_Γ (n entries; the opening's is its negative): the dual solve's σ_n by default.
   virtual void adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
-                       Eigen::VectorXd& tauAdjoint) {
-    dual(qt, qn, tauAdjoint);
+                       Eigen::VectorXd& tauAdjoint, Eigen::VectorXd* normalAdjoint = nullptr) {
+    dual(qt, qn, tauAdjoint, normalAdjoint);
   }
 
   /// The interface operator, formed as `method` asks where the implementation can (the
-  /// result says how it was formed). This default makes one dual solve per tangential
-  /// component of each free node (k per node).
-  virtual InterfaceOperator interfaceOperator(InterfaceMethod method);
+  /// result says how it was formed); withOpening adds the opening's columns Stn, Snn. This
+  /// default makes one dual solve per tangential component of each free node (k per node),
+  /// and one more per node with withOpening.
+  virtual InterfaceOperator interfaceOperator(InterfaceMethod method, bool withOpening = false);
 };
 
 }  // namespace friction

@@ -469,7 +469,9 @@ void FractureSystem::applyRecovery(Eigen::MatrixXd& x, bool transpose) const {
 void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
                             Eigen::VectorXd& sigmaN) {
   const Index n = size(), k = blockSize(), d = dim_;
-  FRICTION_ASSERT(beta.size() == k * n && slip_.size() == k * n, "k slip components per node");
+  FRICTION_ASSERT((beta.size() == k * n || beta.size() == k * n + n) && slip_.size() == k * n,
+                  "k slip components per node, then the openings");
+  const bool opening = beta.size() == k * n + n;
   // Each sum over a frame runs in component order, term by term: in 2D (k = 1) exactly the
   // arithmetic of s t_Γ and Σ·t_Γ = Σ_x t_x + Σ_y t_y.
   Eigen::VectorXd j(d * n);
@@ -479,6 +481,7 @@ void FractureSystem::primal(const Eigen::VectorXd& beta, Eigen::VectorXd& tau,
       double ja = componentMask_[k * i] * (slip_[k * i] + beta[k * i]) * v.tangent[0][a];
       for (int c = 1; c < k; ++c)
         ja += componentMask_[k * i + c] * (slip_[k * i + c] + beta[k * i + c]) * v.tangent[c][a];
+      if (opening) ja -= mask_[i] * beta[k * n + i] * v.normal[a];  // g = −[[u]]·n_Γ
       j[d * i + a] = ja;
     }
   }
@@ -537,9 +540,9 @@ void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
 }
 
 void FractureSystem::adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
-                             Eigen::VectorXd& tauAdjoint) {
+                             Eigen::VectorXd& tauAdjoint, Eigen::VectorXd* normalAdjoint) {
   if (!consistent_) {
-    dual(qt, qn, tauAdjoint);
+    dual(qt, qn, tauAdjoint, normalAdjoint);
     return;
   }
   // τ = Tᵀ X G⁻¹ R (M·S) mask T β (T: the frames): its W-adjoint is
@@ -565,15 +568,25 @@ void FractureSystem::adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& q
     for (int c = 0; c < k; ++c)
       tauAdjoint[k * i + c] =
           componentMask_[k * i + c] * project(sigma, i, nodes_[i].tangent[c]) / weights_[i];
+  if (normalAdjoint) {
+    normalAdjoint->resize(n);
+    for (Index i = 0; i < n; ++i)
+      (*normalAdjoint)[i] = mask_[i] * project(sigma, i, nodes_[i].normal) / weights_[i];
+  }
 }
 
-InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
+InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method, bool withOpening) {
   FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before the interface operator");
-  if (method == InterfaceMethod::dualSolves) return SlipResponse::interfaceOperator(method);
+  if (method == InterfaceMethod::dualSolves)
+    return SlipResponse::interfaceOperator(method, withOpening);
   const Index n = size(), k = blockSize(), d = dim_;
   InterfaceOperator op;
   op.Stt.setZero(k * n, k * n);
   op.Snt.setZero(n, k * n);
+  if (withOpening) {
+    op.Stn.setZero(k * n, n);
+    op.Snn.setZero(n, n);
+  }
   if (jumpDofs_.empty()) {
     op.method = method;
     return op;
@@ -592,34 +605,46 @@ InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method) {
                                                         : InterfaceMethod::blockSolves;
   // Frame projection: S_tt(k·i + r, k·j + c) = t_r,iᵀ (M·S)_ij t_c,j / w_i and
   // S_nt(i, k·j + c) = n_iᵀ (M·S)_ij t_c,j / w_i, over the nodes with two sides (jumpDofs_
-  // holds their d entries in node order).
+  // holds their d entries in node order). The opening's columns (withOpening) take −n_j
+  // for t_c,j: a unit opening is the jump −n_Γ.
   const Index m = static_cast<Index>(jumpDofs_.size()) / d;
+  const int kc = withOpening ? k + 1 : k;  // columns per node
   std::vector<Index> node(m);
   for (Index a = 0; a < m; ++a) node[a] = jumpDofs_[d * a] / d;
-  Eigen::MatrixXd columns(d * m, k * m);  // (M·S) t_c,j for each node j, zero where held
+  Eigen::MatrixXd columns(d * m, kc * m);  // (M·S) t_c,j for each node j, zero where held
   for (Index a = 0; a < m; ++a)
-    for (int c = 0; c < k; ++c) {
-      const Eigen::Vector3d t = nodes_[node[a]].tangent[c] * componentMask_[k * node[a] + c];
+    for (int c = 0; c < kc; ++c) {
+      const Eigen::Vector3d t =
+          c < k ? Eigen::Vector3d(nodes_[node[a]].tangent[c] * componentMask_[k * node[a] + c])
+                : Eigen::Vector3d(-nodes_[node[a]].normal * mask_[node[a]]);
       Eigen::VectorXd col = MS.col(d * a) * t[0];
       for (int e = 1; e < d; ++e) col += MS.col(d * a + e) * t[e];
-      columns.col(k * a + c) = col;
+      columns.col(kc * a + c) = col;
     }
   // 3D P2: S = X G⁻¹ R (M·S), on all d·n rows, instead of the division by w_i.
   Eigen::MatrixXd recovered;
   if (consistent_) {
-    recovered.setZero(d * n, k * m);
+    recovered.setZero(d * n, kc * m);
     for (Index b = 0; b < m; ++b)
       for (int e = 0; e < d; ++e) recovered.row(d * node[b] + e) = columns.row(d * b + e);
     applyRecovery(recovered, false);
   }
   Eigen::VectorXd s(d);
-  for (Index a = 0; a < k * m; ++a)  // column by column: both matrices are column-major
+  for (Index a = 0; a < kc * m; ++a)  // column by column: both matrices are column-major
     for (Index b = 0; b < m; ++b) {
       const ControlNode& v = nodes_[node[b]];
-      const Index col = k * node[a / k] + a % k;
+      const bool openingColumn = a % kc == k;
       for (int e = 0; e < d; ++e)
         s[e] =
             consistent_ ? recovered(d * node[b] + e, a) : columns(d * b + e, a) / weights_[node[b]];
+      if (openingColumn) {
+        const Index col = node[a / kc];
+        for (int r = 0; r < k; ++r) op.Stn(k * node[b] + r, col) = project(s, 0, v.tangent[r]);
+        if (v.heldComponent >= 0) op.Stn(k * node[b] + v.heldComponent, col) = 0;
+        op.Snn(node[b], col) = project(s, 0, v.normal);
+        continue;
+      }
+      const Index col = k * node[a / kc] + a % kc;
       for (int r = 0; r < k; ++r) op.Stt(k * node[b] + r, col) = project(s, 0, v.tangent[r]);
       if (v.heldComponent >= 0)  // the roller's reaction: 0 in τ (primal)
         op.Stt(k * node[b] + v.heldComponent, col) = 0;

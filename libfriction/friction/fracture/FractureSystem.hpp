@@ -119,15 +119,15 @@ class FractureSystem : public SlipResponse {
   /// 3D P2: with the consistent recovery S = M_c⁻¹ (M·S), and W S is not symmetric (W =
   /// weights()): the adjoint applies M_c⁻ᵀ W to the input before the symmetric M·S. Else the
   /// dual solve.
-  void adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
-               Eigen::VectorXd& tauAdjoint) override;
+  void adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauAdjoint,
+               Eigen::VectorXd* normalAdjoint = nullptr) override;
   /// True where Σ is recovered with the consistent mass of Γ (3D P2).
   bool consistentRecovery() const { return consistent_; }
   /// factorisation: the complement the factorisation delivered (factor() with
   /// withInterfaceOperator), else as blockSolves; blockSolves: C − Bᵀ K⁻¹ B by blocks of
   /// right-hand sides; dualSolves: one dual solve per node and tangential component
   /// (SlipResponse's default).
-  InterfaceOperator interfaceOperator(InterfaceMethod method) override;
+  InterfaceOperator interfaceOperator(InterfaceMethod method, bool withOpening = false) override;
   /// M·S on the jump dofs (d per node that is not a tip, x, y (, z) components, node order),
   /// with the dofs of jumpDofs(): symmetric [N/m]. Empty unless factor() formed it. (3D P2:
   /// the M here is the consistent recovery operator of factor(), not weights().)

@@ -56,22 +56,30 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   const auto value = [&out](double v) -> std::ostream& {
     return std::isnan(v) ? out << "nan" : out << v;
   };
+  // Fractures that open: the opening g before the state.
+  const bool opening = !rows.empty() && rows.front().hasOpening;
+  const auto openingValue = [&](const FractureRow& r) -> std::ostream& {
+    if (opening) out << r.opening << " ";
+    return out;
+  };
   if (dim != 3) {
-    out << "# s x y slip slipIncrement sigmaN tau ST residual state\n# " << statusLine << "\n";
+    out << "# s x y slip slipIncrement sigmaN tau ST residual " << (opening ? "opening " : "")
+        << "state\n# " << statusLine << "\n";
     for (const FractureRow& r : rows) {
       out << r.s << " " << r.position.x() << " " << r.position.y() << " " << r.slip[0] << " "
           << r.slipIncrement[0] << " ";
       value(r.sigmaN) << " ";
       value(r.tau[0]) << " ";
       value(r.ST) << " ";
-      value(r.residual[0]) << " " << r.state << "\n";
+      value(r.residual[0]) << " ";
+      openingValue(r) << r.state << "\n";
     }
     writeTextAtomic(path, out.str());
     return;
   }
   out << "# x y z nx ny nz slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1 "
-         "slipIncrement2 sigmaN tau1 tau2 tauMagnitude ST residual state\n# "
-      << statusLine << "\n";
+         "slipIncrement2 sigmaN tau1 tau2 tauMagnitude ST residual "
+      << (opening ? "opening " : "") << "state\n# " << statusLine << "\n";
   const auto vector = [&out](const Eigen::Vector3d& v) {
     out << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
   };
@@ -102,7 +110,8 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
     value(r.tau[1]) << " ";
     value(std::hypot(r.tau[0], r.tau[1])) << " ";
     value(r.ST) << " ";
-    value(std::hypot(r.residual[0], r.residual[1])) << " " << r.state << "\n";
+    value(std::hypot(r.residual[0], r.residual[1])) << " ";
+    openingValue(r) << r.state << "\n";
   }
   writeTextAtomic(path, out.str());
 }

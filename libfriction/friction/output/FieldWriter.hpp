@@ -13,6 +13,8 @@
 //    t₁, t₂ and, for the slip, in x y z; residual = |D|); line 3 the frame: "# frame n (..)
 //    t1 (..) t2 (..)" when every node has the same one (a flat fault), else "# frame per
 //    node: ...". Rows in the control-node order of FractureSystem.
+//    With fractures that open (contact unilateral), a column "opening" (g = −[[u]]·n_Γ [m])
+//    comes before "state", in 2D and 3D.
 #pragma once
 
 #include <array>
@@ -39,8 +41,10 @@ struct FractureRow {
   /// Accumulated slip [m], the step's slip increment β [m], the tangential traction τ [Pa] and
   /// the friction law's complementarity residual D [Pa], on t₁ … t_k.
   std::array<double, 2> slip{}, slipIncrement{}, tau{}, residual{};
-  double sigmaN = 0;  ///< [Pa]
-  double ST = 0;      ///< slip tendency |τ| / −σ'_n [-]
+  double sigmaN = 0;        ///< [Pa]
+  double ST = 0;            ///< slip tendency |τ| / −σ'_n [-]
+  bool hasOpening = false;  ///< the case has fractures that open: the opening column is written
+  double opening = 0;       ///< g = −[[u]]·n_Γ [m], 0 where the faces touch
   std::string state;
 };
 

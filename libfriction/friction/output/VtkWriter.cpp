@@ -273,6 +273,8 @@ void writeFracturePolyline(const std::string& path, const std::vector<FractureRo
   rowArray(s, "tau", rows, [](const FractureRow& r) { return r.tau[0]; });
   rowArray(s, "ST", rows, [](const FractureRow& r) { return r.ST; });
   rowArray(s, "residual", rows, [](const FractureRow& r) { return r.residual[0]; });
+  if (!rows.empty() && rows.front().hasOpening)
+    rowArray(s, "opening", rows, [](const FractureRow& r) { return r.opening; });
   stateArray(s, rows);
   s << "      </PointData>\n";
 
@@ -348,6 +350,8 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
   rowArray(s, "ST", rows, [](const FractureRow& r) { return r.ST; });
   rowArray(s, "residual", rows,
            [](const FractureRow& r) { return std::hypot(r.residual[0], r.residual[1]); });
+  if (!rows.empty() && rows.front().hasOpening)
+    rowArray(s, "opening", rows, [](const FractureRow& r) { return r.opening; });
   stateArray(s, rows);
   s << "      </PointData>\n";
 
