@@ -7,7 +7,9 @@ remote shear, opens where the net pressure dp = p + sigma_n_inf is positive:
 
     g(x) = 4 (1 - nu^2) dp / E * sqrt(a^2 - x^2)     (plane stress: 4 dp / E * sqrt(...)),
 
-with tau = 0 and sigma_n = -p on the open faces. Reads the fracture table of the latest time
+with tau = 0 and sigma_n = -p on the open faces. A remote shear tau_inf (-tau) then slides the
+open (traction-free) faces as the mode II crack does: |s(x)| = 4 (1 - nu^2) |tau_inf| / E *
+sqrt(a^2 - x^2). Reads the fracture table of the latest time
 folder (or -time), interpolates the opening on each crack element (P1: linear, P2: quadratic
 through the midpoint, from system/frictionSolution's elementOrder) and integrates the error
 with 6 Gauss points per element. Prints, one per line, "name value":
@@ -17,6 +19,7 @@ with 6 Gauss points per element. Prints, one per line, "name value":
     maxTau           max |tau| / p over the open nodes
     maxSigmaNError   max |sigma_n + p| / p over the open nodes
     minOpening       min g_h / max g (negative: the faces overlap)
+    slipRelL2Error   with -tau: || |s_h| - |s| ||_L2 / || s ||_L2
     states           the number of nodes in each state
 
 --maxError E and --maxTraction T make the exit code 1 when relL2Error > E or when maxTau or
@@ -58,6 +61,8 @@ def main():
     ap.add_argument("-p", type=float, default=1e6, help="fracture pressure p [Pa]")
     ap.add_argument("-sigmaN", type=float, default=0.0,
                     help="remote normal stress on the crack plane [Pa], negative in compression")
+    ap.add_argument("-tau", type=float, default=None,
+                    help="remote shear on the crack's plane [Pa] (the slip is then checked)")
     ap.add_argument("--maxError", type=float, default=None)
     ap.add_argument("--maxTraction", type=float, default=None)
     args = ap.parse_args()
@@ -75,7 +80,7 @@ def main():
         header = f.readline().split()[1:]
         rows = [line.split() for line in f if line.strip() and not line.startswith("#")]
     col = {name: i for i, name in enumerate(header)}
-    for needed in ("s", "x", "sigmaN", "tau", "opening", "state"):
+    for needed in ("s", "x", "slip", "sigmaN", "tau", "opening", "state"):
         if needed not in col:
             sys.exit("sneddonError.py: " + path + " has no column '" + needed + "'")
     s = [float(r[col["s"]]) for r in rows]
@@ -98,21 +103,24 @@ def main():
     step = 2 if order == 2 else 1
     if (len(rows) - 1) % step:
         sys.exit("sneddonError.py: %d nodes do not make P%d elements" % (len(rows), order))
-    err2 = ref2 = 0.0
-    for e in range(0, len(rows) - 1, step):
-        x0, x1 = x[e], x[e + step]
-        for t, w in zip(gx, gw):
-            xi = (t + 1) / 2  # 0..1 along the element
-            if order == 2:
-                vals = (g[e], g[e + 1], g[e + 2])
-                gh = (vals[0] * (1 - xi) * (1 - 2 * xi) + vals[1] * 4 * xi * (1 - xi)
-                      + vals[2] * xi * (2 * xi - 1))
-            else:
-                gh = g[e] * (1 - xi) + g[e + 1] * xi
-            xx = x0 + xi * (x1 - x0)
-            weight = w * abs(x1 - x0) / 2
-            err2 += weight * (gh - exact(xx)) ** 2
-            ref2 += weight * exact(xx) ** 2
+
+    def rel_l2(values, exact_at):
+        err2 = ref2 = 0.0
+        for e in range(0, len(rows) - 1, step):
+            x0, x1 = x[e], x[e + step]
+            for t, w in zip(gx, gw):
+                xi = (t + 1) / 2  # 0..1 along the element
+                if order == 2:
+                    v = (values[e], values[e + 1], values[e + 2])
+                    vh = (v[0] * (1 - xi) * (1 - 2 * xi) + v[1] * 4 * xi * (1 - xi)
+                          + v[2] * xi * (2 * xi - 1))
+                else:
+                    vh = values[e] * (1 - xi) + values[e + 1] * xi
+                xx = x0 + xi * (x1 - x0)
+                weight = w * abs(x1 - x0) / 2
+                err2 += weight * (vh - exact_at(xx)) ** 2
+                ref2 += weight * exact_at(xx) ** 2
+        return math.sqrt(err2 / ref2) if ref2 > 0 else math.sqrt(err2)
     gmax = factor * a if factor > 0 else max(max(g), 1e-300)
     states = {}
     max_tau = max_sn = 0.0
@@ -124,7 +132,7 @@ def main():
             open_nodes += 1
             max_tau = max(max_tau, abs(float(r[col["tau"]])) / args.p)
             max_sn = max(max_sn, abs(float(r[col["sigmaN"]]) + args.p) / args.p)
-    rel = math.sqrt(err2 / ref2) if ref2 > 0 else math.sqrt(err2)
+    rel = rel_l2(g, exact)
     max_node = max(abs(gi - exact(xi)) for gi, xi in zip(g, x)) / gmax
     print("time             %s" % time)
     print("order            P%d" % order)
@@ -135,6 +143,11 @@ def main():
     print("maxTau           %.6g" % max_tau)
     print("maxSigmaNError   %.6g" % max_sn)
     print("minOpening       %.6g" % (min(g) / gmax))
+    if args.tau is not None:
+        slip = [abs(float(r[col["slip"]])) for r in rows]
+        shear = (4.0 if plane_stress else 4.0 * (1 - nu * nu)) * abs(args.tau) / E
+        print("slipRelL2Error   %.6g" % rel_l2(
+            slip, lambda xx: shear * math.sqrt(max(a * a - (xx - centre) ** 2, 0.0))))
     print("states           " + " ".join("%s %d" % kv for kv in sorted(states.items())))
     bad = []
     if args.maxError is not None and not rel <= args.maxError:

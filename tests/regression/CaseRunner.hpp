@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -191,6 +192,18 @@ class Case {
  private:
   fs::path dir_;
 };
+
+/// Every file below `dir` (relative path → content), skipping the logs.
+inline std::map<std::string, std::string> outputs(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    const std::string rel = fs::relative(e.path(), dir).string();
+    if (rel.rfind("log.", 0) == 0) continue;
+    files[rel] = readText(e.path());
+  }
+  return files;
+}
 
 /// Trapezoid weights along the arclength of the table's rows (the L²(Γ) inner product).
 inline std::vector<double> trapezoid(const std::vector<Row>& rows) {

@@ -25,18 +25,6 @@ namespace {
 
 const char* const kCase = "tests:faultInCube";
 
-/// Every file below `dir` (relative path → content), skipping the logs.
-std::map<std::string, std::string> outputs(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    if (!e.is_regular_file()) continue;
-    const std::string rel = fs::relative(e.path(), dir).string();
-    if (rel.rfind("log.", 0) == 0) continue;
-    files[rel] = readText(e.path());
-  }
-  return files;
-}
-
 double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
 
 /// Write `m` as Medit .mesh (as FreeFEM's savemesh does) with its points mapped by `map`,

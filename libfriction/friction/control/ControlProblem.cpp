@@ -55,9 +55,15 @@ ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen
 double ControlProblem::relativeResidual(const ControlState& s) const {
   const double d = norm(s.D);
   if (d == 0) return 0;
-  const Eigen::VectorXd &m = response_.freeMask(), &mk = componentMask_;
-  const double scale = std::sqrt(dot(s.tau.cwiseProduct(mk), s.tau.cwiseProduct(mk)) +
-                                 nodeDot(s.sigmaN.cwiseProduct(m), s.sigmaN.cwiseProduct(m)));
+  const Eigen::VectorXd& m = response_.freeMask();
+  // τ has the k·n tangential entries alone, with or without openings.
+  const Eigen::Index kn = blockSize() * numNodes();
+  const Eigen::VectorXd tauFree = s.tau.cwiseProduct(componentMask_.head(kn));
+  const double tangential =
+      opening_ ? (tauFree.array() * tauFree.array() * componentWeights_.head(kn).array()).sum()
+               : dot(tauFree, tauFree);
+  const double scale =
+      std::sqrt(tangential + nodeDot(s.sigmaN.cwiseProduct(m), s.sigmaN.cwiseProduct(m)));
   return scale > 0 ? d / scale : d;
 }
 
