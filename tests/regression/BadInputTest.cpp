@@ -321,6 +321,24 @@ TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties ent
        "\nfractur\n",
        "fractur",
        {"fractur", "did you mean 'fracture'"}},
+      {"unknownContact",
+       "constant/fractureProperties",
+       "frictionCoefficient +0.2;",
+       "frictionCoefficient 0.2;\n    contact unilatral;",
+       "contact unilatral;",
+       {"contact", "unilatral", "bilateral, unilateral", "did you mean 'unilateral'"}},
+      {"negativeGammaNormal",
+       "system/frictionSolution",
+       "gamma +2;",
+       "gamma 2;\n    gammaNormal -1;",
+       "gammaNormal -1;",
+       {"gammaNormal", "> 0"}},
+      {"gammaNormalAndRelative",
+       "system/frictionSolution",
+       "gamma +2;",
+       "gamma 2;\n    gammaNormal 1e9;\n    gammaNormalRelative 1;",
+       "gammaNormalRelative 1;",
+       {"keys 'gammaNormal'", "and 'gammaNormalRelative'", "not both"}},
       {"toleranceInControl",
        "system/frictionSolution",
        "gamma +2;",
@@ -388,6 +406,17 @@ TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties ent
                           lineOf(c.dir() / "system/frictionSolution", "gradient adjoint;")),
                        "unknown value 'adjoint' (valid values are: exact, frozenRho)"});
     CHECK_THAT(out, !Catch::Contains("did you mean"));
+  }
+  SECTION("the krylov variant with a fracture that opens names the key and the way out") {
+    Case c("paperBenchmark", "bad-settings-krylovOpening");
+    split(c);
+    c.edit("constant/fractureProperties", "frictionCoefficient +0.2;",
+           "frictionCoefficient 0.2;\n    contact unilateral;");
+    c.edit("system/frictionSolution", "type +semismoothNewton;",
+           "type semismoothNewton;\n        variant krylov;");
+    solverFails(c, {at("system/frictionSolution",
+                       lineOf(c.dir() / "system/frictionSolution", "variant krylov;")),
+                    "key 'variant'", "contact unilateral", "variant condensed"});
   }
   SECTION("no entry for a fracture of the mesh") {
     Case c("paperBenchmark", "bad-settings-noFractureEntry");

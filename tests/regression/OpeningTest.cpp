@@ -38,13 +38,13 @@ std::string sneddonError(const Case& c, const std::string& options = "") {
   return out;
 }
 
-/// The effects of the case: the fluid pressure `pressure` (a value or "table (...)" or
-/// "values \"...\""), and with stress an in-situ stress (sxx syy sxy) [Pa].
+/// The effects of the case: the fluid pressure `pressure` (a value, "table (...)", or
+/// "values \"file\"" for the values key), and with stress an in-situ stress (sxx syy sxy) [Pa].
 void setEffects(Case& c, const std::string& pressure, const std::string& stress = "") {
   std::string text =
       "FoamFile { version 2.0; format ascii; class dictionary; object effects; }\n"
-      "fluid { type fracturePressure; fracture crack; pressure " +
-      pressure + "; }\n";
+      "fluid { type fracturePressure; fracture crack; " +
+      (pressure.rfind("values", 0) == 0 ? pressure : "pressure " + pressure) + "; }\n";
   if (!stress.empty()) text += "inSitu { type initialStress; stress " + stress + "; }\n";
   writeText(c.dir() / "constant/effects", text);
 }
@@ -200,4 +200,186 @@ TEST_CASE("Net pressure: the crack opens only when p > |sigma_n_inf|, by p + sig
   CHECK(sneddonValue(out, "openNodes") == 31);
   CHECK(sneddonValue(out, "relL2Error") <= 0.056);
   CHECK(sneddonValue(out, "slipRelL2Error") <= 0.078);
+}
+
+namespace {
+
+/// The pressure of the partly open case at arclength s (s = 0 at x = −a): a hat, 0.2 MPa at
+/// the tips and 1 MPa at the centre, as constant/p.dat gives it (linear between the lines).
+double hatPressure(double s) { return 0.2e6 + 0.8e6 * (1 - std::abs(s - 1.0)); }
+
+/// The partly open case: the hat pressure under σ_yy = −0.8 MPa and a shear 0.3 MPa.
+void partlyOpen(Case& c) {
+  writeText(c.dir() / "constant/p.dat", "0 2e5\n1 1e6\n2 2e5\n");
+  setEffects(c, "values \"constant/p.dat\"", "(-0.3e6 -0.8e6 0.3e6)");
+}
+
+}  // namespace
+
+TEST_CASE("A partly open crack: complementarity node by node, friction where closed, any gamma_n",
+          "[regression][opening]") {
+  // The hat pressure exceeds the confinement S = 0.8 MPa on the middle half: the middle
+  // opens, the ends stay closed and slide under the shear with μ_f = 0.6 (measured: 13 nodes
+  // open, 18 slip, in 4 Newton iterations). With S = 0.5 MPa the open middle's own tension at
+  // its ends pulls the whole crack open.
+  Case ref("sneddonCrack", "opening/partly-ref");
+  partlyOpen(ref);
+  REQUIRE(ref.solve() == 0);
+  INFO(ref.log());
+  const Table t = ref.namedTable("1", "crack");
+  const int open = countState(t, "open"), closed = countState(t, "stick") + countState(t, "slip");
+  // Both parts must be there, or the checks below test nothing.
+  CHECK(open >= 5);
+  CHECK(closed >= 5);
+  double gmax = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) gmax = std::max(gmax, t.at(r, "opening"));
+  REQUIRE(gmax > 0);
+  // Node by node (σ'_n = σ_n + p): g ≥ 0, σ'_n ≤ 0, g σ'_n = 0 — to round-off: Newton's last
+  // step solves the open rows σ'_n = 0 exactly and sets g = 0 on the closed ones (measured
+  // |σ'_n| ≤ 1e-9 p on open nodes; bound 1e-8 of the largest pressure).
+  const double p = 1e6, mu = 0.6;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    if (t.state[r] == "tip") continue;
+    INFO("row " << r << " state " << t.state[r]);
+    const double g = t.at(r, "opening");
+    const double effective = t.at(r, "sigmaN") + hatPressure(t.at(r, "s"));
+    CHECK(g >= 0);
+    CHECK(effective <= 1e-8 * p);
+    CHECK(std::abs(g * effective) <= 1e-8 * p * gmax);
+    const double tau = std::abs(t.at(r, "tau"));
+    if (t.state[r] == "open") {
+      CHECK(std::abs(effective) <= 1e-8 * p);
+      CHECK(tau <= 1e-8 * p);
+    } else {
+      CHECK(g == 0);
+      // Coulomb on the closed part: |τ| ≤ μ_f |σ'_n|, with equality where it slips.
+      CHECK(tau <= mu * -effective + 1e-8 * p);
+      if (t.state[r] == "slip") CHECK(std::abs(tau - mu * -effective) <= 1e-8 * p);
+    }
+  }
+  // γ_n weighs the normal residual against the opening: the answer does not depend on it, over
+  // ten decades (measured: equal to 1e-9 of the largest opening and slip).
+  double slipMax = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    slipMax = std::max(slipMax, std::abs(t.at(r, "slip")));
+  REQUIRE(slipMax > 0);
+  for (const char* gammaN : {"1e-5", "1e-3", "0.1", "10", "1e3", "1e5"}) {
+    Case c("sneddonCrack", std::string("opening/partly-gammaN-") + gammaN);
+    partlyOpen(c);
+    c.edit("system/frictionSolution", "gammaRelative +1;",
+           std::string("gammaRelative 1;\n    gammaNormalRelative ") + gammaN + ";");
+    const int rc = c.solve();
+    INFO(gammaN << "\n" << c.log());
+    REQUIRE(rc == 0);
+    const Table u = c.namedTable("1", "crack");
+    REQUIRE(u.rows.size() == t.rows.size());
+    double dg = 0, ds = 0;
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      dg = std::max(dg, std::abs(u.at(r, "opening") - t.at(r, "opening")));
+      ds = std::max(ds, std::abs(u.at(r, "slip") - t.at(r, "slip")));
+    }
+    CHECK(dg <= 1e-8 * gmax);
+    CHECK(ds <= 1e-8 * slipMax);
+    CHECK(u.state == t.state);
+  }
+}
+
+namespace {
+
+/// The load cycle: under σ_yy = −0.5 MPa and a shear 0.2 MPa, the pressure 0.3, 0.8, 1.2,
+/// 0.8, 0.3, 0 MPa at t = 1 … 6: closed, open three steps, closed again.
+void pressureCycle(Case& c) {
+  setEffects(c, "table ((0 0) (1 0.3e6) (2 0.8e6) (3 1.2e6) (4 0.8e6) (5 0.3e6) (6 0))",
+             "(-0.3e6 -0.5e6 0.2e6)");
+  c.edit("system/controlDict", "endTime +1;", "endTime 6;");
+}
+
+/// "nodes stick A slip B open C tip D" of each step line of the log, by step.
+std::vector<int> openPerStep(const std::string& log) {
+  std::vector<int> open;
+  const std::regex r("\nTime = [^\n]* nodes stick [0-9]+ slip [0-9]+ open ([0-9]+) tip 2");
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), r); it != std::sregex_iterator();
+       ++it)
+    open.push_back(std::stoi((*it)[1].str()));
+  return open;
+}
+
+}  // namespace
+
+TEST_CASE("Opening and closing over a load cycle: one factorisation, states in the log",
+          "[regression][opening]") {
+  Case c("sneddonCrack", "opening/cycle/sneddonCrack");
+  pressureCycle(c);
+  REQUIRE(c.solve() == 0);
+  const std::string log = c.log();
+  INFO(log);
+  CHECK_THAT(log, Catch::Contains("Factorisations 1 ("));
+  CHECK_THAT(log, !Catch::Contains("cycling"));
+  CHECK(openPerStep(log) == std::vector<int>{0, 31, 31, 31, 0, 0});
+  // Fully open, the opening is the load's alone: t = 2 and t = 4 have the same pressure.
+  const Table a = c.namedTable("2", "crack"), b = c.namedTable("4", "crack");
+  double gmax = 0, differ = 0;
+  for (std::size_t r = 0; r < a.rows.size(); ++r) {
+    gmax = std::max(gmax, a.at(r, "opening"));
+    differ = std::max(differ, std::abs(a.at(r, "opening") - b.at(r, "opening")));
+  }
+  REQUIRE(gmax > 0);
+  CHECK(differ <= 1e-10 * gmax);
+  // Closed again, the faces touch: no opening is left.
+  for (const char* time : {"5", "6"}) {
+    const Table t = c.namedTable(time, "crack");
+    for (std::size_t r = 0; r < t.rows.size(); ++r) CHECK(t.at(r, "opening") == 0);
+  }
+  // A warm start (each step from the last opening and increment) reaches the same states.
+  Case warm("sneddonCrack", "opening/cycle-warm/sneddonCrack");
+  pressureCycle(warm);
+  warm.edit("system/frictionSolution", "warmStart +no;", "warmStart yes;");
+  REQUIRE(warm.solve() == 0);
+  CHECK(openPerStep(warm.log()) == std::vector<int>{0, 31, 31, 31, 0, 0});
+  const Table w = warm.namedTable("6", "crack"), cold = c.namedTable("6", "crack");
+  double slipMax = 0, ds = 0;
+  for (std::size_t r = 0; r < w.rows.size(); ++r) {
+    slipMax = std::max(slipMax, std::abs(cold.at(r, "slip")));
+    ds = std::max(ds, std::abs(w.at(r, "slip") - cold.at(r, "slip")));
+  }
+  REQUIRE(slipMax > 0);
+  CHECK(ds <= 1e-8 * slipMax);
+}
+
+TEST_CASE("Opening restart: stopped open and continued, every file as the uninterrupted run's",
+          "[regression][opening][restart]") {
+  // One folder name for both: the VTK files are named after it.
+  // With a warm start, each step starts from the last one's opening and increment: the
+  // restart must read both back (uniform/frictionState) to write the same digits.
+  Case whole("sneddonCrack", "opening/restart-whole/sneddonCrack");
+  pressureCycle(whole);
+  whole.edit("system/frictionSolution", "warmStart +no;", "warmStart yes;");
+  REQUIRE(whole.solve() == 0);
+  Case c("sneddonCrack", "opening/restart-stopped/sneddonCrack");
+  pressureCycle(c);
+  c.edit("system/frictionSolution", "warmStart +no;", "warmStart yes;");
+  c.edit("system/controlDict", "endTime +6;", "endTime 3;");
+  REQUIRE(c.solve() == 0);
+  c.edit("system/controlDict", "endTime 3;", "endTime 6;");
+  c.edit("system/controlDict", "startFrom +startTime;", "startFrom latestTime;");
+  REQUIRE(run("'" + (fs::path(FRICTION_BIN_DIR) / "frictionSolver").string() + "' -case '" +
+                  c.dir().string() + "'",
+              c.dir() / "log.frictionSolver") == 0);
+  CHECK_THAT(c.log(), Catch::Contains("Restarting from time 3"));
+  CHECK_THAT(readText(c.dir() / "3/uniform/frictionState"), Catch::Contains("opening"));
+  auto a = outputs(whole.dir()), b = outputs(c.dir());
+  for (const char* input : {"system/controlDict", "constant/splitMesh"}) {
+    REQUIRE(a.erase(input) == 1);
+    REQUIRE(b.erase(input) == 1);
+  }
+  REQUIRE(a.count("4/fractures/crack.dat") == 1);
+  std::set<std::string> names;
+  for (const auto& [k, v] : a) names.insert(k);
+  for (const auto& [k, v] : b) names.insert(k);
+  for (const std::string& k : names) {
+    INFO(k);
+    CHECK(a.count(k) == 1);
+    CHECK(b.count(k) == 1);
+    if (a.count(k) && b.count(k)) CHECK((a[k] == b[k]));
+  }
 }
