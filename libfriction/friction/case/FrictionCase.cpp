@@ -292,7 +292,9 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       log << "Note: the part of the mesh " << p.describe()
           << " touches no Dirichlet patch: only fracture(s) " << joinWords(p.fractures)
           << " hold it; where they cannot carry its load (frictionless, tension) it slides "
-             "without bound\n";
+             "without bound"
+          << (opening_ ? ", and where they open (contact unilateral) entirely it is free" : "")
+          << "\n";
   if (int held = system_->numHeldOnDirichlet())
     log << "Note: " << held
         << " fracture node(s) lie on a Dirichlet patch: their jump is held at zero\n";
@@ -955,6 +957,44 @@ void FrictionCase::judgeStep(StepResult& r) const {
     if (!parts.empty()) s << ": fix a patch of it (0/D) or give its fracture friction";
     addNote(s.str());
   }
+  // 4. Fractures that open: a part held only by fractures whose faces all separate has
+  // nothing left to hold it. Its opening is then a rigid-body motion: the normal rows of
+  // Newton's system are singular (no step: stalled), or the opening grows beyond the body.
+  if (!opening_) return;
+  const Eigen::Index n = sys.size();
+  double maxOpening = 0;
+  for (Eigen::Index i = 0; i < n; ++i)
+    maxOpening = std::max(maxOpening, std::abs(last_.beta[k * n + i]));
+  const bool tooWide = diameter_ > 0 && maxOpening > diameter_;
+  if (r.report.status == OptimizerStatus::converged && !tooWide) return;
+  std::vector<std::string> parts;
+  for (const FloatingPart& p : floating_) {
+    if (!p.heldThroughFracture) continue;
+    bool opens = false;
+    for (const auto& f : fractures_)
+      if (f.unilateral && std::find(p.fractures.begin(), p.fractures.end(),
+                                    "'" + f.name + "'") != p.fractures.end())  // quoted names
+        opens = true;
+    if (opens)
+      parts.push_back("the part " + p.describe() + " touches no Dirichlet patch and only " +
+                      joinWords(p.fractures) + " hold" + (p.fractures.size() == 1 ? "s" : "") +
+                      " it");
+  }
+  if (parts.empty() && !tooWide) return;
+  std::ostringstream s;
+  s << std::setprecision(3);
+  if (tooWide) s << "opening up to " << maxOpening << " m, larger than the body: ";
+  if (parts.empty())
+    s << "the fractures cannot carry the load (check the loads and the pressure)";
+  else {
+    for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : "") << parts[i];
+    s << ", and contact unilateral lets the faces separate: where they all open nothing holds "
+         "the part (a rigid-body motion); fix a patch of it (0/D), or make the fracture "
+         "bilateral";
+    if (r.report.status != OptimizerStatus::converged && !tooWide)
+      r.report.status = OptimizerStatus::stalled;
+  }
+  addNote(s.str());
 }
 
 std::string FrictionCase::nodeState(Eigen::Index k) const {

@@ -550,6 +550,8 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
     }
     if (!dir.allFinite()) {
       r.status = OptimizerStatus::stalled;
+      r.note += std::string(r.note.empty() ? "" : "; ") +
+                "the Newton system on the non-stick nodes is singular";
       break;
     }
     const bool accepted = lineSearch(p, s, dir, stateAt, lastStep, states);
