@@ -9,7 +9,8 @@ Figure 1, per fracture (default <case>/postProcessing/fracture_<name>.png):
           (Coulomb: ST <= mu_f, equality where the fracture slips). Otherwise (tresca,
           frictionless, mu_f = 0, or a fracture in tension, where ST and mu_f mean nothing): the
           tractions sigma_n and tau [Pa] along s.
-  bottom: the accumulated slip [m] along s, one curve per time.
+  bottom: the accumulated slip [m] along s, one curve per time; with fractures that open
+          (an 'opening' column: contact unilateral) a third panel, the opening g [m].
 Tips (state 'tip': a single node, no traction) are left out of the traction and ST curves;
 their slip, 0 (the jump is held there), is drawn.
 Figure 2 (default <case>/postProcessing/convergence.png, when postProcessing/convergence.dat
@@ -204,7 +205,11 @@ def plotFracture(case, name, times, out):
                      for _, cols, _ in tables
                      for state, sigmaN in zip(cols["state"], cols.get("sigmaN", [])))
     showST = law in COULOMB_LAWS and compressed and (mu is None or mu > 0)
-    fig, (axTop, axSlip) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True)
+    opening = any("opening" in cols for _, cols, _ in tables)
+    if opening:
+        fig, (axTop, axSlip, axOpen) = plt.subplots(3, 1, figsize=(8, 10), sharex=True)
+    else:
+        fig, (axTop, axSlip) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True)
     colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(times) - 1) for i in range(len(times))])
     for (t, cols, word), color in zip(tables, colors):
         label = f"t = {t}" + (f" ({word})" if word and word != "converged" else "")
@@ -218,6 +223,8 @@ def plotFracture(case, name, times, out):
                     axTop.plot(s, [cols[key][i] for i in keep], style, color=color, ms=3, lw=1,
                                label=f"{symbol}, {label}")
         axSlip.plot(cols["s"], cols["slip"], ".-", color=color, ms=3, lw=1, label=label)
+        if opening and "opening" in cols:
+            axOpen.plot(cols["s"], cols["opening"], ".-", color=color, ms=3, lw=1, label=label)
     if showST:
         if mu is not None:
             axTop.axhline(mu, color="firebrick", ls="--", lw=1.2, label=f"$\\mu_f$ = {mu:g}")
@@ -228,10 +235,14 @@ def plotFracture(case, name, times, out):
                     + (f" (law {law})" if law else ""))
     axTop.grid(True, alpha=0.3)
     axTop.legend(fontsize=8)
-    axSlip.set_xlabel("arclength s [m]")
     axSlip.set_ylabel("slip [m]")
     axSlip.grid(True, alpha=0.3)
     axSlip.legend(fontsize=8)
+    if opening:
+        axOpen.set_ylabel("opening g [m]")
+        axOpen.grid(True, alpha=0.3)
+        axOpen.legend(fontsize=8)
+    (axOpen if opening else axSlip).set_xlabel("arclength s [m]")
     fig.tight_layout()
     saveFigure(fig, out)
     plt.close(fig)

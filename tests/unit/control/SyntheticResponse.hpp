@@ -43,9 +43,19 @@ class SyntheticResponse : public SlipResponse {
   const VectorXd& weights() const override { return w_; }
   const VectorXd& freeMask() const override { return mask_; }
   void primal(const VectorXd& beta, VectorXd& tau, VectorXd& sigmaN) override {
-    tau = tau0_ + Stt_ * beta;
-    sigmaN = sigma0_ + Snt_ * beta;
+    const Eigen::Index kn = k_ * size();
+    if (beta.size() == kn) {
+      tau = tau0_ + Stt_ * beta;
+      sigmaN = sigma0_ + Snt_ * beta;
+      return;
+    }
+    // With openings g after the slip: a unit opening is the jump −n_Γ (SlipResponse.hpp).
+    const VectorXd b = beta.head(kn), g = beta.tail(size());
+    tau = tau0_ + Stt_ * b - Stn_ * g;
+    sigmaN = sigma0_ + Snt_ * b - w_.cwiseInverse().asDiagonal() * Snn_ * g;
   }
+  /// Move σ_n's offsets by `shift` (n): e.g. to put some nodes in tension.
+  void shiftSigmaN(const VectorXd& shift) { sigma0_ += shift; }
   void dual(const VectorXd& qt, const VectorXd& qn, VectorXd& tauDual,
             VectorXd* sigmaNDual) override {
     tauDual = Stt_ * qt + Stn_ * qn;
