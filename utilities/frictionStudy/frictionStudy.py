@@ -3,8 +3,10 @@
 
 Sweeps stopping tolerance, optimizer, element order and mesh on copies of
 cases/inclinedCrack (2D, analytic slip), cases/paperBenchmark (2D; reference: the finest
-mesh of the sweep, same order, semismoothNewton at tolerance 1e-12) and cases/pennyCrack
-(3D, analytic slip, measured by the case's pennyError.py), runs splitFractureNodes and
+mesh of the sweep, same order, semismoothNewton at tolerance 1e-12), cases/pennyCrack
+(3D, analytic slip, measured by the case's pennyError.py) and cases/sneddonCrack (2D, a
+crack opened by fluid pressure, contact unilateral: Sneddon's opening, measured by the
+case's sneddonError.py; the krylov variant does not take openings), runs splitFractureNodes and
 frictionSolver on each, and writes study.csv, study.md and study.png to --out. It also
 measures, on the finest paperBenchmark level, how much faster semismoothNewton reaches the
 slip error of 2000 steepestDescent iterations (alpha 2e-4, the paper's step; where it
@@ -43,7 +45,11 @@ DIRECTION = np.array([math.cos(math.radians(60.0)), math.sin(math.radians(60.0))
 PENNY_MESHES = (4, 6, 8)
 PENNY_A = 1.0
 
-CASES = ["inclinedCrack", "paperBenchmark", "pennyCrack"]
+# sneddonCrack: crack half-length a = 1 m (cases/sneddonCrack/README.md); h = a/d on the crack.
+SNEDDON_MESHES = (16, 32, 64)
+SNEDDON_A = 1.0
+
+CASES = ["inclinedCrack", "paperBenchmark", "pennyCrack", "sneddonCrack"]
 OPTIMIZERS = ["steepestDescent", "armijo", "barzilaiBorwein", "lbfgs", "semismoothNewton",
               "semismoothNewton; variant krylov"]
 CSV_COLUMNS = ["case", "mesh", "hOrN", "order", "optimizer", "tolerance", "status",
@@ -92,6 +98,13 @@ def plan(quick, cases=CASES):
                 for tol in tols:
                     mi = 2000 if opt == "steepestDescent" else 20000
                     runs.append(("pennyCrack", "a/%d" % d, PENNY_A / d, order, opt, tol, mi))
+        # sneddonCrack: two meshes, both orders; L-BFGS on P1 only (on P2 a/32 it needs 45 s).
+        for d in SNEDDON_MESHES[:2]:
+            for order in (1, 2):
+                for opt in ("lbfgs", "semismoothNewton") if order == 1 else ("semismoothNewton",):
+                    for tol in tols:
+                        runs.append(("sneddonCrack", "a/%d" % d, SNEDDON_A / d, order, opt, tol,
+                                     20000))
     else:
         tols = [1e-2, 1e-4, 1e-6, 1e-8, 1e-10]
         for d in (8, 16, 32, 64, 128):
@@ -109,6 +122,14 @@ def plan(quick, cases=CASES):
                 for opt in OPTIMIZERS:
                     for tol in tols:
                         runs.append(("pennyCrack", "a/%d" % d, PENNY_A / d, order, opt, tol,
+                                     20000))
+        for d in SNEDDON_MESHES:
+            for order in (1, 2):
+                for opt in OPTIMIZERS:
+                    if "krylov" in opt:  # refused for fractures that open
+                        continue
+                    for tol in tols:
+                        runs.append(("sneddonCrack", "a/%d" % d, SNEDDON_A / d, order, opt, tol,
                                      20000))
     return [r for r in runs if r[0] in cases]
 
@@ -238,6 +259,8 @@ def run_one(work, base, tag, order, opt, tol, max_iter, alpha, binary, timeout):
     steps = STEP_RE.findall(text)
     if steps:
         it, bs, rr, ex, st = steps[-1]
+        # With fractures that open the line goes on with the node states: not the status.
+        st = re.sub(r"\s+nodes stick \d+ slip \d+ open \d+ tip \d+$", "", st)
         res.update(iterations=int(it), backSubstitutions=int(bs), relResidual=float(rr),
                    maxExcessST=float(ex), status=st.replace(" ", "_"))
     # The run's cost: every back-substitution, those building Newton's S once per run included.
@@ -289,6 +312,18 @@ def penny_error(run_dir):
     if rc != 0 or not m:
         raise RuntimeError("pennyError.py on %s: exit %s, no relL2Error line:\n%s"
                            % (run_dir, rc, buf.getvalue()))
+    return float(m.group(1))
+
+
+def sneddon_error(run_dir):
+    """relL2Error of cases/sneddonCrack/sneddonError.py on a run folder: the relative L2
+    error of the opening against Sneddon's."""
+    script = os.path.join(REPO, "cases", "sneddonCrack", "sneddonError.py")
+    r = subprocess.run([sys.executable, script, "-case", run_dir], capture_output=True, text=True)
+    m = re.search(r"(?m)^relL2Error\s+(\S+)$", r.stdout)
+    if r.returncode != 0 or not m:
+        raise RuntimeError("sneddonError.py on %s: exit %d:\n%s%s"
+                           % (run_dir, r.returncode, r.stdout, r.stderr))
     return float(m.group(1))
 
 
@@ -358,7 +393,10 @@ def write_outputs(out, rows, ratio_lines, mode, total_seconds, refs):
                   ("pennyCrack", "pennyCrack (3D, P1 and P2 on the same tetrahedra, h = a/d "
                    "on the disc): the error of |slip| against the analytic penny slip "
                    "(`relL2Error` of cases/pennyCrack/pennyError.py; its interpolation floor "
-                   "is 0.055 (P1) and 0.015 (P2) at a/8, the cube's finite size about 0.005)"))
+                   "is 0.055 (P1) and 0.015 (P2) at a/8, the cube's finite size about 0.005)"),
+                  ("sneddonCrack", "sneddonCrack (contact unilateral, h = a/d on the crack): the "
+                   "error of the opening against Sneddon's (`relL2Error` of "
+                   "cases/sneddonCrack/sneddonError.py; the held square costs about 0.0006)"))
               if any(r["case"] == case for r in rows)) +
           ". wallSeconds: the whole frictionSolver run (reading, assembly, factorisation, "
           "iterations, writing; the penny's runs also write their VTK files, which "
@@ -416,10 +454,12 @@ def plot(out, rows):
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("frictionSolver wall time [s]")
-        ax.set_ylabel("relative L²(Γ) slip error (0 drawn at 1e-16)")
+        ax.set_ylabel("relative L²(Γ) %s error (0 drawn at 1e-16)"
+                      % ("opening" if case == "sneddonCrack" else "slip"))
         ax.set_title(case + {"inclinedCrack": " (vs analytic slip)",
                              "paperBenchmark": " (vs finest-mesh reference)",
-                             "pennyCrack": " (3D, |slip| vs analytic)"}[case])
+                             "pennyCrack": " (3D, |slip| vs analytic)",
+                             "sneddonCrack": " (opening vs Sneddon)"}[case])
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
     fig.suptitle("What accuracy costs: points are tolerances × meshes")
@@ -498,6 +538,11 @@ def main():
                 err = ic_error(tab)
             elif case == "paperBenchmark":
                 err = pb_error(tab, refs[order])
+            elif case == "sneddonCrack":
+                try:
+                    err = sneddon_error(os.path.join(work, "runs", tag))
+                except RuntimeError as e:
+                    print("frictionStudy: %s" % e, file=sys.stderr)
             else:
                 try:
                     err = penny_error(os.path.join(work, "runs", tag))
