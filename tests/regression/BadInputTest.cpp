@@ -605,6 +605,38 @@ TEST_CASE("startFrom latestTime with a state of another size is refused before a
   CHECK_FALSE(fs::exists(c.dir() / "2"));
 }
 
+TEST_CASE("startFrom latestTime after contact changed is refused before any step",
+          "[regression][errors][opening]") {
+  // A folder written with fractures that open holds the openings; a folder written without
+  // them holds none: either way the restart cannot continue the run it names.
+  for (const bool nowUnilateral : {false, true}) {
+    DYNAMIC_SECTION((nowUnilateral ? "now unilateral" : "now bilateral")) {
+      Case c("sneddonCrack", std::string("bad-restartContact-") + (nowUnilateral ? "u" : "b"));
+      if (nowUnilateral)
+        c.edit("constant/fractureProperties", "contact +unilateral;", "contact bilateral;");
+      split(c);
+      {
+        const fs::path log = c.dir() / "log.frictionSolver.first";
+        const int rc = run(bin("frictionSolver") + " -case " + quoted(c.dir()), log);
+        INFO(readText(log));
+        REQUIRE(rc == 0);
+      }
+      c.edit("constant/fractureProperties",
+             nowUnilateral ? "contact bilateral;" : "contact +unilateral;",
+             nowUnilateral ? "contact unilateral;" : "contact bilateral;");
+      c.edit("system/controlDict", "startFrom +startTime;", "startFrom latestTime;");
+      c.edit("system/controlDict", "endTime +1;", "endTime 2;");
+      const fs::path state = c.dir() / "1/uniform/frictionState";
+      if (nowUnilateral)
+        solverFails(c, {"1/uniform/frictionState", "no key 'opening'", "contact unilateral"});
+      else
+        solverFails(c, {at("1/uniform/frictionState", lineOf(state, "opening")),
+                        "could open (contact unilateral)", "-overwrite"});
+      CHECK_FALSE(fs::exists(c.dir() / "2"));
+    }
+  }
+}
+
 TEST_CASE("a bad table in 0/D names the patch and the key it is the value of",
           "[regression][errors]") {
   Case c("paperBenchmark", "bad-D-tableKey");

@@ -663,6 +663,11 @@ long FrictionCase::restart(std::ostream& log) {
   const long step = st.getInt("step", Bounds::nonNegative());
   const double t0 = st.getScalar("time");
   std::vector<double> opening;
+  if (!opening_ && st.found("opening"))
+    st.fail("opening",
+            "key 'opening': this folder was written by a run whose fractures could open "
+            "(contact unilateral), and none may now: restore contact unilateral in "
+            "constant/fractureProperties, or start again (frictionSolver -overwrite)");
   if (opening_) {
     if (!st.found("opening"))
       throw InputError(st.location(),
