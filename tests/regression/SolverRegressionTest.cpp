@@ -438,6 +438,19 @@ TEST_CASE("ParaView files read by VTK hold the solver's own table values", "[reg
   INFO(out);
   CHECK(rcTips == 0);
   CHECK_THAT(out, Catch::Contains(", 2 tips)"));
+  // A crack that opens: the opening column and point array agree too.
+  Case open("sneddonCrack", "sneddonCrack-vtk");
+  REQUIRE(open.solve() == 0);
+  const std::string openLog = open.log();
+  REQUIRE(
+      std::regex_search(openLog, m, std::regex("Split mesh: ([0-9]+) points, ([0-9]+) triangles")));
+  const int rcOpen = run("/usr/bin/python3 '" + script + "' '" + open.dir().string() +
+                             "' 1 crack " + m[1].str() + " " + m[2].str(),
+                         open.dir() / "log.vtk");
+  const std::string outOpen = readText(open.dir() / "log.vtk");
+  INFO(outOpen);
+  CHECK(rcOpen == 0);
+  CHECK_THAT(outOpen, Catch::Contains(", 2 tips, opening)"));
 }
 
 TEST_CASE("condensed Newton: S from the factorisation, no back-substitution per fracture node",

@@ -4,8 +4,8 @@
 Usage: vtkMatchesTables.py CASE_DIR TIME FRACTURE NUM_POINTS NUM_CELLS
 Checks: the .pvd names files that exist; the .vtu has the split mesh's point and cell
 counts, connectivity in range (VTK itself does not check it) and finite arrays; the .vtp
-has one point per table row with sigmaN, tau, ST, slip, residual and state equal to the
-table's values (the table is written with writePrecision digits: relative 1e-6 is ample);
+has one point per table row with sigmaN, tau, ST, slip, residual, opening (fractures that
+open) and state equal to the table's values (the table is written with writePrecision digits: relative 1e-6 is ample);
 a tip's row has NaN tractions in both, and state code 3.
 """
 import math
@@ -42,15 +42,21 @@ for name in ("stress", "vonMises"):
     a = vtk_to_numpy(grid.GetCellData().GetArray(name))
     assert a.shape[0] == ncells and all(map(math.isfinite, a.ravel())), name
 
-rows = [l.split() for l in open(os.path.join(case, time, "fractures", fracture + ".dat")) if not l.startswith("#")]
+lines = open(os.path.join(case, time, "fractures", fracture + ".dat")).read().splitlines()
+header = lines[0][1:].split()
+rows = [l.split() for l in lines if not l.startswith("#")]
 vtp = [f for f in files if f.endswith(".vtp") and os.path.basename(f).startswith(fracture + "_")][0]
 p = vtk.vtkXMLPolyDataReader()
 p.SetFileName(os.path.join(vtkdir, vtp))
 p.Update()
 poly = p.GetOutput()
 assert poly.GetNumberOfPoints() == len(rows), (poly.GetNumberOfPoints(), len(rows))
-assert rows and all(len(r) == 10 for r in rows), "expected 10 columns per row"
-columns = {"slip": 3, "sigmaN": 5, "tau": 6, "ST": 7, "residual": 8}
+# 10 columns, 11 with fractures that open (the opening before the state)
+assert header[-1] == "state" and len(header) in (10, 11), header
+assert rows and all(len(r) == len(header) for r in rows), "expected %d columns per row" % len(header)
+last = len(header) - 1
+names = ["slip", "sigmaN", "tau", "ST", "residual"] + (["opening"] if "opening" in header else [])
+columns = {name: header.index(name) for name in names}
 for name, col in columns.items():
     array = poly.GetPointData().GetArray(name)
     assert array is not None, "no point array " + name
@@ -58,10 +64,12 @@ for name, col in columns.items():
     for i, row in enumerate(rows):
         want = float(row[col])
         if math.isnan(want):  # a tip's traction: NaN in both, nowhere else
-            assert row[9] == "tip" and math.isnan(a[i]), (name, i, a[i], row)
+            assert row[last] == "tip" and math.isnan(a[i]), (name, i, a[i], row)
             continue
         assert math.isclose(a[i], want, rel_tol=1e-6, abs_tol=1e-12 * (1 + abs(want))), (name, i, a[i], want)
 codes = {"stick": 0, "slip": 1, "open": 2, "tip": 3}
 state = vtk_to_numpy(poly.GetPointData().GetArray("state"))
-assert [int(s) for s in state] == [codes[row[9]] for row in rows], "state differs"
-print("PASS: %s and %s match the tables (%d points, %d cells, %d fracture nodes, %d tips)" % (vtu, vtp, npoints, ncells, len(rows), sum(r[9] == "tip" for r in rows)))
+assert [int(s) for s in state] == [codes[row[last]] for row in rows], "state differs"
+print("PASS: %s and %s match the tables (%d points, %d cells, %d fracture nodes, %d tips%s)" % (
+    vtu, vtp, npoints, ncells, len(rows), sum(r[last] == "tip" for r in rows),
+    ", opening" if "opening" in header else ""))
