@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -203,6 +204,53 @@ inline std::map<std::string, std::string> outputs(const fs::path& dir) {
     files[rel] = readText(e.path());
   }
   return files;
+}
+
+/// The files two runs of one case wrote, byte for byte: `whole` ran uninterrupted, `restarted`
+/// was stopped and continued with startFrom latestTime. The controlDict (edited for the stop)
+/// and the split mesh (it names its case folder) are inputs and left out; `mustHave` lists
+/// outputs that must be there, so that the comparison cannot pass on empty folders.
+inline void checkSameOutputs(const fs::path& whole, const fs::path& restarted,
+                             const std::vector<std::string>& mustHave) {
+  auto a = outputs(whole), b = outputs(restarted);
+  for (const char* input : {"system/controlDict", "constant/splitMesh"}) {
+    REQUIRE(a.erase(input) == 1);
+    REQUIRE(b.erase(input) == 1);
+  }
+  for (const std::string& f : mustHave) REQUIRE(a.count(f) == 1);
+  std::set<std::string> names;
+  for (const auto& [k, v] : a) names.insert(k);
+  for (const auto& [k, v] : b) names.insert(k);
+  for (const std::string& k : names) {
+    INFO(k);
+    CHECK(a.count(k) == 1);
+    CHECK(b.count(k) == 1);
+    if (a.count(k) && b.count(k)) CHECK((a[k] == b[k]));
+  }
+}
+
+/// Run a case's own checking script (e.g. cases/pennyCrack/pennyError.py, relative to the
+/// source tree) on the solved case with `options`; returns its output. Exit 0 required: its
+/// --max checks passed.
+inline std::string runCaseScript(const fs::path& caseDir, const std::string& script,
+                                 const std::string& options) {
+  const fs::path path = fs::path(FRICTION_SOURCE_DIR) / script;
+  const fs::path log = caseDir / ("log." + path.stem().string() + "Test");
+  const int rc = run(
+      "/usr/bin/python3 '" + path.string() + "' -case '" + caseDir.string() + "' " + options, log);
+  const std::string out = readText(log);
+  INFO(out);
+  CHECK(rc == 0);
+  return out;
+}
+
+/// One number of such a script's output ("name   value ...").
+inline double scriptValue(const std::string& out, const std::string& name) {
+  std::smatch m;
+  const std::regex r("(^|\n)" + name + " +([-+0-9.eE]+)");
+  INFO(out);
+  REQUIRE(std::regex_search(out, m, r));
+  return std::stod(m[2].str());
 }
 
 /// Trapezoid weights along the arclength of the table's rows (the L²(Γ) inner product).

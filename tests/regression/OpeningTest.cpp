@@ -18,24 +18,12 @@ namespace {
 
 /// One number of sneddonError.py's output ("name   value").
 double sneddonValue(const std::string& out, const std::string& name) {
-  std::smatch m;
-  const std::regex r("(^|\n)" + name + " +([-+0-9.eE]+)");
-  INFO(out);
-  REQUIRE(std::regex_search(out, m, r));
-  return std::stod(m[2].str());
+  return scriptValue(out, name);
 }
 
 /// sneddonError.py on the solved case with `options`; exit 0 required (its checks passed).
 std::string sneddonError(const Case& c, const std::string& options = "") {
-  const fs::path script = fs::path(FRICTION_SOURCE_DIR) / "cases/sneddonCrack/sneddonError.py";
-  const fs::path log = c.dir() / "log.sneddonErrorTest";
-  const int rc =
-      run("/usr/bin/python3 '" + script.string() + "' -case '" + c.dir().string() + "' " + options,
-          log);
-  const std::string out = readText(log);
-  INFO(out);
-  CHECK(rc == 0);
-  return out;
+  return runCaseScript(c.dir(), "cases/sneddonCrack/sneddonError.py", options);
 }
 
 /// The effects of the case: the fluid pressure `pressure` (a value, "table (...)", or
@@ -382,21 +370,7 @@ TEST_CASE("Opening restart: stopped open and continued, every file as the uninte
               c.dir() / "log.frictionSolver") == 0);
   CHECK_THAT(c.log(), Catch::Contains("Restarting from time 3"));
   CHECK_THAT(readText(c.dir() / "3/uniform/frictionState"), Catch::Contains("opening"));
-  auto a = outputs(whole.dir()), b = outputs(c.dir());
-  for (const char* input : {"system/controlDict", "constant/splitMesh"}) {
-    REQUIRE(a.erase(input) == 1);
-    REQUIRE(b.erase(input) == 1);
-  }
-  REQUIRE(a.count("4/fractures/crack.dat") == 1);
-  std::set<std::string> names;
-  for (const auto& [k, v] : a) names.insert(k);
-  for (const auto& [k, v] : b) names.insert(k);
-  for (const std::string& k : names) {
-    INFO(k);
-    CHECK(a.count(k) == 1);
-    CHECK(b.count(k) == 1);
-    if (a.count(k) && b.count(k)) CHECK((a[k] == b[k]));
-  }
+  checkSameOutputs(whole.dir(), c.dir(), {"4/fractures/crack.dat", "6/uniform/frictionState"});
 }
 
 TEST_CASE("The gradient optimizers take fractures that open: L-BFGS and BB reach Newton's opening",

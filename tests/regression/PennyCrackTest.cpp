@@ -19,25 +19,13 @@ namespace {
 
 /// One number of pennyError.py's output ("name   value ...").
 double pennyValue(const std::string& out, const std::string& name) {
-  std::smatch m;
-  const std::regex r("(^|\n)" + name + " +([-+0-9.eE]+)");
-  INFO(out);
-  REQUIRE(std::regex_search(out, m, r));
-  return std::stod(m[2].str());
+  return scriptValue(out, name);
 }
 
 /// Run pennyError.py on the solved case with `options`; returns its output (exit 0 required:
 /// its --max checks passed).
 std::string pennyError(const Case& c, const std::string& options) {
-  const fs::path script = fs::path(FRICTION_SOURCE_DIR) / "cases/pennyCrack/pennyError.py";
-  const fs::path log = c.dir() / "log.pennyErrorTest";
-  const int rc =
-      run("/usr/bin/python3 '" + script.string() + "' -case '" + c.dir().string() + "' " + options,
-          log);
-  const std::string out = readText(log);
-  INFO(out);
-  CHECK(rc == 0);
-  return out;
+  return runCaseScript(c.dir(), "cases/pennyCrack/pennyError.py", options);
 }
 
 /// The case at disc mesh size h (Allmesh -h; the committed mesh is h = a/8), solved with
