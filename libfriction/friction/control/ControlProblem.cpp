@@ -55,9 +55,15 @@ ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen
 double ControlProblem::relativeResidual(const ControlState& s) const {
   const double d = norm(s.D);
   if (d == 0) return 0;
-  const Eigen::VectorXd &m = response_.freeMask(), &mk = componentMask_;
-  const double scale = std::sqrt(dot(s.tau.cwiseProduct(mk), s.tau.cwiseProduct(mk)) +
-                                 nodeDot(s.sigmaN.cwiseProduct(m), s.sigmaN.cwiseProduct(m)));
+  // τ has the k·n tangential entries only: with openings the mask and weights are longer
+  // (Eigen sizes a product by its right operand, so the full mask would read past τ's end).
+  const Eigen::Index kn = s.tau.size();
+  const Eigen::VectorXd& m = response_.freeMask();
+  const Eigen::VectorXd t = s.tau.cwiseProduct(componentMask_.head(kn));
+  const double tangential =
+      opening_ ? (t.array().square() * componentWeights_.head(kn).array()).sum() : dot(t, t);
+  const double scale =
+      std::sqrt(tangential + nodeDot(s.sigmaN.cwiseProduct(m), s.sigmaN.cwiseProduct(m)));
   return scale > 0 ? d / scale : d;
 }
 
