@@ -938,10 +938,19 @@ void FrictionCase::judgeStep(StepResult& r) const {
     if (sys.freeMask()[i] > 0)
       maxSlip =
           std::max(maxSlip, blockNorm(slip_.segment(k * i, k) + last_.beta.segment(k * i, k)));
-  if (diameter_ > 0 && maxSlip > diameter_) {
+  // Openings: a part pushed off by the pressure on a fracture that opens (open faces hold it
+  // neither way: no friction, no compression) flies off along the normal too.
+  double maxOpening = 0;
+  if (opening_)
+    for (Eigen::Index i = 0; i < sys.size(); ++i)
+      if (sys.freeMask()[i] > 0) maxOpening = std::max(maxOpening, last_.beta[k * sys.size() + i]);
+  const bool flies = diameter_ > 0 && maxOpening > diameter_;
+  if (diameter_ > 0 && (maxSlip > diameter_ || flies)) {
     std::ostringstream s;
-    s << std::setprecision(3) << "slip up to " << maxSlip << " m, larger than the body ("
-      << diameter_ << " m): ";
+    s << std::setprecision(3) << "slip up to " << maxSlip << " m"
+      << (flies ? ", opening up to " : "");
+    if (flies) s << maxOpening << " m";
+    s << ", larger than the body (" << diameter_ << " m): ";
     std::vector<std::string> parts;
     for (const FloatingPart& p : floating_)
       if (p.heldThroughFracture)
@@ -952,7 +961,10 @@ void FrictionCase::judgeStep(StepResult& r) const {
       s << "the fractures cannot carry the load (check the loads and the friction law)";
     else
       for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : "") << parts[i];
-    if (!parts.empty()) s << ": fix a patch of it (0/D) or give its fracture friction";
+    if (!parts.empty())
+      s << (flies ? ": fix a patch of it (0/D) or keep its fracture closed (contact bilateral; "
+                    "open faces carry no friction)"
+                  : ": fix a patch of it (0/D) or give its fracture friction");
     addNote(s.str());
   }
 }
