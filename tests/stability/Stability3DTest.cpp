@@ -433,3 +433,48 @@ TEST_CASE("stability 3D: a fault reaching a Dirichlet face", "[stability][3d]") 
                                       " fracture node(s) lie on a Dirichlet patch"));
   CHECK(count(t, "slip") > 0);
 }
+
+TEST_CASE("stability 3D: a block held only by a fault that opens", "[stability][3d]") {
+  // The fault cuts the cube in two at z = 1/2 (it reaches every side face); the bottom is
+  // fixed, the top free, and a fluid pressure pushes the faces apart: nothing holds the upper
+  // half once the fault opens, so no equilibrium exists (the pressure's net force on it has
+  // no reaction). The solver must say so and stop with a non-zero exit, never write a NaN,
+  // never abort.
+  const int n = 6;
+  Case c(kCase, "stab3d-floating");
+  writeGridMesh(c.dir() / "constant/mesh/cube.mesh", uniform(n), uniform(n), uniform(n),
+                {n / 2, 0, n, 0, n});
+  c.edit("system/meshDict", "cube\\.msh", "cube.mesh");
+  c.edit("0/D", "top +\\{[^}]*\\}", "top { type free; }");
+  writeText(c.dir() / "constant/fractureProperties",
+            "fault { contact unilateral; law coulomb; frictionCoefficient 0.2; }\n");
+  writeText(c.dir() / "constant/effects",
+            "fluid { type fracturePressure; fracture fault; pressure 1e6; }\n");
+  const int rc = c.solve();
+  INFO(c.log());
+  // Measured: every step stalled (3 to 8 iterations), slip up to 2.9e10 m and opening up to
+  // 1.7e11 m at t = 1 (finite: the interface operator is singular only along the rigid
+  // motions of the upper half, which the dense LU meets as huge pivots), exit 3.
+  const RunSummary s = checkRun(c, rc);
+  CHECK(rc == 3);
+  CHECK(s.times.size() == 4);
+  for (const std::string& st : s.statuses) CHECK(st == "stalled");
+  CHECK_THAT(c.log(), Catch::Contains("opening up to") &&
+                          Catch::Contains("touches no Dirichlet patch and only 'fault' holds it") &&
+                          Catch::Contains("keep its fracture closed (contact bilateral"));
+  const Table t = c.namedTable("1", "fault");
+  CHECK(count(t, "open") == static_cast<int>(t.rows.size()));  // no tip: the fault cuts through
+  // The same block with the fault kept closed (bilateral): the fault holds it, the pressure
+  // only lowers the friction bound, and the run converges.
+  Case b(kCase, "stab3d-floating-bilateral");
+  writeGridMesh(b.dir() / "constant/mesh/cube.mesh", uniform(n), uniform(n), uniform(n),
+                {n / 2, 0, n, 0, n});
+  b.edit("system/meshDict", "cube\\.msh", "cube.mesh");
+  b.edit("0/D", "top +\\{[^}]*\\}", "top { type free; }");
+  writeText(b.dir() / "constant/effects",
+            "fluid { type fracturePressure; fracture fault; pressure 1e6; }\n");
+  const int rb = b.solve();
+  INFO(b.log());
+  checkRun(b, rb);
+  CHECK(rb == 0);
+}

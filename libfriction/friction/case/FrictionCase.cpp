@@ -945,10 +945,19 @@ void FrictionCase::judgeStep(StepResult& r) const {
     if (sys.freeMask()[i] > 0)
       maxSlip =
           std::max(maxSlip, blockNorm(slip_.segment(k * i, k) + last_.beta.segment(k * i, k)));
-  if (diameter_ > 0 && maxSlip > diameter_) {
+  // Openings: a part pushed off by the pressure on a fracture that opens (open faces hold it
+  // neither way: no friction, no compression) flies off along the normal too.
+  double maxOpening = 0;
+  if (opening_)
+    for (Eigen::Index i = 0; i < sys.size(); ++i)
+      if (sys.freeMask()[i] > 0) maxOpening = std::max(maxOpening, last_.beta[k * sys.size() + i]);
+  const bool flies = diameter_ > 0 && maxOpening > diameter_;
+  if (diameter_ > 0 && (maxSlip > diameter_ || flies)) {
     std::ostringstream s;
-    s << std::setprecision(3) << "slip up to " << maxSlip << " m, larger than the body ("
-      << diameter_ << " m): ";
+    s << std::setprecision(3) << "slip up to " << maxSlip << " m"
+      << (flies ? ", opening up to " : "");
+    if (flies) s << maxOpening << " m";
+    s << ", larger than the body (" << diameter_ << " m): ";
     std::vector<std::string> parts;
     for (const FloatingPart& p : floating_)
       if (p.heldThroughFracture)
@@ -959,19 +968,17 @@ void FrictionCase::judgeStep(StepResult& r) const {
       s << "the fractures cannot carry the load (check the loads and the friction law)";
     else
       for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : "") << parts[i];
-    if (!parts.empty()) s << ": fix a patch of it (0/D) or give its fracture friction";
+    if (!parts.empty())
+      s << (flies ? ": fix a patch of it (0/D) or keep its fracture closed (contact bilateral; "
+                    "open faces carry no friction)"
+                  : ": fix a patch of it (0/D) or give its fracture friction");
     addNote(s.str());
   }
   // 4. Fractures that open: a part held only by fractures whose faces all separate has
-  // nothing left to hold it. Its opening is then a rigid-body motion: the normal rows of
-  // Newton's system are singular (no step: stalled), or the opening grows beyond the body.
-  if (!opening_) return;
-  const Eigen::Index n = sys.size();
-  double maxOpening = 0;
-  for (Eigen::Index i = 0; i < n; ++i)
-    maxOpening = std::max(maxOpening, std::abs(last_.beta[k * n + i]));
-  const bool tooWide = diameter_ > 0 && maxOpening > diameter_;
-  if (r.report.status == OptimizerStatus::converged && !tooWide) return;
+  // nothing left to hold it, and its opening is a rigid-body motion. Where the opening has not
+  // run off beyond the body (3. says so then), Newton finds the normal rows singular and
+  // stops without converging: say why.
+  if (!opening_ || flies || r.report.status == OptimizerStatus::converged) return;
   std::vector<std::string> parts;
   for (const FloatingPart& p : floating_) {
     if (!p.heldThroughFracture) continue;
@@ -985,20 +992,12 @@ void FrictionCase::judgeStep(StepResult& r) const {
                       joinWords(p.fractures) + " hold" + (p.fractures.size() == 1 ? "s" : "") +
                       " it");
   }
-  if (parts.empty() && !tooWide) return;
+  if (parts.empty()) return;
   std::ostringstream s;
-  s << std::setprecision(3);
-  if (tooWide) s << "opening up to " << maxOpening << " m, larger than the body: ";
-  if (parts.empty())
-    s << "the fractures cannot carry the load (check the loads and the pressure)";
-  else {
-    for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : "") << parts[i];
-    s << ", and contact unilateral lets the faces separate: where they all open nothing holds "
-         "the part (a rigid-body motion); fix a patch of it (0/D), or make the fracture "
-         "bilateral";
-    if (r.report.status != OptimizerStatus::converged && !tooWide)
-      r.report.status = OptimizerStatus::stalled;
-  }
+  for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : "") << parts[i];
+  s << ", and contact unilateral lets the faces separate: where they all open nothing holds "
+       "the part (a rigid-body motion); fix a patch of it (0/D), or make the fracture "
+       "bilateral";
   addNote(s.str());
 }
 
@@ -1046,7 +1045,6 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
     for (std::size_t k = 0; k < nodes.size(); ++k) {
       if (nodes[k].fracture != static_cast<int>(f)) continue;
       const bool tip = nodes[k].tip;
-      const bool held = sys.freeMask()[k] == 0;
       const Eigen::Index at = kb * static_cast<Eigen::Index>(k);
       FractureRow row;
       row.s = nodes[k].arclength;

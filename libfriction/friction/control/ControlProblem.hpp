@@ -106,6 +106,9 @@ class ControlProblem {
   /// The γ of D from now on (semismoothNewton iterates with its own where the case's is far
   /// below the interface stiffness: D = 0 does not depend on γ, the path does).
   void setGamma(double gamma) { gamma_ = gamma; }
+  /// The γ_n of D_n from now on (semismoothNewton's own where the case's is far above the
+  /// interface's normal stiffness: D = 0 does not depend on γ_n either).
+  void setGammaNormal(double gammaN) { openingSettings_.gammaN = gammaN; }
   double zeta() const { return zeta_; }
   SlipResponse& response() { return response_; }
   long numPrimal() const { return numPrimal_; }
