@@ -96,4 +96,12 @@ grep -q " nan nan nan nan tip$" "$ic/1/fractures/crack.dat" || fail "inclinedCra
 out=$("$python" "$plot" -case "$ic" -noConvergence 2>&1) || fail "inclinedCrack: $out"
 grep -qF "(slip tendency and slip)" <<<"$out" || fail "inclinedCrack: $out"
 isPng "$ic/postProcessing/fracture_crack.png" || fail "inclinedCrack: no PNG"
+# A crack that opens (contact unilateral): the opening's panel too.
+sn=$work/sneddonCrack
+cp -r "$src/cases/sneddonCrack" "$sn" && "$sn/Allclean" >/dev/null
+"$split" -case "$sn" >"$sn/log.splitFractureNodes" 2>&1 || fail "sneddonCrack: split failed"
+"$solver" -case "$sn" >"$sn/log.frictionSolver" 2>&1 || fail "sneddonCrack: solver failed"
+out=$("$python" "$plot" -case "$sn" -noConvergence 2>&1) || fail "sneddonCrack: $out"
+grep -qF "fracture_crack.png (tractions, slip and opening)" <<<"$out" || fail "sneddonCrack: $out"
+isPng "$sn/postProcessing/fracture_crack.png" || fail "sneddonCrack: no PNG"
 echo "plotFracture: ok"

@@ -239,4 +239,19 @@ cp "$table" "$b/1/fractures/other.dat"
 bad "-line, two faults" "-line: 2 fractures (fault other); choose one with -fracture" \
   -case "$b" -line 0,0,0:1,1,1
 noOutput "$b" "two faults"
+# A fault that opens (contact unilateral): its tables have an "opening" column before the
+# state; the maps gain its panel and the profile its row.
+op=$work/opening
+cp -r "$disc" "$op" && rm -rf "$op/postProcessing" "$op/profile.csv"
+for f in "$op"/*/fractures/fault.dat; do
+  awk 'NR == 1 { sub(/ state$/, " opening state"); print; next }
+       /^#/ { print; next }
+       { $NF = sprintf("%.6g %s", $12 * 0.5, $NF); print }' "$f" >"$f.new" && mv "$f.new" "$f"
+done
+out=$("$python" "$plot" -case "$op" -noConvergence 2>&1); rc=$?
+((rc == 0)) || fail "opening: exit $rc: $out"
+grep -qF "maps of slip magnitude, ST, node states and opening at t = 1" <<<"$out" || fail "opening: $out"
+for png in "$op"/postProcessing/fracture_fault{,_profile}.png; do
+  isPng "$png" || fail "opening: $png missing, empty or not a PNG"
+done
 echo "plotFracture3d: ok"

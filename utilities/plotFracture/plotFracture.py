@@ -192,7 +192,8 @@ def statusWord(status):
 
 
 def plotFracture(case, name, times, out):
-    """Draw figure 1; returns what the top panel shows ("slip tendency" or "tractions")."""
+    """Draw figure 1; returns what the top panel shows ("slip tendency" or "tractions") and
+    whether it has the opening's panel."""
     law = fractureEntry(case, name, "law")
     mu = frictionCoefficient(case, name)
     tables = []
@@ -246,7 +247,7 @@ def plotFracture(case, name, times, out):
     fig.tight_layout()
     saveFigure(fig, out)
     plt.close(fig)
-    return "slip tendency" if showST else "tractions"
+    return ("slip tendency" if showST else "tractions"), opening
 
 
 def readConvergence(path):
@@ -500,6 +501,8 @@ class FaultMaps:
                 out[miss] = np.ma.filled(f(u[miss] + step * du, v[miss] + step * dv), np.nan)
             return out
         out = {"slipMagnitude": interp(self.tri, self.table["slipMagnitude"])}
+        if "opening" in self.table:  # fractures that open (contact unilateral)
+            out["opening"] = interp(self.tri, self.table["opening"])
         for key in ("sigmaN", "tauMagnitude", "ST"):
             out[key] = (interp(self.tractionTri, self.table[key][self.keep])
                         if self.tractionTri is not None else np.full(np.shape(u), np.nan))
@@ -564,11 +567,20 @@ class Fault3d:
         table = m.table
         # Side by side for a roundish fault, stacked for an elongated one.
         aspect = np.ptp(m.u) / max(np.ptp(m.v), 1e-300)
-        if aspect > 1.4:
+        opening = "opening" in table  # a fourth map: the opening of fractures that open
+        if opening:
+            fig, grid = plt.subplots(2, 2, figsize=(14, 11.5))
+            axes = grid.ravel()
+        elif aspect > 1.4:
             fig, axes = plt.subplots(3, 1, figsize=(10, min(18.0, 3 * 7.5 / aspect + 2.5)))
         else:
             fig, axes = plt.subplots(1, 3, figsize=(18, 5.8))
-        axSlip, axST, axState = axes
+        axSlip, axST, axState = axes[:3]
+        if opening:
+            pc = axes[3].tripcolor(m.tri, table["opening"], shading="gouraud", cmap="cividis")
+            fig.colorbar(pc, ax=axes[3], shrink=0.85, label="opening g [m]")
+            axes[3].set_title("opening g = $-[[u]] \\cdot n_\\Gamma$ (contact unilateral)",
+                              fontsize=10)
         pc = axSlip.tripcolor(m.tri, table["slipMagnitude"], shading="gouraud", cmap="viridis")
         fig.colorbar(pc, ax=axSlip, shrink=0.85, label="slip magnitude |slip| [m]")
         magnitude = np.hypot(m.slipU, m.slipV)
@@ -623,11 +635,13 @@ class Fault3d:
         plt.close(fig)
 
     def drawProfile(self, out):
-        fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
-        colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(self.times) - 1)
-                                 for i in range(len(self.times))])
         keys = (("slipMagnitude", "slip magnitude [m]"), ("sigmaN", r"$\sigma_n$ [Pa]"),
                 ("tauMagnitude", r"$|\tau|$ [Pa]"), ("ST", r"ST = $|\tau| / (-\sigma'_n)$"))
+        if all("opening" in p for p in self.profiles):
+            keys += (("opening", "opening g [m]"),)
+        fig, axes = plt.subplots(len(keys), 1, figsize=(8, 2.5 * len(keys)), sharex=True)
+        colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(self.times) - 1)
+                                 for i in range(len(self.times))])
         for t, profile, table, color in zip(self.times, self.profiles, self.tables, colors):
             word = statusWord(table["status"])
             label = f"t = {t}" + (f" ({word})" if word and word != "converged" else "")
@@ -644,7 +658,7 @@ class Fault3d:
         axes[0].set_title(f"{os.path.basename(os.path.abspath(self.case))}: fault '{self.name}', "
                           f"profile {fmtPoint(p0)} -> {fmtPoint(p1)}\n(linear interpolation on "
                           "the triangulated fault; tractions on its non-tip nodes)", fontsize=10)
-        axes[3].set_xlabel("distance along the segment from its first point [m]")
+        axes[-1].set_xlabel("distance along the segment from its first point [m]")
         fig.tight_layout()
         saveFigure(fig, out)
         plt.close(fig)
@@ -785,11 +799,14 @@ def main(argv):
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
         fault = faults3d.get(name)
         if fault is None:
-            shows = plotFracture(case, name, times, out)
-            written.append(f"{out} ({shows} and slip)")
+            shows, opening = plotFracture(case, name, times, out)
+            written.append(f"{out} ({shows}, slip and opening)" if opening
+                           else f"{out} ({shows} and slip)")
             continue
         fault.drawMaps(out)
-        written.append(f"{out} (maps of slip magnitude, ST and node states at t = {times[-1]})")
+        what = ("ST, node states and opening" if "opening" in fault.maps[-1].table
+                else "ST and node states")
+        written.append(f"{out} (maps of slip magnitude, {what} at t = {times[-1]})")
         profile = a.profile or os.path.join(post, f"fracture_{name}_profile.png")
         os.makedirs(os.path.dirname(os.path.abspath(profile)), exist_ok=True)
         fault.drawProfile(profile)

@@ -1065,8 +1065,10 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
       // fracturePressure); |τ| of k = 1 is |τ₁| exactly (blockNorm).
       const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
       const double tauNorm = blockNorm(last_.tau.segment(at, kb));
-      row.ST = tip ? nan : effective < 0 ? tauNorm / -effective : 0.0;
       row.state = nodeState(static_cast<Eigen::Index>(k));
+      // Open faces (σ'_n = 0 up to round-off) have no slip tendency: 0, not round-off over
+      // round-off. Bilateral nodes are open only where σ'_n ≥ 0, where ST is 0 already.
+      row.ST = tip ? nan : row.state == "open" ? 0.0 : effective < 0 ? tauNorm / -effective : 0.0;
       if (opening_) {
         row.hasOpening = true;
         row.opening = beta[kb * static_cast<Eigen::Index>(nodes.size()) + k];
