@@ -134,12 +134,18 @@ Eigen::VectorXd sampledDiagonal(SlipResponse& resp, const Graph& graph, int sepa
   int colours = 0;
   const std::vector<int> colour = colourByDistance(graph, separation, colours);
   const Eigen::VectorXd mask = resp.componentMask();
+  // The colour with the most unknowns (the first ones may lie on the held tip line).
+  std::vector<int> unknowns(static_cast<std::size_t>(colours), 0);
+  for (Eigen::Index j = 0; j < k * n; ++j)
+    unknowns[static_cast<std::size_t>(colour[j / k])] += mask[j] != 0;
+  const int chosen =
+      static_cast<int>(std::max_element(unknowns.begin(), unknowns.end()) - unknowns.begin());
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd e(k * n), t;
   for (Eigen::Index comp = 0; comp < k; ++comp) {
     e.setZero();
     for (Eigen::Index i = 0; i < n; ++i)
-      if (colour[i] == 0 && mask[k * i + comp] != 0) e[k * i + comp] = 1;
+      if (colour[i] == chosen && mask[k * i + comp] != 0) e[k * i + comp] = 1;
     if (e.squaredNorm() == 0) continue;
     resp.dual(e, zero, t);
     ++solves;

@@ -48,7 +48,8 @@ ProbedInterfaceOperator probeInterfaceOperator(SlipResponse& resp,
                                                const std::vector<std::vector<Eigen::Index>>& graph,
                                                int distance, int separation);
 
-/// S_tt's diagonal (k·n) at the nodes of one colour of a colouring with `separation` hops,
+/// S_tt's diagonal (k·n) at the nodes of one colour (the one with the most unknowns) of a
+/// colouring with `separation` hops,
 /// zero elsewhere (k dual solves, added to `solves`): where no S is formed, enough for the
 /// mean interface stiffness of newtonGamma.
 Eigen::VectorXd sampledDiagonal(SlipResponse& resp,

@@ -89,7 +89,7 @@ const OptimizerEntry optimizerTable[] = {
        if (pre != "probing" && d.found("probingDistance"))
          throw InputError(d.location("probingDistance"),
                           "'probingDistance' applies to preconditioner probing only");
-       const int distance = static_cast<int>(d.getIntOr("probingDistance", 2, {1, 20}));
+       const int distance = static_cast<int>(d.getIntOr("probingDistance", 1, {1, 20}));
        return std::make_unique<SemismoothNewton>(
            static_cast<int>(d.getIntOr("maxBacktracks", 30, {1, 200})),
            krylov ? SemismoothNewton::Variant::krylov : SemismoothNewton::Variant::condensed,
@@ -709,11 +709,12 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   }
   finish(p, s, lastStep, r, beta);
   // The cost of each Newton iteration in dual solves (deterministic: tests assert it).
-  std::ostringstream note;
-  note << "GMRES products per Newton iteration:";
-  if (products.empty()) note << " none";
-  for (const int c : products) note << " " << c;
-  r.note += (r.note.empty() ? "" : "; ") + note.str();
+  if (!products.empty()) {
+    std::ostringstream note;
+    note << "GMRES products per Newton iteration:";
+    for (const int c : products) note << " " << c;
+    r.note += (r.note.empty() ? "" : "; ") + note.str();
+  }
   return r;
 }
 

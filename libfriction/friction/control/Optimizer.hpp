@@ -169,7 +169,7 @@ class SemismoothNewton : public Optimizer {
   SemismoothNewton(int maxBacktracks, Variant variant = Variant::condensed,
                    InterfaceMethod interfaceMethod = InterfaceMethod::factorisation,
                    KrylovPreconditioning preconditioner = KrylovPreconditioning::none,
-                   int probingDistance = 2)
+                   int probingDistance = 1)
       : maxBacktracks_(maxBacktracks),
         variant_(variant),
         interfaceMethod_(interfaceMethod),
