@@ -163,6 +163,10 @@ enum class KrylovPreconditioning { none, blockDiagonal, probing };
 /// Variant `krylov` (matrix-free): no S is assembled; each Newton system is solved by GMRES
 /// whose every product with S is one dual back-substitution, and each trial point is one
 /// primal solve — for fractures with many nodes, where n dual solves per run cost too much.
+/// Its GMRES is right-preconditioned (key preconditioner, KrylovPreconditioning) by the sparse
+/// Jacobian of S probed once per run (KrylovPreconditioner.hpp); in 3D it iterates with
+/// Newton's own γ as the condensed variant does, the interface stiffness read from the probed
+/// (or sampled) diagonal of S_tt.
 class SemismoothNewton : public Optimizer {
  public:
   enum class Variant { condensed, krylov };
