@@ -158,9 +158,12 @@ Eigen::VectorXd sampledDiagonal(SlipResponse& resp, const Graph& graph, int sepa
 double newtonGamma(const ControlProblem& p, const Eigen::VectorXd& diagonalStt) {
   const double gammaCase = p.gamma();
   if (p.blockSize() < 2) return gammaCase;
+  // The tangential components only (k·n: an opening's normal components follow them in p).
+  const Eigen::Index kn = p.blockSize() * p.numNodes();
+  FRICTION_ASSERT(diagonalStt.size() == kn, "one diagonal entry per tangential component");
   double diagonal = 0;
   int count = 0;
-  for (Eigen::Index j = 0; j < p.size(); ++j)
+  for (Eigen::Index j = 0; j < kn; ++j)
     if (p.componentMask()[j] != 0 && diagonalStt[j] > 0) diagonal += diagonalStt[j], ++count;
   if (count > 0 && gammaCase < 1e-2 * diagonal / count) return diagonal / count;
   return gammaCase;

@@ -577,12 +577,12 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   const Eigen::Index n = p.numNodes(), k = p.blockSize(), size = p.size();
   const Eigen::VectorXd& mask = resp.freeMask();
   OptimizerReport r;
-  if (cachedFor_ != &resp || diagonal_.size() != size) {
+  if (cachedFor_ != &resp || diagonal_.size() != k * n) {
     // Once per run, like the condensed S: the probed S depends only on the mesh and the
     // Dirichlet patches.
     const std::vector<std::vector<Eigen::Index>> graph = resp.nodeGraph();
     krylovPreconditioner_.reset();
-    diagonal_ = Eigen::VectorXd::Zero(size);
+    diagonal_ = Eigen::VectorXd::Zero(k * n);
     if (static_cast<Eigen::Index>(graph.size()) == n) {
       if (preconditioner_ != KrylovPreconditioning::none) {
         const int distance =
