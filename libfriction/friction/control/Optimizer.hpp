@@ -142,6 +142,13 @@ class Lbfgs : public Optimizer {
   int maxBacktracks_;
 };
 
+class KrylovPreconditioner;
+
+/// The right preconditioner of the krylov variant's GMRES (KrylovPreconditioner.hpp):
+/// `none`; `blockDiagonal`, the k × k blocks of the probed S on each node; `probing`, the
+/// probed S on node pairs within probingDistance hops.
+enum class KrylovPreconditioning { none, blockDiagonal, probing };
+
 /// [beyond] Semismooth Newton on D(β) = 0 (docs/method.md §4), condensed variant: the interface
 /// operators S_tt and S_nt are assembled densely once per run (one dual solve per fracture
 /// node and tangential component, reused by every step, since they depend only on the mesh
@@ -159,12 +166,22 @@ class Lbfgs : public Optimizer {
 /// Variant `krylov` (matrix-free): no S is assembled; each Newton system is solved by GMRES
 /// whose every product with S is one dual back-substitution, and each trial point is one
 /// primal solve — for fractures with many nodes, where n dual solves per run cost too much.
+/// Its GMRES is right-preconditioned (key preconditioner, KrylovPreconditioning) by the sparse
+/// Jacobian of S probed once per run (KrylovPreconditioner.hpp); in 3D it iterates with
+/// Newton's own γ as the condensed variant does, the interface stiffness read from the probed
+/// (or sampled) diagonal of S_tt.
 class SemismoothNewton : public Optimizer {
  public:
   enum class Variant { condensed, krylov };
   SemismoothNewton(int maxBacktracks, Variant variant = Variant::condensed,
-                   InterfaceMethod interfaceMethod = InterfaceMethod::factorisation)
-      : maxBacktracks_(maxBacktracks), variant_(variant), interfaceMethod_(interfaceMethod) {}
+                   InterfaceMethod interfaceMethod = InterfaceMethod::factorisation,
+                   KrylovPreconditioning preconditioner = KrylovPreconditioning::none,
+                   int probingDistance = 1)
+      : maxBacktracks_(maxBacktracks),
+        variant_(variant),
+        interfaceMethod_(interfaceMethod),
+        preconditioner_(preconditioner),
+        probingDistance_(probingDistance) {}
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "semismoothNewton"; }
   /// Active-set changes over the last call's iterations (a cycling diagnostic).
@@ -190,6 +207,10 @@ class SemismoothNewton : public Optimizer {
   int activeSetChanges_ = 0;
   InterfaceOperator S_;  // cached for the run
   const SlipResponse* cachedFor_ = nullptr;
+  KrylovPreconditioning preconditioner_;
+  int probingDistance_;
+  std::shared_ptr<KrylovPreconditioner> krylovPreconditioner_;  // cached for the run
+  Eigen::VectorXd diagonal_;  // S_tt's diagonal, probed or sampled (zero where not known)
 };
 
 }  // namespace friction

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -79,6 +80,12 @@ class SlipResponse {
                        Eigen::VectorXd& tauAdjoint, Eigen::VectorXd* normalAdjoint = nullptr) {
     dual(qt, qn, tauAdjoint, normalAdjoint);
   }
+
+  /// The fracture's node graph: for each node, the nodes that share a fracture element with
+  /// it (2D: its neighbours along the fracture; 3D: along the fault triangles' edges, all
+  /// six nodes of a P2 triangle). What a preconditioner needs to sparsify S by distance;
+  /// this default knows no graph and returns none.
+  virtual std::vector<std::vector<Eigen::Index>> nodeGraph() const { return {}; }
 
   /// The interface operator, formed as `method` asks where the implementation can (the
   /// result says how it was formed); withOpening adds the opening's columns Stn, Snn. This

@@ -211,6 +211,36 @@ void FractureSystem::controlNodes3D(int degree) {
   for (Index k = 0; k < size(); ++k) weights_[k] = w[nodes_[k].plus];
 }
 
+std::vector<std::vector<Eigen::Index>> FractureSystem::nodeGraph() const {
+  const Index n = size();
+  std::vector<std::vector<Eigen::Index>> graph(static_cast<std::size_t>(n));
+  const auto link = [&graph](Index a, Index b) {
+    if (a == b) return;
+    auto& ga = graph[static_cast<std::size_t>(a)];
+    if (std::find(ga.begin(), ga.end(), b) != ga.end()) return;
+    ga.push_back(b);
+    graph[static_cast<std::size_t>(b)].push_back(a);
+  };
+  if (dim_ == 2) {  // arclength order along each fracture
+    for (Index i = 0; i + 1 < n; ++i)
+      if (nodes_[i].fracture == nodes_[i + 1].fracture) link(i, i + 1);
+  } else if (!faultTriangles_.empty()) {  // P2: the six nodes of a triangle
+    for (const auto& t : faultTriangles_)
+      for (int a = 0; a < 6; ++a)
+        for (int b = a + 1; b < 6; ++b) link(t[a], t[b]);
+  } else {  // P1: each fracture's vertices in the splitter's order (controlNodes3D)
+    Index base = 0;
+    for (const FractureGeometry& g : split_.fractures) {
+      std::map<Index, Index> local;
+      for (Index i = 0; i < g.numNodes(); ++i) local[g.node[i]] = base + i;
+      for (const auto& t : g.triangles)
+        for (int e = 0; e < 3; ++e) link(local.at(t[e]), local.at(t[(e + 1) % 3]));
+      base += g.numNodes();
+    }
+  }
+  return graph;
+}
+
 void FractureSystem::setTangentBasis(Index node, const Eigen::Vector3d& t1) {
   FRICTION_ASSERT(dim_ == 3, "a choice of tangent basis exists in 3D only");
   ControlNode& v = nodes_[static_cast<std::size_t>(node)];

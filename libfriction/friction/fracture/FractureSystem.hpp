@@ -121,6 +121,7 @@ class FractureSystem : public SlipResponse {
   /// dual solve.
   void adjoint(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauAdjoint,
                Eigen::VectorXd* normalAdjoint = nullptr) override;
+  std::vector<std::vector<Eigen::Index>> nodeGraph() const override;
   /// True where Σ is recovered with the consistent mass of Γ (3D P2).
   bool consistentRecovery() const { return consistent_; }
   /// factorisation: the complement the factorisation delivered (factor() with

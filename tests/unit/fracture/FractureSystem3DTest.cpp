@@ -8,8 +8,10 @@
 // finite differences on the finite-element response.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 
 #include <Eigen/Geometry>
 
@@ -127,6 +129,35 @@ TEST_CASE("3D FractureSystem: control nodes, frames and Γ weights", "[fracture]
       CHECK(b.sys->weights().sum() == Approx(g.area(b.mesh.points)).epsilon(1e-13));
       CHECK(b.sys->weights().minCoeff() > 0);
     }
+}
+
+TEST_CASE("3D FractureSystem: the node graph is the fault triangles' edges",
+          "[fracture][fe][3d][krylov]") {
+  // What the krylov variant's probing colours (KrylovPreconditioner.hpp): symmetric, no self
+  // loops. P1: one link per edge of the surface, E = V + F − 1 (a disc). P2: a triangle's six
+  // nodes linked pairwise, 15 pairs per triangle, of which a pair lies in two triangles only
+  // when both nodes are on their shared edge (its ends and midpoint: 3 pairs per interior
+  // edge; 3F = 2 E_interior + E_boundary).
+  for (int degree : {1, 2}) {
+    Box b(4, degree, Fault::inside, Point::Zero());
+    const FractureGeometry& g = b.split.fractures[0];
+    const auto graph = b.sys->nodeGraph();
+    REQUIRE(static_cast<Eigen::Index>(graph.size()) == b.sys->size());
+    std::set<std::pair<Eigen::Index, Eigen::Index>> links;
+    for (Eigen::Index i = 0; i < b.sys->size(); ++i)
+      for (const Eigen::Index j : graph[i]) {
+        CHECK(j != i);
+        CHECK(std::count(graph[j].begin(), graph[j].end(), i) == 1);
+        links.insert({std::min(i, j), std::max(i, j)});
+      }
+    const Eigen::Index faces = static_cast<Eigen::Index>(g.triangles.size());
+    const Eigen::Index edges = g.numNodes() + faces - 1;
+    if (degree == 1) CHECK(static_cast<Eigen::Index>(links.size()) == edges);
+    if (degree == 2) {
+      const Eigen::Index boundaryEdges = 2 * edges - 3 * faces, inner = edges - boundaryEdges;
+      CHECK(static_cast<Eigen::Index>(links.size()) == 15 * faces - 3 * inner);
+    }
+  }
 }
 
 TEST_CASE("3D FractureSystem: zero data give exactly zero tractions", "[fracture][fe][3d]") {
