@@ -150,6 +150,13 @@ TEST_CASE("penny crack under pressure, P2: Sneddon's opening, three times closer
   CHECK(e4 / e8 >= 1.7);
 }
 
+TEST_CASE("penny crack under pressure, P2 at h = a/16 (long: ~4 min, ~9.5 GB)",
+          "[.][pennyLong][opening]") {
+  const double e16 = sneddon("opening-P2-h16", "0.0625", 2);
+  WARN("P2 a/16 relL2Error " << e16);
+  CHECK(e16 <= 0.05);
+}
+
 TEST_CASE("penny crack under remote stress: it opens with the net pressure only",
           "[regression][3d][opening]") {
   // Below |σ_n∞| = 10 MPa (p = 5 MPa) the faces stay closed, and the run is the bilateral
