@@ -69,10 +69,11 @@ std::string openingError(const Case& c, const std::string& options) {
 /// measured max |τ|/p ≤ 1.7e-14 (P2 a/8: 5.7e-14), |σ_n + p|/p = 0 as written (12 digits),
 /// from Newton's stop at ‖D‖ ≤ 1e-10 ‖Σ‖ that it passes at the first or second iteration
 /// (the problem is linear once every node is open); bound 1e-12.
-double sneddon(const std::string& label, const std::string& h, int order) {
+double sneddon(const std::string& label, const std::string& h, int order,
+               const std::string& tractionBound = "1e-12") {
   Case c("pennyCrack", label);
   solve(c, h, order, kUnilateral, pressure("1e6"));
-  const std::string out = openingError(c, "--maxTraction 1e-12");
+  const std::string out = openingError(c, "--maxTraction " + tractionBound);
   const std::regex all("openNodes +([0-9]+) of ([0-9]+) non-tip");
   std::smatch m;
   INFO(out);
@@ -150,11 +151,14 @@ TEST_CASE("penny crack under pressure, P2: Sneddon's opening, three times closer
   CHECK(e4 / e8 >= 1.7);
 }
 
-TEST_CASE("penny crack under pressure, P2 at h = a/16 (long: ~4 min, ~9.5 GB)",
+TEST_CASE("penny crack under pressure, P2 at h = a/16 (long: ~3 min, ~10 GB)",
           "[.][pennyLong][opening]") {
-  const double e16 = sneddon("opening-P2-h16", "0.0625", 2);
-  WARN("P2 a/16 relL2Error " << e16);
-  CHECK(e16 <= 0.05);
+  // The third P2 mesh. σ_n ≈ −p is written with 12 digits: on this mesh |σ_n + p| reaches
+  // 1e-12 p, the last written digit (measured 1.000e-12), so the bound is 1e-10 here.
+  const double e16 = sneddon("opening-P2-h16", "0.0625", 2, "1e-10");
+  // Measured 0.0350 (order 0.78 from a/8's 0.0601; 163 s, 10.3 GB on this machine). Bound 5 %
+  // above it.
+  CHECK(e16 <= 0.0368);
 }
 
 TEST_CASE("penny crack under remote stress: it opens with the net pressure only",
