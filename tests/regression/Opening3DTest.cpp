@@ -1,6 +1,6 @@
-// Fractures that open, in 3D (docs/method.md §8): the penny-shaped crack of cases/pennyCrack
-// (a disc of radius a = 1 m in the cube [−4a, 4a]³ with fixed faces, E = 10 GPa, ν = 0.25)
-// made unilateral and loaded by a fluid pressure p (fracturePressure), alone or under the
+// Fractures that open, in 3D (docs/method.md §4, "Fractures that open"): the penny-shaped crack of
+// cases/pennyCrack (a disc of radius a = 1 m in the cube [−4a, 4a]³ with fixed faces, E = 10 GPa, ν
+// = 0.25) made unilateral and loaded by a fluid pressure p (fracturePressure), alone or under the
 // case's remote stress (σ_n∞ = −10 MPa, |τ∞| = 6 MPa on the disc). Sneddon's opening
 // g(r) = 8(1 − ν²)(p + σ_n∞)/(πE)·√(a² − r²) is compared by cases/pennyCrack/
 // pennyOpeningError.py (relative L²(Γ) error of g on the fault triangles, P1 or P2

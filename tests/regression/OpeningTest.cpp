@@ -1,8 +1,8 @@
-// Fractures that open (contact unilateral, docs/method.md §8), in 2D, against what the physics
-// requires: Sneddon's pressurised crack (cases/sneddonCrack, its sneddonError.py), the net
-// pressure, a partly open crack node by node, opening and closing over load cycles, restart.
-// The crack: half-length a = 1 m on the x axis (n_Γ = (0, −1)), in a square of half-width
-// 50a held on its sides, E = 10 GPa, ν = 0.25, plane strain, μ_f = 0.6.
+// Fractures that open (contact unilateral, docs/method.md §4, "Fractures that open"), in 2D,
+// against what the physics requires: Sneddon's pressurised crack (cases/sneddonCrack, its
+// sneddonError.py), the net pressure, a partly open crack node by node, opening and closing over
+// load cycles, restart. The crack: half-length a = 1 m on the x axis (n_Γ = (0, −1)), in a square
+// of half-width 50a held on its sides, E = 10 GPa, ν = 0.25, plane strain, μ_f = 0.6.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

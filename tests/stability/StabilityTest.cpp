@@ -534,9 +534,10 @@ TEST_CASE("stability: a block held only by a fracture that opens entirely is dia
           "[stability][opening]") {
   // The paper benchmark's upper block with its top free: only the fracture holds it. With
   // contact unilateral and a fluid pressure in the fracture, the faces separate everywhere
-  // and nothing holds the block (docs/method.md §8): the opening is a rigid-body motion, for
-  // which Newton's normal rows are singular. The run must say so, exit 3, and write only
-  // finite numbers; with the top held, the same fracture opens and the run converges.
+  // and nothing holds the block (docs/method.md §4, "Fractures that open"): the opening is a
+  // rigid-body motion, for which Newton's normal rows are singular. The run must say so, exit 3,
+  // and write only finite numbers; with the top held, the same fracture opens and the run
+  // converges.
   const auto setUp = [](Case& c, bool topHeld) {
     if (!topHeld) c.edit("0/D", "top\\s*\\{[^}]*\\}", "top { type free; }");
     if (topHeld)

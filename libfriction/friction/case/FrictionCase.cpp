@@ -115,7 +115,8 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
                                           "' (expected a sub-dictionary with its 'law')");
     const Dictionary& fd = fp.subDict(g.name);
     // Bilateral is the paper's model (the faces slide but never separate) and the answer of a
-    // fracture held shut; unilateral lets the faces open (docs/method.md §8).
+    // fracture held shut; unilateral lets the faces open (docs/method.md §4, "Fractures that
+    // open").
     const bool unilateral =
         fd.getChoiceOr("contact", {"bilateral", "unilateral"}, "bilateral") == "unilateral";
     fractures_.push_back({g.name, FrictionLaw::New(fd), unilateral});

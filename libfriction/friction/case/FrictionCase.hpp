@@ -133,8 +133,8 @@ class FrictionCase {
   std::string linearSolver_ = "cholmod";
   double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
   bool gammaAbsolute_ = false, warmStart_ = false;
-  /// Fractures that open (docs/method.md §8): any fracture with contact unilateral; γ_n and
-  /// how it was given (gammaNormal, gammaNormalRelative, or γ's own value).
+  /// Fractures that open (docs/method.md §4, "Fractures that open"): any fracture with contact
+  /// unilateral; γ_n and how it was given (gammaNormal, gammaNormalRelative, or γ's own value).
   bool opening_ = false;
   double gammaN_ = 0, gammaNRelative_ = 0;
   enum class GammaNGiven {

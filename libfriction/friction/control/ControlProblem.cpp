@@ -104,10 +104,11 @@ ControlState ControlProblem::stateFrom(const Eigen::VectorXd& beta, Eigen::Vecto
   s.D.resize(size());
   s.node.resize(n);
   if (opening_) {
-    // The normal complementarity D_n = max(σ'_n, −γ_n g) (docs/method.md §8): in contact
-    // (σ'_n + γ_n g < 0) D_n = −γ_n g and the friction bound comes from the augmented normal
-    // stress, ρ = c − μ(σ'_n + γ_n g); open, D_n = σ'_n and ρ = 0, so that τ = 0 is sought.
-    // cohesion_ holds c − μ p already. A fracture that may not open is always in contact.
+    // The normal complementarity D_n = max(σ'_n, −γ_n g) (docs/method.md §4, "Fractures that
+    // open"): in contact (σ'_n + γ_n g < 0) D_n = −γ_n g and the friction bound comes from the
+    // augmented normal stress, ρ = c − μ(σ'_n + γ_n g); open, D_n = σ'_n and ρ = 0, so that τ = 0
+    // is sought. cohesion_ holds c − μ p already. A fracture that may not open is always in
+    // contact.
     s.contact.assign(n, 1);
     for (Eigen::Index i = 0; i < n; ++i) {
       if (componentMask_[k * n + i] == 0) {

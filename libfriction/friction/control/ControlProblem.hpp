@@ -20,7 +20,8 @@ enum class GradientKind {
   frozenRho  ///< the paper's (46)–(47), (54): ρ treated as fixed (Tresca-like)
 };
 
-/// Fractures that open (docs/method.md §8): which nodes may, the fluid pressure, and γ_n.
+/// Fractures that open (docs/method.md §4, "Fractures that open"): which nodes may, the fluid
+/// pressure, and γ_n.
 struct OpeningSettings {
   Eigen::VectorXd unilateral;  ///< n: 1 where the node's fracture may open, 0 where it may not
   Eigen::VectorXd pressure;    ///< n: the fracture pressure p [Pa] (σ'_n = σ_n + p)

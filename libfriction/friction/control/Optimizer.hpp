@@ -67,7 +67,7 @@ class Optimizer {
   /// (then the caller factors the bordered matrix: docs/method.md §4).
   virtual bool wantsInterfaceOperator() const { return false; }
   /// False where the optimizer cannot take fractures that open (the opening control of
-  /// docs/method.md §8); the case refuses that combination.
+  /// docs/method.md §4, "Fractures that open"); the case refuses that combination.
   virtual bool handlesOpening() const { return true; }
 
   /// Minimise from beta (in: start, out: result).
