@@ -176,7 +176,9 @@ def latestTime(case, fracture):
     return max(times)[1]
 
 
-def readTable(path):
+def readTable(path, columns=COLUMNS3D):
+    """A 3D fracture table with the given columns (a unilateral fracture's have 'opening'
+    before 'state'): its columns by name, the status line and the frame line."""
     try:
         lines = open(path).read().splitlines()
     except OSError as e:
@@ -184,11 +186,11 @@ def readTable(path):
     if not lines or not lines[0].startswith("#"):
         raise InputError(f"{path}:1: expected the column header")
     header = lines[0][1:].split()
-    if header != COLUMNS3D:
+    if header != columns:
         if header[:3] == ["s", "x", "y"]:
             raise InputError(f"{path}: a 2D fracture table (columns {' '.join(header)}); "
                              "pennyError.py compares 3D results (columns x y z nx ny nz ...)")
-        raise InputError(f"{path}:1: expected the 3D columns '# {' '.join(COLUMNS3D)}'")
+        raise InputError(f"{path}:1: expected the 3D columns '# {' '.join(columns)}'")
     status = lines[1] if len(lines) > 1 else ""
     if not status.startswith("# status"):
         raise InputError(f"{path}:2: expected the '# status' line")
@@ -201,8 +203,8 @@ def readTable(path):
         if not line.strip() or line.startswith("#"):
             continue
         f = line.split()
-        if len(f) != len(COLUMNS3D):
-            raise InputError(f"{path}:{i}: expected {len(COLUMNS3D)} columns, found {len(f)}")
+        if len(f) != len(columns):
+            raise InputError(f"{path}:{i}: expected {len(columns)} columns, found {len(f)}")
         try:
             rows.append([float(v) for v in f[:-1]] + [f[-1]])
         except ValueError:
@@ -210,11 +212,40 @@ def readTable(path):
     if not rows:
         raise InputError(f"{path}: no rows")
     cols = {c: np.array([r[k] for r in rows], dtype=float if c != "state" else object)
-            for k, c in enumerate(COLUMNS3D)}
+            for k, c in enumerate(columns)}
     bad = set(cols["state"]) - {"stick", "slip", "open", "tip"}
     if bad:
         raise InputError(f"{path}: unknown state(s) {sorted(bad)}")
     return cols, status, frame
+
+
+def flatDisc(t, tablePath, vtpPath):
+    """The fault of table t (its surface in vtpPath) as a flat disc: node positions xyz, the
+    normal n, the triangles and their order, the rim's nodes (tip nodes that are triangle
+    vertices: a P2 rim edge's midpoint lies inside), the centre, the nodes' offsets d from it,
+    their in-plane radii r and the radius a. InputError where the fault is not a flat disc."""
+    xyz = np.stack([t["x"], t["y"], t["z"]], axis=1)
+    normals = np.stack([t["nx"], t["ny"], t["nz"]], axis=1)
+    n = normals.mean(axis=0)
+    n /= np.linalg.norm(n)
+    if np.abs(normals - n).max() > 1e-8:
+        raise InputError(f"{tablePath}: the normals differ from node to node: the penny "
+                         "formula is for a flat disc")
+    tri = readVtp(vtpPath, xyz)
+    order = 1 if tri.shape[1] == 3 else 2
+    tips = np.zeros(len(xyz), dtype=bool)
+    tips[np.unique(tri[:, :3])] = True
+    tips &= t["state"] == "tip"
+    if tips.sum() < 3:
+        raise InputError(f"{tablePath}: {tips.sum()} tip nodes: cannot find the disc's rim")
+    centre = xyz[tips].mean(axis=0)
+    d = xyz - centre
+    r = np.linalg.norm(d - np.outer(d @ n, n), axis=1)
+    a = r[tips].mean()
+    if np.abs(d @ n).max() > 1e-8 * a or np.abs(r[tips] - a).max() > 1e-6 * a:
+        raise InputError(f"{tablePath}: the fault is not a disc (its tip nodes are not on one "
+                         "circle in the plane of the nodes)")
+    return xyz, n, tri, order, tips, centre, d, r, a
 
 
 def readVtp(path, xyz):
@@ -331,33 +362,11 @@ def main(argv):
     tablePath = os.path.join(case, time, "fractures", args.fracture + ".dat")
     t, status, frame = readTable(tablePath)
     p = caseParameters(case, args.fracture)
-    xyz = np.stack([t["x"], t["y"], t["z"]], axis=1)
-    normals = np.stack([t["nx"], t["ny"], t["nz"]], axis=1)
     slip = np.stack([t["slipX"], t["slipY"], t["slipZ"]], axis=1)
     state = t["state"]
-
-    n = normals.mean(axis=0)
-    n /= np.linalg.norm(n)
-    if np.abs(normals - n).max() > 1e-8:
-        raise InputError(f"{tablePath}: the normals differ from node to node: the penny "
-                         "formula is for a flat disc")
     vtpPath = os.path.join(case, "VTK", "fractures", f"{args.fracture}_{time}.vtp")
-    tri = readVtp(vtpPath, xyz)
-    order = 1 if tri.shape[1] == 3 else 2
-    # The rim: tip nodes that are triangle vertices (a P2 rim edge's midpoint lies inside).
-    tips = np.zeros(len(xyz), dtype=bool)
-    tips[np.unique(tri[:, :3])] = True
-    tips &= state == "tip"
-    if tips.sum() < 3:
-        raise InputError(f"{tablePath}: {tips.sum()} tip nodes: cannot find the disc's rim")
-    centre = xyz[tips].mean(axis=0)
-    d = xyz - centre
+    xyz, n, tri, order, tips, centre, d, r, a = flatDisc(t, tablePath, vtpPath)
     inPlane = d - np.outer(d @ n, n)
-    r = np.linalg.norm(inPlane, axis=1)
-    a = r[tips].mean()
-    if np.abs(d @ n).max() > 1e-8 * a or np.abs(r[tips] - a).max() > 1e-6 * a:
-        raise InputError(f"{tablePath}: the fault is not a disc (its tip nodes are not on one "
-                         "circle in the plane of the nodes)")
 
     # The remote state resolved on the fault, with the table's normal (from Omega+ to Omega-):
     # tau_inf is the remote traction on Omega+; the slip u+ - u- goes along -tau_inf.

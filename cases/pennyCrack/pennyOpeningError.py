@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Compares the opening of a pressurised penny crack with Sneddon's (docs/method.md, §8).
+"""Compares the opening of a pressurised penny crack with Sneddon's (docs/method.md §10).
 
 A disc-shaped crack of radius a in an infinite body, its faces loaded by a fluid pressure p
 (the fracturePressure effect) under a uniform remote stress whose normal component on the
@@ -41,35 +41,10 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pennyError import (COLUMNS3D, InputError, latestTime, number, numberList,  # noqa: E402
-                        parseDict, readVtp, referenceRule, shape)
+from pennyError import (COLUMNS3D, InputError, flatDisc, latestTime, number,  # noqa: E402
+                        numberList, parseDict, readTable, referenceRule, shape)
 
 COLUMNS = COLUMNS3D[:-1] + ["opening", "state"]
-
-
-def readTable(path):
-    try:
-        lines = open(path).read().splitlines()
-    except OSError as e:
-        raise InputError(f"{path}: cannot read ({e.strerror})")
-    if not lines or lines[0][1:].split() != COLUMNS:
-        raise InputError(f"{path}:1: expected the 3D columns of a unilateral fracture "
-                         f"'# {' '.join(COLUMNS)}'")
-    rows = []
-    for i, line in enumerate(lines[1:], start=2):
-        if not line.strip() or line.startswith("#"):
-            continue
-        f = line.split()
-        if len(f) != len(COLUMNS):
-            raise InputError(f"{path}:{i}: expected {len(COLUMNS)} columns, found {len(f)}")
-        try:
-            rows.append([float(v) for v in f[:-1]] + [f[-1]])
-        except ValueError:
-            raise InputError(f"{path}:{i}: a value is not a number")
-    if not rows:
-        raise InputError(f"{path}: no rows")
-    return {c: np.array([r[k] for r in rows], dtype=float if c != "state" else object)
-            for k, c in enumerate(COLUMNS)}
 
 
 def caseParameters(case, fracture, time):
@@ -126,34 +101,15 @@ def main(argv):
     case = args.case
     time = args.time or latestTime(case, args.fracture)
     tablePath = os.path.join(case, time, "fractures", args.fracture + ".dat")
-    t = readTable(tablePath)
+    t = readTable(tablePath, COLUMNS)[0]
     E, nu, sigma0, p = caseParameters(case, args.fracture, time)
     p = args.p if args.p is not None else p
     if p is None or not p > 0:
         raise InputError(f"{case}: no constant fracturePressure > 0 on '{args.fracture}' "
                          "(give -p)")
-    xyz = np.stack([t["x"], t["y"], t["z"]], axis=1)
-    normals = np.stack([t["nx"], t["ny"], t["nz"]], axis=1)
     state, g = t["state"], t["opening"]
-    n = normals.mean(axis=0)
-    n /= np.linalg.norm(n)
-    if np.abs(normals - n).max() > 1e-8:
-        raise InputError(f"{tablePath}: the normals differ from node to node: the formula is "
-                         "for a flat disc")
     vtpPath = os.path.join(case, "VTK", "fractures", f"{args.fracture}_{time}.vtp")
-    tri = readVtp(vtpPath, xyz)
-    order = 1 if tri.shape[1] == 3 else 2
-    tips = np.zeros(len(xyz), dtype=bool)
-    tips[np.unique(tri[:, :3])] = True
-    tips &= state == "tip"
-    if tips.sum() < 3:
-        raise InputError(f"{tablePath}: {tips.sum()} tip nodes: cannot find the disc's rim")
-    centre = xyz[tips].mean(axis=0)
-    d = xyz - centre
-    r = np.linalg.norm(d - np.outer(d @ n, n), axis=1)
-    a = r[tips].mean()
-    if np.abs(d @ n).max() > 1e-8 * a or np.abs(r[tips] - a).max() > 1e-6 * a:
-        raise InputError(f"{tablePath}: the fault is not a disc")
+    xyz, n, tri, order, tips, centre, d, r, a = flatDisc(t, tablePath, vtpPath)
 
     sigmaNInf = (sigma0 @ n) @ n
     dp = p + sigmaNInf
