@@ -575,7 +575,7 @@ TEST_CASE("a damaged split mesh is refused with file, line and key", "[regressio
         if (line.find("kind") != std::string::npos) keyLine = n;
     }
     solverFails(c, {at("constant/splitMesh", keyLine), "kind", "inner",
-                    "expected interior, boundary or tip"});
+                    "expected interior, boundary, tip, crossing, abutting or joined"});
   }
   SECTION("a triangle with a node number out of range") {
     c.edit("constant/splitMesh", "triangles\\s*\\n?\\s*(\\d+)\\s*\\n?\\s*\\(\\s*\\(\\d+",

@@ -10,10 +10,12 @@
 // Exit codes: 0 done; 1 bad input (the message names file:line and what was expected);
 // 2 bad command line; 6 an internal or system error (out of memory, …).
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -157,6 +159,45 @@ void printSummary3(const Mesh& mesh) {
   std::cout << std::right << "\n";
 }
 
+// The other fractures at unsplit node v than g, quoted: "'a' and 'b'".
+std::string othersAt(const SplitMesh& split, const FractureGeometry& g, Index v) {
+  std::vector<std::string> names;
+  for (const FractureGeometry& h : split.fractures)
+    if (&h != &g && std::find(h.node.begin(), h.node.end(), v) != h.node.end())
+      names.push_back("'" + h.name + "'");
+  std::string s;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    s += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return s;
+}
+
+// 2D: each node where fractures meet, with each fracture's role there and the copies made.
+void printJunctions(const Mesh& mesh, const SplitMesh& split) {
+  std::map<Index, std::vector<std::pair<const FractureGeometry*, FractureNodeKind>>> at;
+  for (const FractureGeometry& g : split.fractures)
+    for (Index i = 0; i < g.numNodes(); ++i) at[g.node[i]].push_back({&g, g.kind[i]});
+  std::vector<Index> junctions;
+  for (const auto& [v, list] : at)
+    if (list.size() > 1) junctions.push_back(v);
+  if (junctions.empty()) return;
+  std::cout << "Junctions: " << junctions.size() << "\n";
+  for (Index v : junctions) {
+    Index copies = 0;
+    for (Index o : split.origin) copies += o == v;
+    std::cout << "    " << formatPoint(mesh.points[v], mesh.dim) << " " << copies << " copies:";
+    const auto& list = at[v];
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const char* role = list[k].second == FractureNodeKind::crossing   ? "passes through"
+                         : list[k].second == FractureNodeKind::abutting ? "ends (held)"
+                         : list[k].second == FractureNodeKind::joined   ? "joined"
+                                                                        : "ends on the boundary";
+      std::cout << (k ? ", " : " ") << "'" << list[k].first->name << "' " << role;
+    }
+    std::cout << "\n";
+  }
+  std::cout << "\n";
+}
+
 void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>& fractureLabels) {
   if (mesh.dim == 3) {
     printSummary3(mesh);
@@ -196,19 +237,34 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
               << "    length:       " << g.length() << "\n";
     for (Index i : {Index(0), n - 1}) {
       const Point& p = mesh.points[g.node[i]];
+      std::string what;
+      switch (g.kind[i]) {
+        case FractureNodeKind::tip:
+          what = "tip inside the body (single node)";
+          break;
+        case FractureNodeKind::abutting:
+          what = "ends on the junction with " + othersAt(split, g, g.node[i]) +
+                 " (its jump held there)";
+          break;
+        case FractureNodeKind::joined:
+          what = "joined end to end with " + othersAt(split, g, g.node[i]) + " (one node of both)";
+          break;
+        default:
+          what = "on the outer boundary, " + patchesAt(mesh, g.node[i], fractureLabels) +
+                 " (duplicated)";
+      }
       std::cout << "    " << (i == 0 ? "start:        " : "end:          ")
-                << formatPoint(p, mesh.dim) << " "
-                << (g.kind[i] == FractureNodeKind::tip
-                        ? "tip inside the body (single node)"
-                        : "on the outer boundary, " + patchesAt(mesh, g.node[i], fractureLabels) +
-                              " (duplicated)")
-                << "\n";
+                << formatPoint(p, mesh.dim) << " " << what << "\n";
     }
+    if (g.numOfKind(FractureNodeKind::crossing) > 0)
+      std::cout << "    crossings:    " << g.numOfKind(FractureNodeKind::crossing)
+                << " (junctions it passes through)\n";
     std::cout << "    normal:       " << point(g.normal[0].head<2>())
               << " at the start (from Omega+ to "
               << "Omega-; tangent " << point(g.tangent[0]) << ")\n\n";
   }
 
+  printJunctions(mesh, split);
   const SplitMesh& s = split;
   std::cout << "Split mesh\n"
             << "    points:    " << s.mesh.numPoints() << " (+"

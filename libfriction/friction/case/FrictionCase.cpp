@@ -876,6 +876,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       for (Eigen::Index i = 0; i < n; ++i) ++count[nodeState(i)];
       log << "  nodes stick " << count["stick"] << " slip " << count["slip"] << " open "
           << count["open"] << " tip " << count["tip"];
+      if (count["junction"] > 0) log << " junction " << count["junction"];
     }
     log << (r.written ? "  (written)" : "");
     // Progress: step k of n, elapsed, estimated remaining (on the step's own line, so a
@@ -1004,7 +1005,8 @@ void FrictionCase::judgeStep(StepResult& r) const {
 
 std::string FrictionCase::nodeState(Eigen::Index k) const {
   const FractureSystem& sys = *system_;
-  if (sys.controlNodes()[k].tip) return "tip";
+  // Held at a junction where the fracture ends on another: no jump, like a tip.
+  if (sys.controlNodes()[k].tip) return sys.controlNodes()[k].junction ? "junction" : "tip";
   // Nodes on Dirichlet patches have their jump held at zero: they stick.
   if (sys.freeMask()[k] == 0) return "stick";
   // Faces apart (contact unilateral): open, whatever the tangential law says (τ = 0 there).

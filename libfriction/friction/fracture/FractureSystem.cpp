@@ -8,6 +8,7 @@
 
 #include "friction/core/Assert.hpp"
 #include "friction/fracture/SignConventions.hpp"
+#include "friction/mesh/MeshTopology.hpp"
 
 namespace friction {
 
@@ -81,10 +82,13 @@ FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Materia
   consistent_ = dim_ == 3 && degree == 2;
   const Index n = size();
 
-  // L: ±j/2 on the copies.
+  // L: ±j/2 on the copies; at junctions, the sectors' coefficients (controlNodes2D).
   Triplets lt;
+  for (const LiftEntry& e : junctionLift_)
+    for (int c = 0; c < dim_; ++c)
+      lt.emplace_back(splitSpace_->dof(e.copy, c), dim_ * e.node + c, e.coefficient);
   for (Index k = 0; k < n; ++k) {
-    if (nodes_[k].tip) continue;
+    if (nodes_[k].tip || (!atJunction_.empty() && atJunction_[k])) continue;
     for (int c = 0; c < dim_; ++c) {
       lt.emplace_back(splitSpace_->dof(nodes_[k].plus, c), dim_ * k + c, 0.5);
       lt.emplace_back(splitSpace_->dof(nodes_[k].minus, c), dim_ * k + c, -0.5);
@@ -107,40 +111,194 @@ ControlNode FractureSystem::vertexNode(int f, const FractureGeometry& g, Index i
 }
 
 void FractureSystem::controlNodes2D(int degree) {
-  // Control nodes in arclength order: vertices, and for P2 the edge midpoints between them.
-  std::vector<std::array<Index, 2>> plusEdges;
-  for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f) {
+  const int nf = static_cast<int>(split_.fractures.size());
+  // The copies the two triangles at each fracture edge (i, i + 1) use: plus of i, plus of
+  // i + 1, minus of i, minus of i + 1. Away from junctions they are the nodes' plus and minus;
+  // at a crossing they depend on the edge (a sector of each side).
+  const auto topology = unsplitMesh_.topology();
+  std::vector<std::vector<std::array<Index, 4>>> edgeCopies(static_cast<std::size_t>(nf));
+  for (int f = 0; f < nf; ++f) {
     const FractureGeometry& g = split_.fractures[f];
+    for (Index i = 0; i + 1 < g.numNodes(); ++i) {
+      const Index v = g.node[i], w = g.node[i + 1];
+      std::array<Index, 4> copies{g.plus[i], g.plus[i + 1], g.minus[i], g.minus[i + 1]};
+      const Index side = topology->findFacet({v, w});
+      const Vector2 normal =
+          normalFromTangent(unsplitMesh_.points[w].head<2>() - unsplitMesh_.points[v].head<2>());
+      for (int c = 0; side >= 0 && c < topology->numCellsOf(side); ++c) {
+        const Index t = topology->cellOf(side, c).cell;
+        const auto unsplit = unsplitMesh_.cell(t);
+        const auto splitCell = split_.mesh.cell(t);
+        for (int k = 0; k < 3; ++k) {
+          const Index x = unsplit[k];
+          if (x == v || x == w) continue;
+          const bool plus =
+              (unsplitMesh_.points[x].head<2>() - unsplitMesh_.points[v].head<2>()).dot(normal) < 0;
+          for (int l = 0; l < 3; ++l) {
+            if (unsplit[l] == v) copies[plus ? 0 : 2] = splitCell[l];
+            if (unsplit[l] == w) copies[plus ? 1 : 3] = splitCell[l];
+          }
+        }
+      }
+      edgeCopies[f].push_back(copies);
+    }
+  }
+  // Fractures through each node: a node of several is a junction.
+  std::map<Index, std::vector<std::pair<int, Index>>> fracturesAt;
+  for (int f = 0; f < nf; ++f)
+    for (Index i = 0; i < split_.fractures[f].numNodes(); ++i)
+      fracturesAt[split_.fractures[f].node[i]].push_back({f, i});
+
+  // Control nodes in arclength order: vertices, and for P2 the edge midpoints between them. A
+  // node joined to an earlier fracture is that fracture's control node.
+  std::vector<std::vector<Index>> controlOf(static_cast<std::size_t>(nf));
+  std::vector<std::vector<std::pair<int, Index>>> weightFrom;  // (fracture, copy) per node
+  std::vector<std::vector<std::array<Index, 2>>> plusEdges(static_cast<std::size_t>(nf));
+  for (int f = 0; f < nf; ++f) {
+    const FractureGeometry& g = split_.fractures[f];
+    controlOf[f].assign(static_cast<std::size_t>(g.numNodes()), -1);
     for (Index i = 0; i < g.numNodes(); ++i) {
-      ControlNode v = vertexNode(f, g, i);
-      v.normal = frameVector(g.normal[i]);
-      v.tangent[0] = frameVector(g.tangent[i]);
-      v.arclength = g.arclength[i];
-      v.tip = g.kind[i] == FractureNodeKind::tip;
-      nodes_.push_back(v);
+      std::vector<std::pair<int, Index>> from;
+      if (i > 0) from.push_back({f, edgeCopies[f][i - 1][1]});
+      if (i + 1 < g.numNodes() && (i == 0 || edgeCopies[f][i][0] != edgeCopies[f][i - 1][1]))
+        from.push_back({f, edgeCopies[f][i][0]});
+      bool skip = false;
+      if (g.kind[i] == FractureNodeKind::joined)
+        for (const auto& [other, j] : fracturesAt[g.node[i]]) {
+          if (other == f) continue;
+          if (other < f) {
+            controlOf[f][i] = controlOf[other][j];
+            skip = true;
+          } else {  // the other's edge at the node adds its share of Γ's weight here
+            const auto& e = edgeCopies[other];
+            from.push_back({other, j == 0 ? e[0][0] : e[static_cast<std::size_t>(j) - 1][1]});
+          }
+        }
+      if (!skip) {
+        ControlNode v = vertexNode(f, g, i);
+        v.normal = frameVector(g.normal[i]);
+        v.tangent[0] = frameVector(g.tangent[i]);
+        v.arclength = g.arclength[i];
+        v.junction = g.kind[i] == FractureNodeKind::abutting;
+        v.tip = g.kind[i] == FractureNodeKind::tip || v.junction;
+        controlOf[f][i] = static_cast<Index>(nodes_.size());
+        nodes_.push_back(v);
+        weightFrom.push_back(from);
+      }
       if (i + 1 == g.numNodes()) break;
-      plusEdges.push_back({g.plus[i], g.plus[i + 1]});
+      const std::array<Index, 4>& e = edgeCopies[f][i];
+      plusEdges[f].push_back({e[0], e[1]});
       if (degree == 2) {
         ControlNode m;
         m.fracture = f;
-        m.plus = splitSpace_->midpointNode(g.plus[i], g.plus[i + 1]);
-        m.minus = splitSpace_->midpointNode(g.minus[i], g.minus[i + 1]);
+        m.plus = splitSpace_->midpointNode(e[0], e[1]);
+        m.minus = splitSpace_->midpointNode(e[2], e[3]);
         m.position = splitSpace_->point(m.plus);
         m.x = m.position.head<2>();
-        const Vector2 e =
+        const Vector2 d =
             (split_.mesh.points[g.plus[i + 1]].head<2>() - split_.mesh.points[g.plus[i]].head<2>());
-        const Vector2 t = e.normalized();
+        const Vector2 t = d.normalized();
         m.tangent[0] = frameVector(t);
         m.normal = frameVector(normalFromTangent(t));
         m.arclength = 0.5 * (g.arclength[i] + g.arclength[i + 1]);
         nodes_.push_back(m);
+        weightFrom.push_back({{f, m.plus}});
       }
     }
   }
-  // Lumped mass of Γ: trapezoid (P1) or Simpson (P2) weights of the ⁺-side edges.
-  const Eigen::VectorXd w = splitAssembler_->lumpedEdgeMass(plusEdges);
+  // Lumped mass of Γ: trapezoid (P1) or Simpson (P2) weights of each fracture's ⁺-side edges,
+  // summed at a node over the copies its edges use (one away from junctions).
+  std::vector<Eigen::VectorXd> w;
+  for (int f = 0; f < nf; ++f) w.push_back(splitAssembler_->lumpedEdgeMass(plusEdges[f]));
   weights_.resize(size());
-  for (Index k = 0; k < size(); ++k) weights_[k] = w[nodes_[k].plus];
+  for (Index k = 0; k < size(); ++k) {
+    weights_[k] = 0;
+    for (const auto& [f, copy] : weightFrom[k]) weights_[k] += w[f][copy];
+  }
+
+  // Junctions: each fracture edge at the node separates two sectors, by the jump of its
+  // fracture's control node there (none where that node is held).
+  atJunction_.assign(static_cast<std::size_t>(size()), 0);
+  for (const auto& [node, list] : fracturesAt) {
+    if (list.size() < 2) continue;
+    std::vector<JunctionBranch> branches;
+    for (const auto& [f, i] : list) {
+      const Index k = controlOf[f][i];
+      atJunction_[k] = 1;
+      const bool held = nodes_[k].tip;
+      // The control node's own Ω⁺ copy at this node (its first edge's), to orient the edges.
+      const FractureGeometry& g = split_.fractures[f];
+      for (int side = 0; side < 2; ++side) {
+        const Index e = side == 0 ? i - 1 : i;  // the edge (i − 1, i) or (i, i + 1)
+        if (e < 0 || e + 1 >= g.numNodes()) continue;
+        const std::array<Index, 4>& c = edgeCopies[f][e];
+        const Index plusCopy = side == 0 ? c[1] : c[0], minusCopy = side == 0 ? c[3] : c[2];
+        const double sign = nodes_[k].fracture == f || held
+                                ? 1.0
+                                : (std::find_if(branches.begin(), branches.end(),
+                                                [&](const JunctionBranch& b) {
+                                                  return b.node == k && b.plusCopy == plusCopy;
+                                                }) != branches.end()
+                                       ? 1.0
+                                       : -1.0);
+        branches.push_back({plusCopy, minusCopy, held ? Index(-1) : k, sign});
+      }
+    }
+    const auto lifting = junctionLifting(branches);
+    if (lifting.empty())
+      throw InputError(split_.mesh.source,
+                       "the split mesh's junction at " + formatPoint(split_.mesh.points[node], 2) +
+                           " is not consistent (its fractures' jumps do not add up to zero "
+                           "around it); split the mesh again with splitFractureNodes");
+    for (const auto& [copy, terms] : lifting)
+      for (const auto& [k, coefficient] : terms)
+        if (coefficient != 0) junctionLift_.push_back({copy, k, coefficient});
+  }
+}
+
+std::map<Index, std::map<Index, double>> FractureSystem::junctionLifting(
+    const std::vector<JunctionBranch>& branches) const {
+  // Potentials of the sectors, from the first one (0): crossing a branch from its minus to
+  // its plus sector adds its jump. Around an inner node the branches close a cycle, and the
+  // jumps must add up to zero: they do when each jump is carried by a fracture through the
+  // node (both of its edges, with opposite roles) and the others are held — the splitter's
+  // kinds guarantee it, and it is checked here.
+  std::map<Index, std::map<Index, double>> potential;
+  potential[branches.front().minusCopy];
+  auto add = [](std::map<Index, double> p, Index k, double s) {
+    if (k >= 0) p[k] += s;
+    return p;
+  };
+  auto same = [](const std::map<Index, double>& a, const std::map<Index, double>& b) {
+    std::map<Index, double> d = a;
+    for (const auto& [k, v] : b) d[k] -= v;
+    for (const auto& [k, v] : d)
+      if (v != 0) return false;
+    return true;
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const JunctionBranch& b : branches) {
+      const bool hasPlus = potential.count(b.plusCopy), hasMinus = potential.count(b.minusCopy);
+      if (hasMinus && !hasPlus) {
+        potential[b.plusCopy] = add(potential[b.minusCopy], b.node, b.sign);
+        changed = true;
+      } else if (hasPlus && !hasMinus) {
+        potential[b.minusCopy] = add(potential[b.plusCopy], b.node, -b.sign);
+        changed = true;
+      } else if (hasPlus && hasMinus &&
+                 !same(potential[b.plusCopy], add(potential[b.minusCopy], b.node, b.sign))) {
+        return {};  // the jumps around the node do not add up to zero
+      }
+    }
+  }
+  // Mean zero over the copies: away from junctions this is ±j/2 on the two sides.
+  std::map<Index, double> mean;
+  for (const auto& [copy, p] : potential)
+    for (const auto& [k, v] : p) mean[k] += v / static_cast<double>(potential.size());
+  for (auto& [copy, p] : potential)
+    for (const auto& [k, m] : mean) p[k] -= m;
+  return potential;
 }
 
 void FractureSystem::controlNodes3D(int degree) {
@@ -319,9 +477,19 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
     B_ = P_.transpose() * (Ksplit * L_);
     // Rows of K_split at the copies, scaled: Σ_k = (r⁺_k − r⁻_k) / (2 w_k); 3D P2: Σ̃_k =
     // (r⁺_k − r⁻_k) / 2, and Σ from the consistent mass (solve()).
+    // At junctions, E = W⁻¹ Lᵀ on the sectors: (R⁺ − R⁻) / (2 w) with R± the residuals summed
+    // over the sectors on either side of a fracture through the node (its traction is the
+    // same on both of its edges there; the other fractures' faces between those sectors
+    // cancel in the sum).
     Triplets et;
+    for (const LiftEntry& e : junctionLift_) {
+      const double s = consistent_ ? 1.0 : 1.0 / weights_[e.node];
+      for (int c = 0; c < dim_; ++c)
+        et.emplace_back(dim_ * e.node + c, splitSpace_->dof(e.copy, c), s * e.coefficient);
+    }
     for (Index k = 0; k < n; ++k) {
-      if (nodes_[k].tip) continue;  // a single node has no two sides to compare
+      // A single node has no two sides to compare.
+      if (nodes_[k].tip || (!atJunction_.empty() && atJunction_[k])) continue;
       const double s = consistent_ ? 0.5 : 0.5 / weights_[k];
       for (int c = 0; c < dim_; ++c) {
         et.emplace_back(dim_ * k + c, splitSpace_->dof(nodes_[k].plus, c), s);

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -53,9 +54,12 @@ struct ControlNode {
   /// that on a flat piece it is that piece's exact normal; t₁, t₂ = tangentBasis(n_Γ).
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   std::array<Eigen::Vector3d, 2> tangent{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  double arclength = 0;      ///< [m] (2D; 0 in 3D)
-  double weight = 0;         ///< lumped mass of Γ [m^(d−1)]
-  bool tip = false;          ///< single node: no jump
+  double arclength = 0;  ///< [m] (2D; 0 in 3D)
+  double weight = 0;     ///< lumped mass of Γ [m^(d−1)]
+  bool tip = false;      ///< single node, or held at a junction (junction): no jump
+  /// 2D: the fracture ends on a junction (FractureNodeKind::abutting): its jump there is held
+  /// at zero, and tip is true too (no jump, no traction recovered).
+  bool junction = false;
   bool onDirichlet = false;  ///< on a Dirichlet patch: jump held at zero
   /// 3D: the tangential component (0 or 1) a roller holds, the slip going on along the other;
   /// −1 if none. It is the component of tangentBasis(n_Γ) along the roller's constraint
@@ -149,6 +153,23 @@ class FractureSystem : public SlipResponse {
   /// Fracture f's node i as a control node: its copies and position (the frame is the caller's).
   ControlNode vertexNode(int f, const FractureGeometry& g, Index i) const;
   void controlNodes2D(int degree);
+  // 2D junctions: the lifting L and recovery E at nodes where several fractures meet.
+  struct JunctionBranch {
+    Index plusCopy, minusCopy;  ///< the sectors on either side of a fracture edge at the node
+    Index node;                 ///< the control node whose jump it carries, −1 if held
+    double sign;  ///< +1, or −1 where the edge's Ω⁺ side is the node's Ω⁻ side
+  };
+  /// Per copy of the node, the coefficient of each control node's jump in its displacement
+  /// (the mean over the copies is zero).
+  std::map<Index, std::map<Index, double>> junctionLifting(
+      const std::vector<JunctionBranch>& branches) const;
+  /// The lifting at junction nodes: copy `copy` moves by coefficient × the jump of `node`.
+  struct LiftEntry {
+    Index copy, node;
+    double coefficient;
+  };
+  std::vector<LiftEntry> junctionLift_;
+  std::vector<char> atJunction_;  ///< per control node: a vertex where fractures meet
   void controlNodes3D(int degree);
   // x and Σ (d per control node, interleaved) for jump vector j (d per control node); with
   // recover false (3D P2), Σ̃ = (r⁺ − r⁻)/2 instead, before the mass solve.

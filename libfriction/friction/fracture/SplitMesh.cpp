@@ -110,6 +110,12 @@ const char* toString(FractureNodeKind kind) {
       return "boundary";
     case FractureNodeKind::tip:
       return "tip";
+    case FractureNodeKind::crossing:
+      return "crossing";
+    case FractureNodeKind::abutting:
+      return "abutting";
+    case FractureNodeKind::joined:
+      return "joined";
   }
   return "?";
 }
@@ -239,36 +245,42 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
                                        std::to_string(spec.label) + ") has no edges in " + file);
   }
 
-  // 2. Node -> incident fracture edges; more than two, or two fractures meeting, is a junction.
+  // 2. Node -> incident fracture edges. Edges of several fractures at a node make it a
+  //    junction (docs/method.md §4, "Junctions"); one fracture with more than two edges at a
+  //    node branches, which a curve cannot: each branch must have its own label.
   std::unordered_map<Index, std::vector<std::pair<int, Index>>> nodeEdges;  // (fracture, other end)
   for (std::size_t f = 0; f < specs.size(); ++f)
     for (const auto& [a, b] : fracEdges[f]) {
       nodeEdges[a].push_back({static_cast<int>(f), b});
       nodeEdges[b].push_back({static_cast<int>(f), a});
     }
-  for (const auto& [v, list] : nodeEdges) {
-    bool mixed = false;
-    for (const auto& fe : list) mixed |= fe.first != list.front().first;
-    if (mixed)
-      throw InputError(
-          file,
-          "fractures '" + specs[list[0].first].name + "' and '" + specs[list[1].first].name +
-              "' meet at " + formatPoint(mesh.points[v], mesh.dim) +
-              ": junctions of fractures are not supported (mesh them so that they do not meet)");
-    if (list.size() > 2)
-      throw InputError(
-          file,
-          "fracture '" + specs[list[0].first].name + "' branches at " +
-              formatPoint(mesh.points[v], mesh.dim) + " (" + std::to_string(list.size()) +
-              " fracture edges meet there): junctions of fractures are not supported (give each "
-              "branch its own label and keep them apart)");
-  }
+  // Edges of fracture f at node v, and the fractures at v.
+  auto edgesOfAt = [&](Index v, int f) {
+    int c = 0;
+    for (const auto& fe : nodeEdges[v]) c += fe.first == f;
+    return c;
+  };
+  auto fracturesAt = [&](Index v) {
+    std::vector<int> list;
+    for (const auto& fe : nodeEdges[v])
+      if (std::find(list.begin(), list.end(), fe.first) == list.end()) list.push_back(fe.first);
+    return list;
+  };
+  for (const auto& [v, list] : nodeEdges)
+    for (int f : fracturesAt(v))
+      if (edgesOfAt(v, f) > 2)
+        throw InputError(
+            file, "fracture '" + specs[f].name + "' branches at " +
+                      formatPoint(mesh.points[v], mesh.dim) + " (" +
+                      std::to_string(edgesOfAt(v, f)) +
+                      " of its edges meet there): a fracture is one curve; give each branch its "
+                      "own label and list each as a fracture (fractures may meet: junctions)");
 
-  // A curve whose nodes all have two fracture edges is closed: refuse before anything else.
+  // A curve whose nodes all have two of its edges is closed: refuse before anything else.
   for (std::size_t f = 0; f < specs.size(); ++f) {
     bool hasEnd = false;
     for (const auto& [a, b] : fracEdges[f])
-      hasEnd |= nodeEdges[a].size() == 1 || nodeEdges[b].size() == 1;
+      hasEnd |= edgesOfAt(a, static_cast<int>(f)) == 1 || edgesOfAt(b, static_cast<int>(f)) == 1;
     if (!hasEnd)
       throw InputError(specs[f].where, "fracture '" + specs[f].name +
                                            "' is a closed curve; only open fractures (two ends) "
@@ -278,26 +290,20 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
   // 3. A triangle with all three vertices on one fracture has no node off it: refuse.
   for (Index t = 0; t < mesh.numCells(); ++t) {
     const auto tri = mesh.cell(t);
-    int f0 = -2;
-    bool all = true;
-    for (int k = 0; k < 3 && all; ++k) {
-      auto it = nodeEdges.find(tri[k]);
-      if (it == nodeEdges.end()) {
-        all = false;
-        break;
-      }
-      const int f = it->second.front().first;
-      if (f0 != -2 && f != f0) all = false;
-      f0 = f;
+    auto it = nodeEdges.find(tri[0]);
+    if (it == nodeEdges.end()) continue;
+    for (int f0 : fracturesAt(tri[0])) {
+      bool all = true;
+      for (int k = 1; k < 3 && all; ++k) all = nodeEdges.count(tri[k]) && edgesOfAt(tri[k], f0) > 0;
+      if (all)
+        throw InputError(file, "triangle " + std::to_string(t + 1) + " " +
+                                   formatPoint(mesh.points[tri[0]], mesh.dim) + " " +
+                                   formatPoint(mesh.points[tri[1]], mesh.dim) + " " +
+                                   formatPoint(mesh.points[tri[2]], mesh.dim) +
+                                   " has all three vertices on fracture '" + specs[f0].name +
+                                   "', so it cannot be assigned to one side; refining the mesh "
+                                   "near the fracture (a smaller element size there) removes it");
     }
-    if (all)
-      throw InputError(file, "triangle " + std::to_string(t + 1) + " " +
-                                 formatPoint(mesh.points[tri[0]], mesh.dim) + " " +
-                                 formatPoint(mesh.points[tri[1]], mesh.dim) + " " +
-                                 formatPoint(mesh.points[tri[2]], mesh.dim) +
-                                 " has all three vertices on fracture '" + specs[f0].name +
-                                 "', so it cannot be assigned to one side; refining the mesh "
-                                 "near the fracture (a smaller element size there) removes it");
   }
 
   // Node -> incident triangles, for the nodes on fractures only.
@@ -308,17 +314,74 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
 
   SplitMesh out = unsplitCopy(mesh);
 
+  // The triangle on the Ω⁺ (plus true) or Ω⁻ side of the fracture edge (v, w), walked from v
+  // to w when forward (else from w to v): Ω⁺ is where (x − x_v)·n < 0, n the edge's normal in
+  // the walking direction (SignConventions.hpp).
+  auto triangleOnSide = [&](Index v, Index w, bool forward, bool plus) -> Index {
+    const Index side = topo.findFacet({v, w});
+    Vector2 dir = mesh.points[w].head<2>() - mesh.points[v].head<2>();
+    if (!forward) dir = -dir;
+    for (int c = 0; c < topo.numCellsOf(side); ++c) {
+      const Index t = topo.cellOf(side, c).cell;
+      for (Index x : mesh.cell(t)) {
+        if (x == v || x == w) continue;
+        const double s =
+            (mesh.points[x].head<2>() - mesh.points[v].head<2>()).dot(normalFromTangent(dir));
+        if ((s < 0) == plus) return t;
+      }
+    }
+    return -1;
+  };
+
+  // A junction node (edges of several fractures) is split once, into one copy per group of
+  // triangles (sector) between consecutive fracture edges; the fractures then take the copies
+  // of the sectors at their edges. The first fracture to reach it decides which sector keeps
+  // the node's number (its Ω⁺ side); the others' copies are appended in group order.
+  struct Sectors {
+    std::vector<std::vector<Index>> groups;
+    std::vector<Index> copy;  ///< per group
+    Index copyOf(Index triangle) const {
+      for (std::size_t k = 0; k < groups.size(); ++k)
+        if (std::find(groups[k].begin(), groups[k].end(), triangle) != groups[k].end())
+          return copy[k];
+      return -1;
+    }
+  };
+  std::map<Index, Sectors> junctionSectors;
+  auto splitJunction = [&](Index v, Index keepTriangle) -> const Sectors& {
+    auto found = junctionSectors.find(v);
+    if (found != junctionSectors.end()) return found->second;
+    Sectors s;
+    for (auto& [root, list] : sidesAround(v, fan[v], topo, fractureOfEdge))
+      s.groups.push_back(list);
+    s.copy.assign(s.groups.size(), -1);
+    for (std::size_t k = 0; k < s.groups.size(); ++k)
+      if (std::find(s.groups[k].begin(), s.groups[k].end(), keepTriangle) != s.groups[k].end())
+        s.copy[k] = v;
+    for (std::size_t k = 0; k < s.groups.size(); ++k) {
+      if (s.copy[k] >= 0) continue;
+      s.copy[k] = static_cast<Index>(out.mesh.points.size());
+      out.mesh.points.push_back(mesh.points[v]);
+      out.origin.push_back(v);
+      for (Index t : s.groups[k])
+        for (Index& x : out.mesh.cell(t))
+          if (x == v) x = s.copy[k];
+    }
+    return junctionSectors.emplace(v, std::move(s)).first->second;
+  };
+
   // 4. Per fracture: order the nodes along the curve, then split each node.
   for (std::size_t f = 0; f < specs.size(); ++f) {
     const FractureSpec& spec = specs[f];
-    // Ends are the nodes with one fracture edge. A curve whose nodes all have two is closed.
+    const int fi = static_cast<int>(f);
+    // Ends are the nodes with one edge of this fracture.
     std::vector<Index> ends;
     std::vector<Index> nodesOfF;
     for (const auto& [a, b] : fracEdges[f])
       for (Index v : {a, b})
         if (std::find(nodesOfF.begin(), nodesOfF.end(), v) == nodesOfF.end()) nodesOfF.push_back(v);
     for (Index v : nodesOfF)
-      if (nodeEdges[v].size() == 1) ends.push_back(v);
+      if (edgesOfAt(v, fi) == 1) ends.push_back(v);
     auto lexLess = [&](Index a, Index b) {
       const Point &p = mesh.points[a], &q = mesh.points[b];
       return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
@@ -333,7 +396,7 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
       g.node.push_back(cur);
       Index next = -1;
       for (const auto& fe : nodeEdges[cur])
-        if (fe.second != prev) next = fe.second;
+        if (fe.first == fi && fe.second != prev) next = fe.second;
       prev = cur;
       cur = next;
     }
@@ -343,34 +406,58 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
                                        ") is not one connected curve; give each curve its own "
                                        "label and list each as a fracture");
     }
-
-    // Tangent at a node: the direction of the chord between its neighbours, i.e. the sum
-    // of the adjacent edge vectors. This is the length-weighted average of the edge
-    // tangents, which is what the lumped (trapezoid) mass of Γ pairs with.
     const std::size_t n = g.node.size();
-    g.tangent.resize(n);
-    g.normal.resize(n);
-    g.arclength.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vector2 a = mesh.points[g.node[i == 0 ? 0 : i - 1]].head<2>();
-      const Vector2 b = mesh.points[g.node[i + 1 == n ? n - 1 : i + 1]].head<2>();
-      g.tangent[i] = (b - a).normalized();
-      const Vector2 normal = normalFromTangent(g.tangent[i]);
-      g.normal[i] = Point(normal.x(), normal.y(), 0.0);
-      g.arclength[i] = i == 0 ? 0.0
-                              : g.arclength[i - 1] + (mesh.points[g.node[i]].head<2>() -
-                                                      mesh.points[g.node[i - 1]].head<2>())
-                                                         .norm();
-    }
 
     // Split each node: union the triangles of its fan across non-fracture sides.
     g.plus.resize(n);
     g.minus.resize(n);
     g.kind.resize(n);
+    // A node joined end to end with another fracture (and nothing else): the tangent there is
+    // the chord to that fracture's neighbour, as if the two were one curve.
+    std::vector<Index> joinedNeighbour(n, -1);
     for (std::size_t i = 0; i < n; ++i) {
       const Index v = g.node[i];
-      const std::map<int, std::vector<Index>> groups = sidesAround(v, fan[v], topo, fractureOfEdge);
+      const std::vector<int> here = fracturesAt(v);
+      if (here.size() > 1) {
+        // Junction: the sectors between the fracture edges at v.
+        const Index w = g.node[i + 1 < n ? i + 1 : i - 1];
+        const bool forward = i + 1 < n;
+        const Index left = triangleOnSide(v, w, forward, true),
+                    right = triangleOnSide(v, w, forward, false);
+        const Sectors& sectors = splitJunction(v, left);
+        const std::size_t branches = nodeEdges[v].size(), m = sectors.groups.size();
+        g.plus[i] = sectors.copyOf(left);
+        g.minus[i] = sectors.copyOf(right);
+        const int own = edgesOfAt(v, fi);
+        std::string problem;
+        if (left < 0 || right < 0 || g.plus[i] < 0 || g.minus[i] < 0 || g.plus[i] == g.minus[i])
+          problem =
+              "cannot tell the two sides of the fracture apart (folded or inverted "
+              "triangles next to it?)";
+        else if (m == branches && branches == 2)
+          g.kind[i] = FractureNodeKind::joined;
+        else if (m == branches)
+          g.kind[i] = own == 2 ? FractureNodeKind::crossing : FractureNodeKind::abutting;
+        else if (m == branches + 1 && own == 1)
+          g.kind[i] = FractureNodeKind::boundary;  // fractures ending on the outer boundary
+        else
+          problem = "the " + std::to_string(branches) +
+                    " fracture edges there cut the triangles "
+                    "around it into " +
+                    std::to_string(m) + " groups (" + std::to_string(branches) +
+                    " expected inside the body, " + std::to_string(branches + 1) +
+                    " on its boundary, where every fracture must end); the mesh is not a "
+                    "manifold here, or a fracture touches the boundary between its ends";
+        if (!problem.empty())
+          throw InputError(file, "fracture '" + spec.name + "' at the junction " +
+                                     formatPoint(mesh.points[v], mesh.dim) + ": " + problem);
+        if (g.kind[i] == FractureNodeKind::joined)
+          for (const auto& fe : nodeEdges[v])
+            if (fe.first != fi) joinedNeighbour[i] = fe.second;
+        continue;
+      }
 
+      const std::map<int, std::vector<Index>> groups = sidesAround(v, fan[v], topo, fractureOfEdge);
       if (groups.size() == 1) {
         if (nodeEdges[v].size() != 1)
           throw InputError(file, "fracture '" + spec.name + "' at " +
@@ -424,6 +511,26 @@ SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& spec
 
       g.plus[i] = v;
       g.minus[i] = appendMinusCopy(out, mesh, v, groups, sideOf);
+    }
+
+    // Tangent at a node: the direction of the chord between its neighbours, i.e. the sum
+    // of the adjacent edge vectors. This is the length-weighted average of the edge
+    // tangents, which is what the lumped (trapezoid) mass of Γ pairs with. At a node joined
+    // to another fracture the missing neighbour is that fracture's.
+    g.tangent.resize(n);
+    g.normal.resize(n);
+    g.arclength.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      Vector2 a = mesh.points[g.node[i == 0 ? 0 : i - 1]].head<2>();
+      Vector2 b = mesh.points[g.node[i + 1 == n ? n - 1 : i + 1]].head<2>();
+      if (joinedNeighbour[i] >= 0) (i == 0 ? a : b) = mesh.points[joinedNeighbour[i]].head<2>();
+      g.tangent[i] = (b - a).normalized();
+      const Vector2 normal = normalFromTangent(g.tangent[i]);
+      g.normal[i] = Point(normal.x(), normal.y(), 0.0);
+      g.arclength[i] = i == 0 ? 0.0
+                              : g.arclength[i - 1] + (mesh.points[g.node[i]].head<2>() -
+                                                      mesh.points[g.node[i - 1]].head<2>())
+                                                         .norm();
     }
     out.fractures.push_back(std::move(g));
   }
@@ -535,8 +642,9 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
         if (fractureOfNode[v] >= 0 && fractureOfNode[v] != static_cast<int>(f))
           throw InputError(file, "fractures '" + specs[fractureOfNode[v]].name + "' and '" +
                                      specs[f].name + "' meet at " + at(v) +
-                                     ": junctions of fractures are not supported (mesh them so "
-                                     "that they do not meet)");
+                                     ": fault surfaces that meet (junctions) are not supported in "
+                                     "3D (2D meshes support them); mesh them so that they do "
+                                     "not meet");
         fractureOfNode[v] = static_cast<int>(f);
       }
 

@@ -28,14 +28,26 @@ enum class FractureNodeKind {
   interior,  ///< inside the fracture (2D: between two fracture edges): duplicated
   boundary,  ///< on the fracture's edge (2D: an end) where it meets the outer boundary:
              ///< duplicated
-  tip        ///< on the fracture's edge inside the body (2D: an end; 3D: the tip line):
+  tip,       ///< on the fracture's edge inside the body (2D: an end; 3D: the tip line):
              ///< single (plus == minus)
+  // 2D junctions (docs/method.md §4, "Junctions"): a node where several fractures meet has
+  // one copy per sector between consecutive fracture edges; plus and minus are the copies of
+  // the sectors at the fracture's edge towards its next node (its previous one at its last
+  // node).
+  crossing,  ///< the fracture passes through a junction: its jump there is free, and the
+             ///< sectors on each side of it move with its Ω⁺ (Ω⁻) copy
+  abutting,  ///< the fracture ends on a junction where three or more fracture edges meet:
+             ///< its jump there is held at zero (the fractures that pass through the node
+             ///< carry the jumps; with none, every jump there is held)
+  joined     ///< the fracture ends where exactly one other fracture ends, inside the body:
+             ///< the two act as one curve there (one jump, the first-listed fracture's law)
 };
 const char* toString(FractureNodeKind kind);
 
 /// One fracture of the split mesh; every per-node array has one entry per fracture node. Node
 /// order: 2D, along the curve (arclength order, SignConventions.hpp); 3D, by ascending node
-/// number of the unsplit mesh. The Ω⁺ copy keeps the unsplit node number (plus == node).
+/// number of the unsplit mesh. The Ω⁺ copy keeps the unsplit node number (plus == node), except
+/// at 2D junctions, where one sector keeps it (FractureNodeKind).
 struct FractureGeometry {
   std::string name;
   int label = 0;
@@ -100,10 +112,15 @@ struct SplitMesh {
 /// (and the FractureSpec's location where it helps):
 /// * both dimensions: a fracture with no facets; a cell whose vertices all lie on one
 ///   fracture; a fracture facet that is not a facet of two cells (already split, or on the
-///   outer boundary); fractures that meet (junctions are not supported);
-/// * 2D: branching edges; a fracture made of several disjoint curves or of a closed curve;
-/// * 3D: a non-manifold surface (an edge of more than two of its triangles); a non-orientable
-///   one; a closed one; one made of several pieces (not joined through edges).
+///   outer boundary);
+/// * 2D: a fracture with more than two of its own edges at a node (branches need labels of
+///   their own); a fracture made of several disjoint curves or of a closed curve; a junction
+///   whose edges do not cut the triangles around it into one sector per edge (inside the
+///   body) or one more (on its boundary, where every fracture must end there). Fractures
+///   that meet are split at the junction (FractureNodeKind crossing, abutting, joined);
+/// * 3D: fault surfaces that meet (junctions are 2D only); a non-manifold surface (an edge of
+///   more than two of its triangles); a non-orientable one; a closed one; one made of several
+///   pieces (not joined through edges).
 SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& fractures);
 
 }  // namespace friction

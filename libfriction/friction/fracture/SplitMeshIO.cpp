@@ -347,10 +347,15 @@ SplitMesh readSplitMesh(const std::string& path) {
         g.kind.push_back(FractureNodeKind::boundary);
       else if (k == "tip")
         g.kind.push_back(FractureNodeKind::tip);
+      else if (k == "crossing" && !is3D)
+        g.kind.push_back(FractureNodeKind::crossing);
+      else if (k == "abutting" && !is3D)
+        g.kind.push_back(FractureNodeKind::abutting);
+      else if (k == "joined" && !is3D)
+        g.kind.push_back(FractureNodeKind::joined);
       else
-        f.fail("kind", "key 'kind': '" + k +
-                           "' is not a node kind (expected interior, "
-                           "boundary or tip)");
+        f.fail("kind", "key 'kind': '" + k + "' is not a node kind (expected interior, boundary" +
+                           (is3D ? " or tip" : ", tip, crossing, abutting or joined") + ")");
     }
     const std::size_t n = g.node.size();
     if (is3D) {
@@ -384,7 +389,9 @@ SplitMesh readSplitMesh(const std::string& path) {
         f.fail("arclength", "fracture node " + std::to_string(i) +
                                 ": 'arclength' must start at 0 and grow along the fracture" +
                                 std::string(resplit));
-      if (i > 0 && (!isSide(g.plus[i - 1], g.plus[i]) || !isSide(g.minus[i - 1], g.minus[i])))
+      // At a crossing the copies are those of the sectors towards the next node.
+      if (i > 0 && g.kind[i] != FractureNodeKind::crossing &&
+          (!isSide(g.plus[i - 1], g.plus[i]) || !isSide(g.minus[i - 1], g.minus[i])))
         f.fail("plus", "fracture nodes " + std::to_string(i - 1) + " and " + std::to_string(i) +
                            ": their 'plus' and 'minus' copies must be joined by triangle sides "
                            "(consecutive nodes along the fracture)" +
