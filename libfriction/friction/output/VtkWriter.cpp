@@ -77,6 +77,14 @@ const char* const kHeader = "<?xml version=\"1.0\"?>\n";
 const char* const kFileAttributes =
     " version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
 
+/// The state coding for the file's comment: the junction code only where a row has it (a
+/// file without junctions reads as it always has).
+std::string stateLegend(const std::vector<FractureRow>& rows) {
+  const bool junction = std::any_of(rows.begin(), rows.end(),
+                                    [](const FractureRow& r) { return r.state == "junction"; });
+  return std::string("0 stick, 1 slip, 2 open, 3 tip") + (junction ? ", 4 junction" : "");
+}
+
 }  // namespace
 
 int vtkStateCode(const std::string& state) {
@@ -84,8 +92,9 @@ int vtkStateCode(const std::string& state) {
   if (state == "slip") return 1;
   if (state == "open") return 2;
   if (state == "tip") return 3;
+  if (state == "junction") return 4;
   throw std::invalid_argument("vtkStateCode: unknown fracture-node state '" + state +
-                              "' (expected stick, slip, open or tip)");
+                              "' (expected stick, slip, open, tip or junction)");
 }
 
 void writeVtu(const std::string& path, const LagrangeSpace& space,
@@ -258,9 +267,8 @@ void writeFracturePolyline(const std::string& path, const std::vector<FractureRo
   const std::size_t n = rows.size();
   std::ostringstream s;
   s.precision(precision);
-  s << kHeader
-    << "<!-- fracture table as a polyline; point array state: 0 stick, 1 slip, 2 open, 3 tip (no "
-       "traction: nan) -->\n"
+  s << kHeader << "<!-- fracture table as a polyline; point array state: " << stateLegend(rows)
+    << " (no traction: nan) -->\n"
     << "<VTKFile type=\"PolyData\"" << kFileAttributes << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\""
@@ -327,7 +335,8 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
   s.precision(precision);
   s << kHeader
     << "<!-- fault surface (P2: four triangles per fault triangle, at its edge midpoints); point "
-       "array state: 0 stick, 1 slip, 2 open, 3 tip (no traction: nan) -->\n"
+       "array state: "
+    << stateLegend(rows) << " (no traction: nan) -->\n"
     << "<VTKFile type=\"PolyData\"" << kFileAttributes << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n

@@ -44,7 +44,8 @@ constexpr int kVtkTetra = 10;
 constexpr int kVtkQuadraticTetra = 24;
 
 /// Integer code of a fracture-node state in the .vtp "state" array: 0 stick, 1 slip,
-/// 2 open, 3 tip. Throws std::invalid_argument for any other string (the solver writes only these).
+/// 2 open, 3 tip, 4 junction (a branch's end held at a junction). Throws std::invalid_argument for
+/// any other string (the solver writes only these).
 int vtkStateCode(const std::string& state);
 
 /// Write the displacement and stress of `u` on the mesh of `space` (2D or 3D) as a VTK XML
@@ -86,8 +87,9 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 ///    sigmaN [Pa], traction [Pa] (3, the tangential traction τ in x y z), tauMagnitude [Pa],
 ///    ST [-], residual [Pa] (|D|).
 /// Both: Float64, NaN written as "nan" at tips, which have no traction, and state (Int32:
-/// 0 stick, 1 slip, 2 open, 3 tip; see vtkStateCode). The file also says the state coding in
-/// an XML comment. No rows: an empty data set (no points, no cells). The folder must exist.
+/// 0 stick, 1 slip, 2 open, 3 tip, 4 junction; see vtkStateCode). The file also says the state
+/// coding in an XML comment. No rows: an empty data set (no points, no cells). The folder must
+/// exist.
 void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision,
                       const std::vector<std::array<Index, 6>>& triangles = {},
                       int nodesPerTriangle = 3);

@@ -3,8 +3,11 @@
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <set>
 
 #include "TestMeshes.hpp"
 #include "friction/fracture/SplitMesh.hpp"
@@ -198,16 +201,8 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
     addHorizontalFracture(m, n, 4, 0, n, 5, "fracture");
     m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, 4, 4), gridNode(n, 4, 5)});
     m.facetLabel.push_back(5);
-    CHECK_THAT(
-        splitError(m, {{"fracture", 5, {}}}),
-        Contains("branches at (0.5 0.5)") && Contains("junctions of fractures are not supported"));
-  }
-  SECTION("two fractures that meet") {
-    Mesh m = gridMesh(n);
-    addHorizontalFracture(m, n, 4, 0, 4, 5, "a");
-    addHorizontalFracture(m, n, 4, 4, n, 6, "b");
-    CHECK_THAT(splitError(m, {{"a", 5, {}}, {"b", 6, {}}}),
-               Contains("meet at (0.5 0.5)") && Contains("junctions"));
+    CHECK_THAT(splitError(m, {{"fracture", 5, {}}}),
+               Contains("branches at (0.5 0.5)") && Contains("give each branch its own label"));
   }
   SECTION("a triangle with all three vertices on the fracture") {
     Mesh m = gridMesh(n);
@@ -250,6 +245,159 @@ TEST_CASE("splitting refuses what it cannot split, saying why", "[split][errors]
       s.mesh.facetLabel.push_back(5);
     }
     CHECK_THAT(splitError(s.mesh, {{"fracture", 5, {}}}), Contains("already split"));
+  }
+}
+
+namespace {
+
+/// Vertical fracture along grid column i from row j0 to j1 (edges reversed, as above).
+void addVerticalFracture(Mesh& m, int n, int i, int j0, int j1, int label,
+                         const std::string& name) {
+  for (int j = j0; j < j1; ++j) {
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, i, j + 1), gridNode(n, i, j)});
+    m.facetLabel.push_back(label);
+  }
+  m.labelNames[label] = name;
+}
+
+/// The kind of fracture f at unsplit node v (which must be one of its nodes).
+FractureNodeKind kindAt(const SplitMesh& s, std::size_t f, Index v) {
+  const FractureGeometry& g = s.fractures.at(f);
+  const auto it = std::find(g.node.begin(), g.node.end(), v);
+  REQUIRE(it != g.node.end());
+  return g.kind[it - g.node.begin()];
+}
+
+/// The distinct split-mesh copies of unsplit node v that the cells use.
+std::set<Index> copiesOf(const SplitMesh& s, Index v) {
+  std::set<Index> copies;
+  for (Index t = 0; t < s.mesh.numCells(); ++t)
+    for (Index w : s.mesh.cell(t))
+      if (s.origin[w] == v) copies.insert(w);
+  return copies;
+}
+
+/// Around junction node v: every cell uses one copy, and two cells that share an edge from v
+/// use the same copy unless that edge is a fracture edge (a sector is connected, and the
+/// fractures separate the sectors).
+void checkSectors(const SplitMesh& s, const Mesh& unsplit, Index v) {
+  std::map<std::pair<Index, Index>, std::vector<Index>> copyAcross;  // edge (v, w) -> copies
+  for (Index t = 0; t < unsplit.numCells(); ++t) {
+    const auto tri = unsplit.cell(t);
+    const auto split = s.mesh.cell(t);
+    for (int k = 0; k < 3; ++k)
+      if (tri[k] == v)
+        for (int l = 1; l < 3; ++l) copyAcross[{v, tri[(k + l) % 3]}].push_back(split[k]);
+  }
+  std::set<std::pair<Index, Index>> fractureEdges;
+  for (std::size_t e = 0; e < unsplit.facetLabel.size(); ++e) {
+    const Index a = unsplit.facetVertices[2 * e], b = unsplit.facetVertices[2 * e + 1];
+    if (a == v) fractureEdges.insert({v, b});
+    if (b == v) fractureEdges.insert({v, a});
+  }
+  int interiorEdges = 0, cutEdges = 0;
+  for (const auto& [edge, copies] : copyAcross) {
+    if (copies.size() != 2) continue;  // a boundary edge
+    if (fractureEdges.count(edge)) {
+      CHECK(copies[0] != copies[1]);
+      ++cutEdges;
+    } else {
+      CHECK(copies[0] == copies[1]);
+      ++interiorEdges;
+    }
+  }
+  CHECK(cutEdges > 0);
+  CHECK(interiorEdges > 0);
+}
+
+}  // namespace
+
+TEST_CASE("junctions: one copy per sector, and the kind of each fracture there", "[split]") {
+  const int n = 8;
+  const Index centre = gridNode(n, 4, 4);
+  SECTION("T: a fracture that ends on one passing through") {
+    Mesh m = gridMesh(n);
+    addHorizontalFracture(m, n, 4, 2, 6, 5, "main");
+    addVerticalFracture(m, n, 4, 4, 7, 6, "branch");
+    const SplitMesh s = splitFractures(m, {{"main", 5, {}}, {"branch", 6, {}}});
+    CHECK(copiesOf(s, centre).size() == 3);
+    CHECK(kindAt(s, 0, centre) == FractureNodeKind::crossing);
+    CHECK(kindAt(s, 1, centre) == FractureNodeKind::abutting);
+    checkSectors(s, m, centre);
+    CHECK(connectedComponents(s.mesh) == 1);  // the branch ends inside: its tip holds
+  }
+  SECTION("X: two fractures that cross") {
+    Mesh m = gridMesh(n);
+    addHorizontalFracture(m, n, 4, 2, 6, 5, "a");
+    addVerticalFracture(m, n, 4, 1, 7, 6, "b");
+    const SplitMesh s = splitFractures(m, {{"a", 5, {}}, {"b", 6, {}}});
+    CHECK(copiesOf(s, centre).size() == 4);
+    CHECK(kindAt(s, 0, centre) == FractureNodeKind::crossing);
+    CHECK(kindAt(s, 1, centre) == FractureNodeKind::crossing);
+    checkSectors(s, m, centre);
+  }
+  SECTION("two fractures that end at one node inside the body are joined") {
+    Mesh m = gridMesh(n);
+    addHorizontalFracture(m, n, 4, 2, 4, 5, "a");
+    addHorizontalFracture(m, n, 4, 4, 6, 6, "b");
+    const SplitMesh s = splitFractures(m, {{"a", 5, {}}, {"b", 6, {}}});
+    CHECK(copiesOf(s, centre).size() == 2);
+    CHECK(kindAt(s, 0, centre) == FractureNodeKind::joined);
+    CHECK(kindAt(s, 1, centre) == FractureNodeKind::joined);
+    checkSectors(s, m, centre);
+  }
+  SECTION("three fractures that end at one node") {
+    Mesh m = gridMesh(n);
+    addHorizontalFracture(m, n, 4, 2, 4, 5, "a");
+    addHorizontalFracture(m, n, 4, 4, 6, 6, "b");
+    addVerticalFracture(m, n, 4, 4, 7, 7, "c");
+    const SplitMesh s = splitFractures(m, {{"a", 5, {}}, {"b", 6, {}}, {"c", 7, {}}});
+    CHECK(copiesOf(s, centre).size() == 3);
+    for (std::size_t f = 0; f < 3; ++f) CHECK(kindAt(s, f, centre) == FractureNodeKind::abutting);
+    checkSectors(s, m, centre);
+  }
+  SECTION("two fractures that end on the outer boundary at one node") {
+    Mesh m = gridMesh(n);
+    const Index corner = gridNode(n, 4, 0);  // on the bottom side
+    addVerticalFracture(m, n, 4, 0, 3, 5, "a");
+    // The second one runs along the grid's (0,0)-(1,1) diagonals from the same node.
+    bool diagonal = false;
+    for (Index t = 0; t < m.numCells(); ++t) {
+      const auto c = m.cell(t);
+      const bool hasA = std::find(c.begin(), c.end(), corner) != c.end();
+      const bool hasB = std::find(c.begin(), c.end(), gridNode(n, 5, 1)) != c.end();
+      diagonal = diagonal || (hasA && hasB);
+    }
+    REQUIRE(diagonal);
+    m.facetVertices.insert(m.facetVertices.end(), {corner, gridNode(n, 5, 1)});
+    m.facetVertices.insert(m.facetVertices.end(), {gridNode(n, 5, 1), gridNode(n, 6, 2)});
+    m.facetLabel.insert(m.facetLabel.end(), {6, 6});
+    m.labelNames[6] = "b";
+    const SplitMesh s = splitFractures(m, {{"a", 5, {}}, {"b", 6, {}}});
+    CHECK(copiesOf(s, corner).size() == 3);
+    CHECK(kindAt(s, 0, corner) == FractureNodeKind::boundary);
+    CHECK(kindAt(s, 1, corner) == FractureNodeKind::boundary);
+  }
+  SECTION("a fracture passing through a node where another passes through and a third ends") {
+    Mesh m = gridMesh(n);
+    addHorizontalFracture(m, n, 4, 2, 6, 5, "a");
+    addVerticalFracture(m, n, 4, 1, 7, 6, "b");
+    m.facetVertices.insert(m.facetVertices.end(), {centre, gridNode(n, 5, 5)});
+    m.facetLabel.push_back(7);
+    m.labelNames[7] = "c";
+    bool diagonal = false;
+    for (Index t = 0; t < m.numCells(); ++t) {
+      const auto c = m.cell(t);
+      diagonal = diagonal || (std::find(c.begin(), c.end(), centre) != c.end() &&
+                              std::find(c.begin(), c.end(), gridNode(n, 5, 5)) != c.end());
+    }
+    REQUIRE(diagonal);
+    const SplitMesh s = splitFractures(m, {{"a", 5, {}}, {"b", 6, {}}, {"c", 7, {}}});
+    CHECK(copiesOf(s, centre).size() == 5);
+    CHECK(kindAt(s, 0, centre) == FractureNodeKind::crossing);
+    CHECK(kindAt(s, 1, centre) == FractureNodeKind::crossing);
+    CHECK(kindAt(s, 2, centre) == FractureNodeKind::abutting);
+    checkSectors(s, m, centre);
   }
 }
 
