@@ -1,0 +1,383 @@
+// Fracture networks in 2D: junctions (docs/method.md §4 "Junctions"), on the tests-only case
+// tests/regression/cases/junctions (a square [-5, 5]^2 held on its outer boundary, a uniform
+// in-situ stress sigma_xx = sigma_yy = -1e7 Pa, sigma_xy = 5e6 Pa, Coulomb mu_f 0.3; the
+// fractures slip under the in-situ shear). gmsh makes each variant from junctions.geo; the
+// symmetric X is a structured mesh written here, and the mirrored and renumbered meshes are
+// a gmsh mesh read back and written as FreeFEM .msh with the transformation applied.
+//
+// The exact reductions compare two runs on one mesh, so they hold to round-off (the
+// tolerances below are relative to the largest value compared: 1e-9, far above the ~1e-13
+// that double precision and the solver's 1e-12 tolerance leave, far below any modelling
+// difference).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#include "CaseRunner.hpp"
+#include "friction/mesh/Mesh.hpp"
+#include "friction/mesh/MeshReader.hpp"
+
+using namespace friction::regression;
+
+namespace {
+
+const std::map<std::string, int> kLabels = {{"outer", 1}, {"main", 5},   {"left", 5},
+                                            {"right", 6}, {"branch", 7}, {"branch2", 8}};
+
+/// A copy of tests/regression/cases/junctions with the given fractures (Coulomb, their
+/// friction coefficients) and mesh (made by `makeMesh` into constant/mesh/junctions.msh).
+class JunctionCase {
+ public:
+  JunctionCase(const std::string& label,
+               const std::vector<std::pair<std::string, double>>& fractures)
+      : c_("tests:junctions", "junctions/" + label) {
+    for (const auto& [name, mu] : fractures) names_ += (names_.empty() ? "" : " ") + name;
+    writeMeshDict("");
+    std::ostringstream fp;
+    fp << "FoamFile { version 2.0; format ascii; class dictionary; object fractureProperties; }\n";
+    for (const auto& [name, mu] : fractures)
+      fp << name << " { law coulomb; frictionCoefficient " << std::setprecision(17) << mu
+         << "; }\n";
+    writeText(c_.dir() / "constant" / "fractureProperties", fp.str());
+  }
+
+  const fs::path& dir() const { return c_.dir(); }
+  fs::path meshFile() const { return c_.dir() / "constant" / "mesh" / "junctions.msh"; }
+
+  /// gmsh on junctions.geo with `-setnumber` options ("branch 1 theta 120").
+  void gmsh(const std::string& options) {
+    std::istringstream in(options);
+    std::string args;
+    for (std::string name, value; in >> name >> value;) args += " -setnumber " + name + " " + value;
+    const fs::path geo = c_.dir() / "constant" / "mesh" / "junctions.geo";
+    const std::string cmd =
+        "gmsh -2 -format msh41" + args + " '" + geo.string() + "' -o '" + meshFile().string() + "'";
+    INFO(cmd << "\n" << readText(c_.dir() / "log.gmsh"));
+    REQUIRE(run(cmd, c_.dir() / "log.gmsh") == 0);
+    fs::remove(c_.dir() / "log.gmsh");
+  }
+
+  /// Replace the mesh by a FreeFEM .msh of `m` (which names its patches in meshDict).
+  void freefem(const friction::Mesh& m);
+
+  void shear(double sxy) {
+    std::ostringstream s;
+    s << "stress      (-1e7 -1e7 " << sxy << ");";
+    c_.edit("constant/effects", "stress +\\(-1e7 -1e7 5e6\\);", s.str());
+  }
+  void order(int p) {
+    c_.edit("system/frictionSolution", "elementOrder +1;",
+            "elementOrder " + std::to_string(p) + ";");
+  }
+
+  void solve() {
+    const int rc = c_.solve();
+    INFO(c_.log());
+    REQUIRE(rc == 0);
+    REQUIRE(c_.log().find("converged") != std::string::npos);
+  }
+  Table table(const std::string& fracture) const { return c_.namedTable("1", fracture); }
+  std::string splitLog() const { return readText(c_.dir() / "log.splitFractureNodes"); }
+  std::string log() const { return c_.log(); }
+
+ private:
+  /// system/meshDict: the mesh, the patches (a FreeFEM mesh has no names), the fractures.
+  void writeMeshDict(const std::string& patches) {
+    writeText(c_.dir() / "system" / "meshDict",
+              "FoamFile { version 2.0; format ascii; class dictionary; object meshDict; }\n"
+              "mesh \"constant/mesh/junctions.msh\";\n" +
+                  patches + "fractures (" + names_ + ");\n");
+  }
+
+  Case c_;
+  std::string names_;
+};
+
+/// FreeFEM .msh: "nv nt ne", vertices "x y label", triangles "a b c region" (1-based,
+/// counter-clockwise), edges "a b label".
+void JunctionCase::freefem(const friction::Mesh& m) {
+  std::ostringstream s;
+  s << std::setprecision(17);
+  s << m.numPoints() << " " << m.numCells() << " " << m.facetLabel.size() << "\n";
+  for (const auto& p : m.points) s << p.x() << " " << p.y() << " 0\n";
+  for (friction::Index t = 0; t < m.numCells(); ++t) {
+    const auto c = m.cell(t);
+    s << c[0] + 1 << " " << c[1] + 1 << " " << c[2] + 1 << " " << m.cellRegion[t] << "\n";
+  }
+  for (std::size_t e = 0; e < m.facetLabel.size(); ++e)
+    s << m.facetVertices[2 * e] + 1 << " " << m.facetVertices[2 * e + 1] + 1 << " "
+      << m.facetLabel[e] << "\n";
+  fs::remove(meshFile());
+  writeText(c_.dir() / "constant" / "mesh" / "junctions.msh", s.str());
+  std::string patches = "patches {";
+  for (const auto& [label, name] : m.labelNames)
+    patches += " " + name + " " + std::to_string(label) + ";";
+  writeMeshDict(patches + " }\n");
+}
+
+/// The mesh with every point mapped by `f` (cells turned counter-clockwise again if `f`
+/// reverses orientation) and, if `renumber`, points, cells and facets in reverse order.
+friction::Mesh transformed(const friction::Mesh& m,
+                           const std::function<friction::Point(const friction::Point&)>& f,
+                           bool renumber) {
+  friction::Mesh out = m;
+  const friction::Index n = m.numPoints();
+  auto id = [&](friction::Index v) { return renumber ? n - 1 - v : v; };
+  for (friction::Index v = 0; v < n; ++v) out.points[id(v)] = f(m.points[v]);
+  out.cellVertices.clear();
+  out.cellRegion.clear();
+  for (friction::Index k = 0; k < m.numCells(); ++k) {
+    const friction::Index t = renumber ? m.numCells() - 1 - k : k;
+    const auto c = m.cell(t);
+    std::array<friction::Index, 3> v{id(c[0]), id(c[1]), id(c[2])};
+    const auto& a = out.points[v[0]];
+    const auto& b = out.points[v[1]];
+    const auto& d = out.points[v[2]];
+    if ((b.x() - a.x()) * (d.y() - a.y()) - (b.y() - a.y()) * (d.x() - a.x()) < 0)
+      std::swap(v[1], v[2]);
+    out.cellVertices.insert(out.cellVertices.end(), v.begin(), v.end());
+    out.cellRegion.push_back(m.cellRegion[t]);
+  }
+  out.facetVertices.clear();
+  out.facetLabel.clear();
+  for (std::size_t k = 0; k < m.facetLabel.size(); ++k) {
+    const std::size_t e = renumber ? m.facetLabel.size() - 1 - k : k;
+    const friction::Index a = id(m.facetVertices[2 * e]), b = id(m.facetVertices[2 * e + 1]);
+    out.facetVertices.insert(out.facetVertices.end(), {renumber ? b : a, renumber ? a : b});
+    out.facetLabel.push_back(m.facetLabel[e]);
+  }
+  return out;
+}
+
+/// A structured mesh of [-5, 5]^2 symmetric about y = x: the same coordinates in x and y
+/// (spacing h within 1.2 of the centre, growing by 1.3 outside), every cell cut along its
+/// (0,0)-(1,1) diagonal (which the reflection maps to a diagonal of the same kind). An X of
+/// fractures along the axes: "main" y = 0 and "branch" x = 0, both for |r| <= 1.
+friction::Mesh symmetricX(int perUnit) {
+  const double h = 1.0 / perUnit;
+  std::vector<double> c{0};
+  for (int k = 1; k * h <= 1.2 + 1e-12; ++k) c.push_back(k * h);
+  for (double step = h * 1.3; c.back() < 5 - 1e-12; step *= 1.3)
+    c.push_back(std::min(5.0, c.back() + step));
+  if (5 - c[c.size() - 2] < 0.3 * (c[c.size() - 2] - c[c.size() - 3])) c.erase(c.end() - 2);
+  std::vector<double> x;
+  for (auto it = c.rbegin(); it + 1 != c.rend(); ++it) x.push_back(-*it);
+  x.insert(x.end(), c.begin(), c.end());
+  const int n = static_cast<int>(x.size());
+  friction::Mesh m;
+  m.source = "symmetricX";
+  m.format = "FreeFEM .msh";
+  auto node = [n](int i, int j) { return static_cast<friction::Index>(j * n + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) m.points.emplace_back(x[i], x[j], 0);
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      m.cellVertices.insert(m.cellVertices.end(), {node(i, j), node(i + 1, j), node(i + 1, j + 1)});
+      m.cellVertices.insert(m.cellVertices.end(), {node(i, j), node(i + 1, j + 1), node(i, j + 1)});
+      m.cellRegion.insert(m.cellRegion.end(), {1, 1});
+    }
+  auto edge = [&m](friction::Index a, friction::Index b, int label) {
+    m.facetVertices.insert(m.facetVertices.end(), {a, b});
+    m.facetLabel.push_back(label);
+  };
+  for (int k = 0; k + 1 < n; ++k) {
+    edge(node(k, 0), node(k + 1, 0), 1);
+    edge(node(n - 1, k), node(n - 1, k + 1), 1);
+    edge(node(k + 1, n - 1), node(k, n - 1), 1);
+    edge(node(0, k + 1), node(0, k), 1);
+  }
+  const int mid = n / 2;
+  REQUIRE(x[mid] == 0.0);
+  for (int k = 0; k + 1 < n; ++k)
+    if (std::abs(x[k]) <= 1 + 1e-12 && std::abs(x[k + 1]) <= 1 + 1e-12) {
+      edge(node(k, mid), node(k + 1, mid), 5);
+      edge(node(mid, k), node(mid, k + 1), 7);
+    }
+  m.labelNames = {{1, "outer"}, {5, "main"}, {7, "branch"}};
+  return m;
+}
+
+/// Rows of a table by their point (rounded to 1e-9 m), for comparisons across meshes.
+std::map<std::pair<long long, long long>, std::size_t> byPoint(const Table& t) {
+  std::map<std::pair<long long, long long>, std::size_t> rows;
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    rows[{std::llround(t.at(r, "x") * 1e9), std::llround(t.at(r, "y") * 1e9)}] = r;
+  return rows;
+}
+
+double maxAbs(const Table& t, const std::string& column) {
+  double m = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (std::isfinite(t.at(r, column))) m = std::max(m, std::abs(t.at(r, column)));
+  return m;
+}
+
+/// The row of table t at point (x, y) (which must exist).
+std::size_t rowAt(const Table& t, double x, double y) {
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (std::hypot(t.at(r, "x") - x, t.at(r, "y") - y) < 1e-9) return r;
+  FAIL("no row at (" << x << ", " << y << ")");
+  return 0;
+}
+
+/// L2 norm of the slip along a table (trapezoidal rule over s).
+double slipNorm(const Table& t) {
+  double sum = 0;
+  for (std::size_t r = 0; r + 1 < t.rows.size(); ++r) {
+    const double ds = t.at(r + 1, "s") - t.at(r, "s");
+    sum += ds * (std::pow(t.at(r, "slip"), 2) + std::pow(t.at(r + 1, "slip"), 2)) / 2;
+  }
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
+TEST_CASE("junctions: a T whose branch is bonded equals the fracture alone", "[junction]") {
+  // One mesh (the branch's edges are in it either way); the branch as a fracture with a huge
+  // friction coefficient sticks everywhere, so its jump stays zero and nothing changes.
+  JunctionCase alone("bonded-alone", {{"main", 0.3}});
+  alone.gmsh("branch 1 theta 120");
+  alone.solve();
+  JunctionCase bonded("bonded-T", {{"main", 0.3}, {"branch", 1e6}});
+  bonded.gmsh("branch 1 theta 120");
+  bonded.solve();
+  CHECK(bonded.splitLog().find("'main' passes through, 'branch' ends (held)") != std::string::npos);
+  const Table a = alone.table("main"), b = bonded.table("main");
+  REQUIRE(a.rows.size() == b.rows.size());
+  const double slipScale = maxAbs(a, "slip"), stressScale = maxAbs(a, "sigmaN");
+  REQUIRE(slipScale > 1e-5);  // the main fracture slips
+  for (std::size_t r = 0; r < a.rows.size(); ++r) {
+    INFO("row " << r);
+    CHECK(b.at(r, "x") == a.at(r, "x"));
+    CHECK(b.at(r, "y") == a.at(r, "y"));
+    CHECK(std::abs(b.at(r, "slip") - a.at(r, "slip")) <= 1e-9 * slipScale);
+    if (std::isfinite(a.at(r, "sigmaN"))) {
+      CHECK(std::abs(b.at(r, "sigmaN") - a.at(r, "sigmaN")) <= 1e-9 * stressScale);
+      CHECK(std::abs(b.at(r, "tau") - a.at(r, "tau")) <= 1e-9 * stressScale);
+    }
+    CHECK(b.state[r] == a.state[r]);
+  }
+  const Table branch = bonded.table("branch");
+  CHECK(maxAbs(branch, "slip") <= 1e-9 * slipScale);
+  const std::size_t junction = rowAt(branch, 0, 0);
+  CHECK(branch.state[junction] == "junction");
+  int stick = 0;
+  for (std::size_t r = 0; r < branch.rows.size(); ++r)
+    if (r != junction && branch.state[r] != "tip") CHECK(branch.state[r] == (++stick, "stick"));
+  CHECK(stick >= 5);
+}
+
+TEST_CASE("junctions: a fracture cut in two collinear fractures equals the uncut one",
+          "[junction]") {
+  // The same mesh: "main" from (-1, 0) to (1, 0), or "left" and "right" meeting at (0, 0),
+  // which is one control node (joined) owned by "left"; "right" has no row there.
+  JunctionCase whole("cut-whole", {{"main", 0.3}});
+  whole.gmsh("branch 0");
+  whole.solve();
+  JunctionCase cut("cut-two", {{"left", 0.3}, {"right", 0.3}});
+  cut.gmsh("branch 0 cut 1");
+  cut.solve();
+  CHECK(cut.splitLog().find("'left' joined, 'right' joined") != std::string::npos);
+  const Table w = whole.table("main"), l = cut.table("left"), r = cut.table("right");
+  REQUIRE(l.rows.size() + r.rows.size() == w.rows.size());
+  const double slipScale = maxAbs(w, "slip"), stressScale = maxAbs(w, "sigmaN");
+  REQUIRE(slipScale > 1e-5);
+  for (std::size_t k = 0; k < w.rows.size(); ++k) {
+    const bool inLeft = k < l.rows.size();
+    const Table& t = inLeft ? l : r;
+    const std::size_t row = inLeft ? k : k - l.rows.size();
+    INFO("row " << k << " (" << (inLeft ? "left" : "right") << " " << row << ")");
+    CHECK(t.at(row, "x") == w.at(k, "x"));
+    CHECK(t.at(row, "y") == w.at(k, "y"));
+    CHECK(std::abs(t.at(row, "slip") - w.at(k, "slip")) <= 1e-9 * slipScale);
+    if (std::isfinite(w.at(k, "sigmaN"))) {
+      CHECK(std::abs(t.at(row, "sigmaN") - w.at(k, "sigmaN")) <= 1e-9 * stressScale);
+      CHECK(std::abs(t.at(row, "tau") - w.at(k, "tau")) <= 1e-9 * stressScale);
+    }
+    CHECK(t.state[row] == w.state[k]);
+  }
+  // The joined node is inside: it slips like its neighbours.
+  CHECK(l.state.back() == "slip");
+}
+
+TEST_CASE("junctions: a symmetric X under a symmetric load slips symmetrically", "[junction]") {
+  // The reflection (x, y) -> (y, x) maps the mesh, the load (sigma_xx = sigma_yy; sigma_xy
+  // unchanged) and the held boundary onto themselves, and "main" (y = 0) onto "branch"
+  // (x = 0). Both tangents point along growing coordinates; the reflection reverses
+  // orientation, so a normal obtained by turning the tangent one way maps to the opposite
+  // of the other fracture's normal: the slip changes sign, sigma_n and |tau| do not.
+  JunctionCase x("symmetric-X", {{"main", 0.3}, {"branch", 0.3}});
+  x.freefem(symmetricX(10));
+  x.solve();
+  CHECK(x.splitLog().find("'main' passes through, 'branch' passes through") != std::string::npos);
+  const Table m = x.table("main"), b = x.table("branch");
+  REQUIRE(m.at(m.rows.size() - 1, "x") > m.at(0, "x"));
+  REQUIRE(b.at(b.rows.size() - 1, "y") > b.at(0, "y"));
+  REQUIRE(m.rows.size() == b.rows.size());
+  const double slipScale = maxAbs(m, "slip"), stressScale = maxAbs(m, "sigmaN");
+  REQUIRE(slipScale > 1e-5);
+  int compared = 0;
+  for (std::size_t r = 0; r < m.rows.size(); ++r) {
+    const std::size_t k = rowAt(b, m.at(r, "y"), m.at(r, "x"));
+    INFO("main row " << r << " at x = " << m.at(r, "x"));
+    CHECK(std::abs(b.at(k, "slip") + m.at(r, "slip")) <= 1e-9 * slipScale);
+    CHECK(b.state[k] == m.state[r]);
+    if (std::isfinite(m.at(r, "sigmaN"))) {
+      CHECK(std::abs(b.at(k, "sigmaN") - m.at(r, "sigmaN")) <= 1e-9 * stressScale);
+      CHECK(std::abs(std::abs(b.at(k, "tau")) - std::abs(m.at(r, "tau"))) <= 1e-9 * stressScale);
+      ++compared;
+    }
+  }
+  CHECK(compared > 10);
+  // The junction is a crossing: both fractures slip through it.
+  CHECK(m.state[rowAt(m, 0, 0)] == "slip");
+}
+
+TEST_CASE("junctions: renumbering and mirroring the mesh change nothing", "[junction]") {
+  // A T at 120 degrees (no symmetry of its own) from gmsh, read back and written as FreeFEM
+  // .msh: as is, with every number reversed, and mirrored in x (x -> -x, with the in-situ
+  // shear reversed, which mirrors the load). The solutions map onto each other; the
+  // orientation of a fracture may follow the numbering, so slips compare in magnitude.
+  JunctionCase source("mirror-source", {{"main", 0.3}, {"branch", 0.3}});
+  source.gmsh("branch 1 theta 120");
+  const friction::Mesh mesh = friction::readMesh(source.meshFile().string());
+  const auto same = [](const friction::Point& p) { return p; };
+  const auto mirror = [](const friction::Point& p) { return friction::Point(-p.x(), p.y(), 0); };
+
+  JunctionCase plain("mirror-plain", {{"main", 0.3}, {"branch", 0.3}});
+  plain.freefem(transformed(mesh, same, false));
+  plain.solve();
+  JunctionCase renumbered("mirror-renumbered", {{"main", 0.3}, {"branch", 0.3}});
+  renumbered.freefem(transformed(mesh, same, true));
+  renumbered.solve();
+  JunctionCase mirrored("mirror-mirrored", {{"main", 0.3}, {"branch", 0.3}});
+  mirrored.freefem(transformed(mesh, mirror, true));
+  mirrored.shear(-5e6);
+  mirrored.solve();
+
+  for (const std::string f : {"main", "branch"}) {
+    const Table a = plain.table(f);
+    const double slipScale = maxAbs(a, "slip"), stressScale = maxAbs(a, "sigmaN");
+    REQUIRE(slipScale > 1e-5);
+    for (const auto* other : {&renumbered, &mirrored}) {
+      const double sign = other == &mirrored ? -1 : 1;
+      const Table b = other->table(f);
+      REQUIRE(b.rows.size() == a.rows.size());
+      for (std::size_t r = 0; r < a.rows.size(); ++r) {
+        const std::size_t k = rowAt(b, sign * a.at(r, "x"), a.at(r, "y"));
+        INFO(f << " row " << r << (other == &mirrored ? " mirrored" : " renumbered"));
+        CHECK(std::abs(std::abs(b.at(k, "slip")) - std::abs(a.at(r, "slip"))) <= 1e-9 * slipScale);
+        CHECK(b.state[k] == a.state[r]);
+        if (std::isfinite(a.at(r, "sigmaN")))
+          CHECK(std::abs(b.at(k, "sigmaN") - a.at(r, "sigmaN")) <= 1e-9 * stressScale);
+      }
+    }
+  }
+}
