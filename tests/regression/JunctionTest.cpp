@@ -381,3 +381,76 @@ TEST_CASE("junctions: renumbering and mirroring the mesh change nothing", "[junc
     }
   }
 }
+
+namespace {
+
+struct Refinement {
+  std::vector<double> mainNorm, mainAtJunction, branchNorm;
+};
+
+/// A T or an X on meshes h = 0.1, 0.05, 0.025 (the far size 10 h), order P1 or P2.
+Refinement refine(const std::string& label, const std::string& options, int order) {
+  Refinement out;
+  for (const double h : {0.1, 0.05, 0.025}) {
+    std::ostringstream name, opts;
+    name << label << "-P" << order << "-h" << h;
+    opts << options << " h " << h << " hFar " << 10 * h;
+    JunctionCase c(name.str(), {{"main", 0.3}, {"branch", 0.3}});
+    c.gmsh(opts.str());
+    if (order == 2) c.order(2);
+    c.solve();
+    const Table m = c.table("main"), b = c.table("branch");
+    out.mainNorm.push_back(slipNorm(m));
+    out.mainAtJunction.push_back(m.at(rowAt(m, 0, 0), "slip"));
+    out.branchNorm.push_back(slipNorm(b));
+  }
+  return out;
+}
+
+/// Observed order from three values on meshes h, h/2, h/4.
+double order(const std::vector<double>& v) {
+  return std::log2(std::abs(v[0] - v[1]) / std::abs(v[1] - v[2]));
+}
+
+/// Richardson's limit from the last two values and the observed order.
+double limit(const std::vector<double>& v) {
+  return v[2] + (v[2] - v[1]) / (std::pow(2.0, order(v)) - 1);
+}
+
+}  // namespace
+
+TEST_CASE("junctions: T and X converge under refinement, P1 and P2 to one limit", "[junction]") {
+  // No reference solution: three meshes give the observed order of the main fracture's slip
+  // norm and of its slip at the junction. Measured (2026-11-26): T 1.04 and 1.16, X 0.92 and
+  // 1.00 for P1 (the slip norm, the slip at the junction),
+  // the order that the square-root slip at the tips allows in L2. The bound 0.7 leaves room
+  // for pre-asymptotic scatter and fails on a junction that does not converge (an error that
+  // stays at the junction node keeps |s_h - s_h/2| from shrinking). P1's and P2's Richardson
+  // limits agree to 0.3% (measured); 1% is the bound.
+  std::ofstream report(fs::path(FRICTION_WORK_DIR) / "junctions" / "convergence.txt");
+  report << std::setprecision(10);
+  for (const auto& [label, options] : std::vector<std::pair<std::string, std::string>>{
+           {"T", "branch 1 theta 120"}, {"X", "branch 2 theta 90"}}) {
+    const Refinement p1 = refine(label, options, 1), p2 = refine(label, options, 2);
+    for (const auto* r : {&p1, &p2})
+      report << label << (r == &p1 ? " P1" : " P2") << " |s_main| " << r->mainNorm[0] << " "
+             << r->mainNorm[1] << " " << r->mainNorm[2] << " order " << order(r->mainNorm)
+             << "; s_main(junction) " << r->mainAtJunction[0] << " " << r->mainAtJunction[1] << " "
+             << r->mainAtJunction[2] << " order " << order(r->mainAtJunction) << "; |s_branch| "
+             << r->branchNorm[0] << " " << r->branchNorm[1] << " " << r->branchNorm[2] << "\n";
+    INFO(label << ": see " << (fs::path(FRICTION_WORK_DIR) / "junctions" / "convergence.txt"));
+    REQUIRE(p1.mainNorm[2] > 1e-4);
+    CHECK(order(p1.mainNorm) > 0.7);
+    CHECK(order(p1.mainAtJunction) > 0.7);
+    // P2 is no faster here (the tips' square root limits both orders) and on these meshes
+    // still pre-asymptotic (X: 0.68 measured): 0.5.
+    CHECK(order(p2.mainNorm) > 0.5);
+    // The branch's slip is smaller and its sequence less regular: its changes shrink.
+    REQUIRE(p1.branchNorm[2] > 1e-6);
+    CHECK(std::abs(p1.branchNorm[2] - p1.branchNorm[1]) <
+          std::abs(p1.branchNorm[1] - p1.branchNorm[0]));
+    CHECK(std::abs(limit(p1.mainNorm) - limit(p2.mainNorm)) < 0.01 * limit(p2.mainNorm));
+    CHECK(std::abs(limit(p1.mainAtJunction) - limit(p2.mainAtJunction)) <
+          0.01 * limit(p2.mainAtJunction));
+  }
+}
