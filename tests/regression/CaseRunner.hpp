@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "friction/mesh/Mesh.hpp"
+
 namespace friction::regression {
 
 namespace fs = std::filesystem;
@@ -28,6 +30,20 @@ inline std::string readText(const fs::path& p) {
 }
 
 inline void writeText(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+/// A 2D mesh as FreeFEM .msh: "nv nt ne", vertices "x y 0", triangles "a b c region"
+/// (1-based, counter-clockwise), edges "a b label".
+inline void writeFreeFem(const fs::path& path, const Mesh& m) {
+  std::ofstream out(path);
+  out.precision(17);
+  out << m.points.size() << " " << m.cellRegion.size() << " " << m.facetLabel.size() << "\n";
+  for (const auto& p : m.points) out << p.x() << " " << p.y() << " 0\n";
+  for (std::size_t t = 0; t < m.cellRegion.size(); ++t)
+    out << m.cell(t)[0] + 1 << " " << m.cell(t)[1] + 1 << " " << m.cell(t)[2] + 1 << " "
+        << m.cellRegion[t] << "\n";
+  for (std::size_t e = 0; e < m.facetLabel.size(); ++e)
+    out << m.facet(e)[0] + 1 << " " << m.facet(e)[1] + 1 << " " << m.facetLabel[e] << "\n";
+}
 
 /// The "(x y z)" value lines of an OpenFOAM field file (e.g. <time>/D), in file order.
 inline std::vector<std::string> vectorLines(const std::string& text) {

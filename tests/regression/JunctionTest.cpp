@@ -21,106 +21,13 @@
 #include <sstream>
 
 #include "CaseRunner.hpp"
+#include "JunctionCase.hpp"
 #include "friction/mesh/Mesh.hpp"
 #include "friction/mesh/MeshReader.hpp"
 
 using namespace friction::regression;
 
 namespace {
-
-const std::map<std::string, int> kLabels = {{"outer", 1}, {"main", 5},   {"left", 5},
-                                            {"right", 6}, {"branch", 7}, {"branch2", 8}};
-
-/// A copy of tests/regression/cases/junctions with the given fractures (Coulomb, their
-/// friction coefficients) and mesh (made by `makeMesh` into constant/mesh/junctions.msh).
-class JunctionCase {
- public:
-  JunctionCase(const std::string& label,
-               const std::vector<std::pair<std::string, double>>& fractures)
-      : c_("tests:junctions", "junctions/" + label) {
-    for (const auto& [name, mu] : fractures) names_ += (names_.empty() ? "" : " ") + name;
-    writeMeshDict("");
-    std::ostringstream fp;
-    fp << "FoamFile { version 2.0; format ascii; class dictionary; object fractureProperties; }\n";
-    for (const auto& [name, mu] : fractures)
-      fp << name << " { law coulomb; frictionCoefficient " << std::setprecision(17) << mu
-         << "; }\n";
-    writeText(c_.dir() / "constant" / "fractureProperties", fp.str());
-  }
-
-  const fs::path& dir() const { return c_.dir(); }
-  fs::path meshFile() const { return c_.dir() / "constant" / "mesh" / "junctions.msh"; }
-
-  /// gmsh on junctions.geo with `-setnumber` options ("branch 1 theta 120").
-  void gmsh(const std::string& options) {
-    std::istringstream in(options);
-    std::string args;
-    for (std::string name, value; in >> name >> value;) args += " -setnumber " + name + " " + value;
-    const fs::path geo = c_.dir() / "constant" / "mesh" / "junctions.geo";
-    const std::string cmd =
-        "gmsh -2 -format msh41" + args + " '" + geo.string() + "' -o '" + meshFile().string() + "'";
-    INFO(cmd << "\n" << readText(c_.dir() / "log.gmsh"));
-    REQUIRE(run(cmd, c_.dir() / "log.gmsh") == 0);
-    fs::remove(c_.dir() / "log.gmsh");
-  }
-
-  /// Replace the mesh by a FreeFEM .msh of `m` (which names its patches in meshDict).
-  void freefem(const friction::Mesh& m);
-
-  void shear(double sxy) {
-    std::ostringstream s;
-    s << "stress      (-1e7 -1e7 " << sxy << ");";
-    c_.edit("constant/effects", "stress +\\(-1e7 -1e7 5e6\\);", s.str());
-  }
-  void order(int p) {
-    c_.edit("system/frictionSolution", "elementOrder +1;",
-            "elementOrder " + std::to_string(p) + ";");
-  }
-
-  void solve() {
-    const int rc = c_.solve();
-    INFO(c_.log());
-    REQUIRE(rc == 0);
-    REQUIRE(c_.log().find("converged") != std::string::npos);
-  }
-  Table table(const std::string& fracture) const { return c_.namedTable("1", fracture); }
-  std::string splitLog() const { return readText(c_.dir() / "log.splitFractureNodes"); }
-  std::string log() const { return c_.log(); }
-
- private:
-  /// system/meshDict: the mesh, the patches (a FreeFEM mesh has no names), the fractures.
-  void writeMeshDict(const std::string& patches) {
-    writeText(c_.dir() / "system" / "meshDict",
-              "FoamFile { version 2.0; format ascii; class dictionary; object meshDict; }\n"
-              "mesh \"constant/mesh/junctions.msh\";\n" +
-                  patches + "fractures (" + names_ + ");\n");
-  }
-
-  Case c_;
-  std::string names_;
-};
-
-/// FreeFEM .msh: "nv nt ne", vertices "x y label", triangles "a b c region" (1-based,
-/// counter-clockwise), edges "a b label".
-void JunctionCase::freefem(const friction::Mesh& m) {
-  std::ostringstream s;
-  s << std::setprecision(17);
-  s << m.numPoints() << " " << m.numCells() << " " << m.facetLabel.size() << "\n";
-  for (const auto& p : m.points) s << p.x() << " " << p.y() << " 0\n";
-  for (friction::Index t = 0; t < m.numCells(); ++t) {
-    const auto c = m.cell(t);
-    s << c[0] + 1 << " " << c[1] + 1 << " " << c[2] + 1 << " " << m.cellRegion[t] << "\n";
-  }
-  for (std::size_t e = 0; e < m.facetLabel.size(); ++e)
-    s << m.facetVertices[2 * e] + 1 << " " << m.facetVertices[2 * e + 1] + 1 << " "
-      << m.facetLabel[e] << "\n";
-  fs::remove(meshFile());
-  writeText(c_.dir() / "constant" / "mesh" / "junctions.msh", s.str());
-  std::string patches = "patches {";
-  for (const auto& [label, name] : m.labelNames)
-    patches += " " + name + " " + std::to_string(label) + ";";
-  writeMeshDict(patches + " }\n");
-}
 
 /// The mesh with every point mapped by `f` (cells turned counter-clockwise again if `f`
 /// reverses orientation) and, if `renumber`, points, cells and facets in reverse order.
@@ -452,5 +359,65 @@ TEST_CASE("junctions: T and X converge under refinement, P1 and P2 to one limit"
     CHECK(std::abs(limit(p1.mainNorm) - limit(p2.mainNorm)) < 0.01 * limit(p2.mainNorm));
     CHECK(std::abs(limit(p1.mainAtJunction) - limit(p2.mainAtJunction)) <
           0.01 * limit(p2.mainAtJunction));
+  }
+}
+
+TEST_CASE("junctions: every law, both Newton variants, fractures that open", "[junction]") {
+  // The X (theta 90): each law solves to the optimizer's tolerance, with slip at the
+  // crossing; the Krylov variant equals the condensed one (the same Newton iterates, up to
+  // GMRES's relative tolerance: 1e-9 of the slip); with a pore pressure above the in-situ
+  // compression on "main" and `contact unilateral`, main opens through the crossing while the
+  // branch keeps its faces together there.
+  struct Law {
+    std::string label, entry;
+  };
+  const std::vector<Law> laws{{"tresca", "law tresca; threshold 2e6;"},
+                              {"coulomb", "law coulomb; frictionCoefficient 0.3;"},
+                              {"cohesion",
+                               "law coulombCohesion; frictionCoefficient 0.3; "
+                               "cohesion 1e6;"}};
+  for (const Law& law : laws) {
+    DYNAMIC_SECTION(law.label) {
+      Table reference;
+      for (const std::string variant : {"condensed", "krylov"}) {
+        JunctionCase c("laws-" + law.label + "-" + variant, {{"main", 0.3}, {"branch", 0.3}});
+        c.gmsh("branch 2 theta 90");
+        c.properties(law.entry);
+        c.runner().edit("system/frictionSolution", "type +semismoothNewton;",
+                        "type semismoothNewton; variant " + variant + ";");
+        c.solve();
+        const Table m = c.table("main");
+        const std::size_t j = rowAt(m, 0, 0);
+        CHECK(m.state[j] == "slip");
+        CHECK(std::abs(m.at(j, "slip")) > 1e-5);
+        if (variant == std::string("condensed")) {
+          reference = m;
+          continue;
+        }
+        REQUIRE(m.rows.size() == reference.rows.size());
+        for (std::size_t r = 0; r < m.rows.size(); ++r)
+          CHECK(std::abs(m.at(r, "slip") - reference.at(r, "slip")) <=
+                1e-9 * maxAbs(reference, "slip"));
+      }
+    }
+  }
+  SECTION("fractures that open") {
+    JunctionCase c("laws-opening", {{"main", 0.3}, {"branch", 0.3}});
+    c.gmsh("branch 2 theta 90");
+    c.properties("law coulomb; frictionCoefficient 0.3; contact unilateral;");
+    writeText(c.dir() / "constant" / "effects",
+              readText(c.dir() / "constant" / "effects") +
+                  "pore { type fracturePressure; fracture main; pressure 1.2e7; }\n");
+    c.solve();
+    const Table m = c.table("main"), b = c.table("branch");
+    const std::size_t jm = rowAt(m, 0, 0), jb = rowAt(b, 0, 0);
+    CHECK(m.state[jm] == "open");
+    CHECK(m.at(jm, "opening") > 1e-4);
+    // The pressure on main exceeds the compression: main opens from tip to tip.
+    int open = 0;
+    for (std::size_t r = 0; r < m.rows.size(); ++r) open += m.state[r] == "open";
+    CHECK(open >= static_cast<int>(m.rows.size()) - 2);
+    CHECK(b.state[jb] != "open");
+    CHECK(b.at(jb, "opening") == 0.0);
   }
 }

@@ -27,8 +27,8 @@ inline std::map<std::string, std::string> readStatus(const fs::path& file) {
 }
 
 /// No NaN or Inf in any file of the time folder `dir`, except the traction columns of a tip's
-/// row in a fracture table (a tip has no traction, written as nan): rows of `columns` items
-/// ending in "tip", items firstNan … lastNan.
+/// or a junction's row in a fracture table (they have no traction, written as nan): rows of
+/// `columns` items ending in "tip" or "junction", items firstNan … lastNan.
 inline void checkWrittenFinite(const fs::path& dir, std::size_t columns, std::size_t firstNan,
                                std::size_t lastNan) {
   for (const auto& f : fs::recursive_directory_iterator(dir)) {
@@ -39,8 +39,8 @@ inline void checkWrittenFinite(const fs::path& dir, std::size_t columns, std::si
       std::vector<std::string> items;
       std::istringstream s(line);
       for (std::string item; s >> item;) items.push_back(item);
-      const bool tipRow =
-          f.path().extension() == ".dat" && items.size() == columns && items.back() == "tip";
+      const bool tipRow = f.path().extension() == ".dat" && items.size() == columns &&
+                          (items.back() == "tip" || items.back() == "junction");
       INFO(line);
       for (std::size_t i = 0; i < items.size(); ++i) {
         if (tipRow && i >= firstNan && i <= lastNan) {

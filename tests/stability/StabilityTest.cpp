@@ -19,6 +19,7 @@
 #include <random>
 
 #include "../regression/CaseRunner.hpp"
+#include "../regression/JunctionCase.hpp"
 #include "StabilityChecks.hpp"
 #include "friction/mesh/MeshReader.hpp"
 
@@ -28,18 +29,6 @@ using friction::Mesh;
 namespace {
 
 // ---- meshes written as FreeFEM .msh (1-based, counter-clockwise, labelled edges) ----
-
-void writeFreeFem(const fs::path& path, const Mesh& m) {
-  std::ofstream out(path);
-  out.precision(17);
-  out << m.points.size() << " " << m.cellRegion.size() << " " << m.facetLabel.size() << "\n";
-  for (const auto& p : m.points) out << p.x() << " " << p.y() << " 0\n";
-  for (std::size_t t = 0; t < m.cellRegion.size(); ++t)
-    out << m.cell(t)[0] + 1 << " " << m.cell(t)[1] + 1 << " " << m.cell(t)[2] + 1 << " "
-        << m.cellRegion[t] << "\n";
-  for (std::size_t e = 0; e < m.facetLabel.size(); ++e)
-    out << m.facet(e)[0] + 1 << " " << m.facet(e)[1] + 1 << " " << m.facetLabel[e] << "\n";
-}
 
 // Structured triangulation of [0,1]² on the given grid lines (xs, ys increasing from 0 to 1);
 // labels 1 bottom, 2 right, 3 top (6 for x > 0.5 if splitTop), 4 left; horizontal fractures
@@ -125,9 +114,11 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     CHECK(std::stod(status.at("equilibriumResidual")) <= 1e-8);
     for (const auto& f : fractures) {
       auto rows = c.table(name, f);
-      // A tip has no traction (nan): leave it out of the norms and the check below.
+      // A tip or a held junction node has no traction (nan): leave it out of the norms and
+      // the check below.
       rows.erase(
-          std::remove_if(rows.begin(), rows.end(), [](const Row& r) { return r.state == "tip"; }),
+          std::remove_if(rows.begin(), rows.end(),
+                         [](const Row& r) { return r.state == "tip" || r.state == "junction"; }),
           rows.end());
       REQUIRE(!rows.empty());
       double sigmaMax = 0, betaMax = 0;
@@ -570,4 +561,44 @@ TEST_CASE("stability: a block held only by a fracture that opens entirely is dia
   for (std::size_t r = 0; r < t.rows.size(); ++r) open += t.state[r] == "open";
   CHECK(open >= 35);  // the ends, on the free sides, may stay shut
   CHECK_THAT(held.log(), !Catch::Contains("rigid-body"));
+}
+
+TEST_CASE("stability: junctions at small angles, three fractures at a node, on a Dirichlet patch",
+          "[stability][junction]") {
+  // tests/regression/cases/junctions (docs/method.md §4 "Junctions"): every run gets the
+  // suite's checks; each variant also has slip where the set-up drives it.
+  struct Variant {
+    std::string label, gmsh;
+    std::vector<std::string> fractures;
+    std::string slipping;  ///< a fracture that must slip somewhere
+  };
+  const std::vector<Variant> variants{
+      {"T-10deg", "branch 1 theta 10", {"main", "branch"}, "main"},
+      {"X-10deg", "branch 2 theta 10", {"main", "branch"}, "branch"},
+      {"T-170deg", "branch 1 theta 170", {"main", "branch"}, "main"},
+      {"three-through", "branch 3 theta 30", {"main", "branch", "branch2"}, "main"},
+      {"three-ends", "branch 1 cut 1 theta 120", {"left", "right", "branch"}, "left"},
+      {"on-dirichlet", "branch 1 toBoundary 1 xJ 5 theta 120", {"main", "branch"}, "branch"},
+      {"near-dirichlet", "branch 1 toBoundary 1 xJ 4.8 theta 120", {"main", "branch"}, "main"},
+      {"X-off-centre", "branch 2 theta 90 xJ 0.5", {"main", "branch"}, "branch"},
+      {"two-junctions",
+       "branch 2 theta 90 xJ -0.5 xJ2 0.5",
+       {"main", "branch", "branch2"},
+       "branch"},
+  };
+  for (const Variant& v : variants) {
+    DYNAMIC_SECTION(v.label) {
+      std::vector<std::pair<std::string, double>> fractures;
+      for (const auto& f : v.fractures) fractures.emplace_back(f, 0.3);
+      JunctionCase c("stab-junction-" + v.label, fractures);
+      c.gmsh(v.gmsh);
+      const int rc = c.runner().solve();
+      checkRun(c.runner(), v.fractures, rc);
+      CHECK(rc == 0);
+      CHECK_THAT(readText(c.dir() / "log.splitFractureNodes"), Catch::Contains("Junctions: "));
+      int slipping = 0;
+      for (const Row& r : c.runner().table("1", v.slipping)) slipping += r.state == "slip";
+      CHECK(slipping > 0);
+    }
+  }
 }

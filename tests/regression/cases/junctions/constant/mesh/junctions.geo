@@ -9,6 +9,8 @@
 //   cut 1      the main fracture in two fractures, "left" (x < xJ) and "right" (x > xJ)
 //   toBoundary 1  the main fracture's right end on the outer boundary (x = 5), the
 //                 junction there too when xJ = 5 (branch 1 only)
+//   xJ2 != 0   a second junction on the main fracture (xJ < xJ2 < its right end, not with
+//              branch 3 or cut 1): "branch2" from (xJ2, 0) to (xJ2, 0) + Lb (cos, -sin)
 //
 // Physical curves: 1 "outer" (the whole outer boundary), 5 "main" (or 5 "left" and
 // 6 "right" with cut 1), 7 "branch", 8 "branch2"; physical surface 1 "rock".
@@ -24,10 +26,15 @@ DefineConstant[
   hFar   = {1,   Name "Parameters/6Mesh size at the outer boundary [m]"},
   branch = {1,   Name "Parameters/7Branch: 0 none, 1 T, 2 X, 3 two branches"},
   cut    = {0,   Name "Parameters/8Main fracture in two (1)"},
-  toBoundary = {0, Name "Parameters/9Main fracture to the right side (1)"}
+  toBoundary = {0, Name "Parameters/9Main fracture to the right side (1)"},
+  xJ2    = {0,   Name "Parameters/10Second junction abscissa, 0: none [m]"}
 ];
 If (h <= 0 || L <= 0 || Lb <= 0 || branch < 0 || branch > 3 || xJ <= -L || xJ > (toBoundary ? 5 : L))
   Error("need h, L, Lb > 0, branch 0..3 and the junction on the main fracture");
+  Exit;
+EndIf
+If (xJ2 != 0 && (xJ2 <= xJ || xJ2 >= (toBoundary ? 5 : L) || branch == 3 || cut))
+  Error("need xJ < xJ2 < the main fracture's right end, and neither branch 3 nor cut 1");
   Exit;
 EndIf
 
@@ -81,9 +88,17 @@ Plane Surface(1) = {1};
 
 mainLeft = newl; Line(mainLeft) = {5, 6};
 inside[] = {mainLeft};
-If (xJ < xR)
+If (xJ < xR && xJ2 == 0)
   mainRight = newl; Line(mainRight) = {6, 7};
   inside[] += {mainRight};
+EndIf
+If (xJ2 != 0)
+  Point(10) = {xJ2, 0, 0, h};
+  Point(11) = {xJ2 + Lb*c, -Lb*s, 0, h};
+  mainMiddle = newl; Line(mainMiddle) = {6, 10};
+  mainRight = newl; Line(mainRight) = {10, 7};
+  b2 = newl; Line(b2) = {10, 11};
+  inside[] += {mainMiddle, mainRight, b2};
 EndIf
 If (branch == 1 || branch == 3)
   b1 = newl; Line(b1) = {6, 8};
@@ -107,7 +122,9 @@ If (cut)
     Physical Curve("right", 6) = {mainRight};
   EndIf
 Else
-  If (xJ < xR)
+  If (xJ2 != 0)
+    Physical Curve("main", 5) = {mainLeft, mainMiddle, mainRight};
+  ElseIf (xJ < xR)
     Physical Curve("main", 5) = {mainLeft, mainRight};
   Else
     Physical Curve("main", 5) = {mainLeft};
@@ -119,7 +136,7 @@ EndIf
 If (branch == 2)
   Physical Curve("branch", 7) = {b1, b1b};
 EndIf
-If (branch == 3)
+If (branch == 3 || xJ2 != 0)
   Physical Curve("branch2", 8) = {b2};
 EndIf
 Physical Surface("rock", 1) = {1};
