@@ -18,6 +18,7 @@
 #include <iomanip>
 #include <map>
 #include <numeric>
+#include <set>
 #include <sstream>
 
 #include "CaseRunner.hpp"
@@ -134,6 +135,16 @@ std::size_t rowAt(const Table& t, double x, double y) {
   return 0;
 }
 
+/// Record a measured figure (the README quotes them): <work>/junctions/measured-<name>.txt.
+/// A file is started afresh by its first figure in a run of the test program.
+void measured(const std::string& name, const std::string& what, double value) {
+  static std::set<std::string> started;
+  const bool fresh = started.insert(name).second;
+  std::ofstream(fs::path(FRICTION_WORK_DIR) / "junctions" / ("measured-" + name + ".txt"),
+                fresh ? std::ios::trunc : std::ios::app)
+      << what << " " << std::setprecision(3) << value << "\n";
+}
+
 /// L2 norm of the slip along a table (trapezoidal rule over s).
 double slipNorm(const Table& t) {
   double sum = 0;
@@ -160,17 +171,20 @@ TEST_CASE("junctions: a T whose branch is bonded equals the fracture alone", "[j
   REQUIRE(a.rows.size() == b.rows.size());
   const double slipScale = maxAbs(a, "slip"), stressScale = maxAbs(a, "sigmaN");
   REQUIRE(slipScale > 1e-5);  // the main fracture slips
+  double worst = 0;
   for (std::size_t r = 0; r < a.rows.size(); ++r) {
     INFO("row " << r);
     CHECK(b.at(r, "x") == a.at(r, "x"));
     CHECK(b.at(r, "y") == a.at(r, "y"));
     CHECK(std::abs(b.at(r, "slip") - a.at(r, "slip")) <= 1e-9 * slipScale);
+    worst = std::max(worst, std::abs(b.at(r, "slip") - a.at(r, "slip")) / slipScale);
     if (std::isfinite(a.at(r, "sigmaN"))) {
       CHECK(std::abs(b.at(r, "sigmaN") - a.at(r, "sigmaN")) <= 1e-9 * stressScale);
       CHECK(std::abs(b.at(r, "tau") - a.at(r, "tau")) <= 1e-9 * stressScale);
     }
     CHECK(b.state[r] == a.state[r]);
   }
+  measured("bonded", "max |slip - slip alone| / max slip", worst);
   const Table branch = bonded.table("branch");
   CHECK(maxAbs(branch, "slip") <= 1e-9 * slipScale);
   const std::size_t junction = rowAt(branch, 0, 0);
@@ -196,6 +210,7 @@ TEST_CASE("junctions: a fracture cut in two collinear fractures equals the uncut
   REQUIRE(l.rows.size() + r.rows.size() == w.rows.size());
   const double slipScale = maxAbs(w, "slip"), stressScale = maxAbs(w, "sigmaN");
   REQUIRE(slipScale > 1e-5);
+  double worst = 0;
   for (std::size_t k = 0; k < w.rows.size(); ++k) {
     const bool inLeft = k < l.rows.size();
     const Table& t = inLeft ? l : r;
@@ -204,12 +219,14 @@ TEST_CASE("junctions: a fracture cut in two collinear fractures equals the uncut
     CHECK(t.at(row, "x") == w.at(k, "x"));
     CHECK(t.at(row, "y") == w.at(k, "y"));
     CHECK(std::abs(t.at(row, "slip") - w.at(k, "slip")) <= 1e-9 * slipScale);
+    worst = std::max(worst, std::abs(t.at(row, "slip") - w.at(k, "slip")) / slipScale);
     if (std::isfinite(w.at(k, "sigmaN"))) {
       CHECK(std::abs(t.at(row, "sigmaN") - w.at(k, "sigmaN")) <= 1e-9 * stressScale);
       CHECK(std::abs(t.at(row, "tau") - w.at(k, "tau")) <= 1e-9 * stressScale);
     }
     CHECK(t.state[row] == w.state[k]);
   }
+  measured("cut", "max |slip - slip uncut| / max slip", worst);
   // The joined node is inside: it slips like its neighbours.
   CHECK(l.state.back() == "slip");
 }
@@ -230,11 +247,13 @@ TEST_CASE("junctions: a symmetric X under a symmetric load slips symmetrically",
   REQUIRE(m.rows.size() == b.rows.size());
   const double slipScale = maxAbs(m, "slip"), stressScale = maxAbs(m, "sigmaN");
   REQUIRE(slipScale > 1e-5);
+  double worst = 0;
   int compared = 0;
   for (std::size_t r = 0; r < m.rows.size(); ++r) {
     const std::size_t k = rowAt(b, m.at(r, "y"), m.at(r, "x"));
     INFO("main row " << r << " at x = " << m.at(r, "x"));
     CHECK(std::abs(b.at(k, "slip") + m.at(r, "slip")) <= 1e-9 * slipScale);
+    worst = std::max(worst, std::abs(b.at(k, "slip") + m.at(r, "slip")) / slipScale);
     CHECK(b.state[k] == m.state[r]);
     if (std::isfinite(m.at(r, "sigmaN"))) {
       CHECK(std::abs(b.at(k, "sigmaN") - m.at(r, "sigmaN")) <= 1e-9 * stressScale);
@@ -243,6 +262,7 @@ TEST_CASE("junctions: a symmetric X under a symmetric load slips symmetrically",
     }
   }
   CHECK(compared > 10);
+  measured("symmetricX", "max |slip_branch + slip_main| / max slip", worst);
   // The junction is a crossing: both fractures slip through it.
   CHECK(m.state[rowAt(m, 0, 0)] == "slip");
 }
@@ -269,6 +289,7 @@ TEST_CASE("junctions: renumbering and mirroring the mesh change nothing", "[junc
   mirrored.shear(-5e6);
   mirrored.solve();
 
+  double worst[2] = {0, 0};  // renumbered, mirrored
   for (const std::string f : {"main", "branch"}) {
     const Table a = plain.table(f);
     const double slipScale = maxAbs(a, "slip"), stressScale = maxAbs(a, "sigmaN");
@@ -281,12 +302,17 @@ TEST_CASE("junctions: renumbering and mirroring the mesh change nothing", "[junc
         const std::size_t k = rowAt(b, sign * a.at(r, "x"), a.at(r, "y"));
         INFO(f << " row " << r << (other == &mirrored ? " mirrored" : " renumbered"));
         CHECK(std::abs(std::abs(b.at(k, "slip")) - std::abs(a.at(r, "slip"))) <= 1e-9 * slipScale);
+        worst[other == &mirrored] =
+            std::max(worst[other == &mirrored],
+                     std::abs(std::abs(b.at(k, "slip")) - std::abs(a.at(r, "slip"))) / slipScale);
         CHECK(b.state[k] == a.state[r]);
         if (std::isfinite(a.at(r, "sigmaN")))
           CHECK(std::abs(b.at(k, "sigmaN") - a.at(r, "sigmaN")) <= 1e-9 * stressScale);
       }
     }
   }
+  measured("mirror", "renumbered: max ||slip| - |slip plain|| / max slip", worst[0]);
+  measured("mirror", "mirrored: max ||slip| - |slip plain|| / max slip", worst[1]);
 }
 
 namespace {
@@ -342,9 +368,10 @@ TEST_CASE("junctions: T and X converge under refinement, P1 and P2 to one limit"
     for (const auto* r : {&p1, &p2})
       report << label << (r == &p1 ? " P1" : " P2") << " |s_main| " << r->mainNorm[0] << " "
              << r->mainNorm[1] << " " << r->mainNorm[2] << " order " << order(r->mainNorm)
-             << "; s_main(junction) " << r->mainAtJunction[0] << " " << r->mainAtJunction[1] << " "
-             << r->mainAtJunction[2] << " order " << order(r->mainAtJunction) << "; |s_branch| "
-             << r->branchNorm[0] << " " << r->branchNorm[1] << " " << r->branchNorm[2] << "\n";
+             << " limit " << limit(r->mainNorm) << "; s_main(junction) " << r->mainAtJunction[0]
+             << " " << r->mainAtJunction[1] << " " << r->mainAtJunction[2] << " order "
+             << order(r->mainAtJunction) << "; |s_branch| " << r->branchNorm[0] << " "
+             << r->branchNorm[1] << " " << r->branchNorm[2] << "\n";
     INFO(label << ": see " << (fs::path(FRICTION_WORK_DIR) / "junctions" / "convergence.txt"));
     REQUIRE(p1.mainNorm[2] > 1e-4);
     CHECK(order(p1.mainNorm) > 0.7);
