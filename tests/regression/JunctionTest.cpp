@@ -448,3 +448,24 @@ TEST_CASE("junctions: every law, both Newton variants, fractures that open", "[j
     CHECK(b.at(jb, "opening") == 0.0);
   }
 }
+
+TEST_CASE("junctions: a fracture label that branches is refused, naming the node", "[junction]") {
+  // The symmetric X with both curves under one label: four edges of one fracture at the
+  // centre. splitFractureNodes exits 1, says where and what to do, and writes nothing.
+  friction::Mesh m = symmetricX(4);
+  for (int& label : m.facetLabel)
+    if (label == 7) label = 5;
+  m.labelNames.erase(7);
+  JunctionCase c("branching-label", {{"main", 0.3}});
+  c.freefem(m);
+  const fs::path bin = FRICTION_BIN_DIR;
+  const int rc =
+      run("'" + (bin / "splitFractureNodes").string() + "' -case '" + c.dir().string() + "'",
+          c.dir() / "log.splitFractureNodes");
+  const std::string log = c.splitLog();
+  INFO(log);
+  CHECK(rc == 1);
+  CHECK_THAT(log, Catch::Contains("fracture 'main' branches at (0 0)") &&
+                      Catch::Contains("give each branch its own label"));
+  CHECK_FALSE(fs::exists(c.dir() / "constant" / "splitMesh"));
+}
