@@ -406,7 +406,29 @@ TEST_CASE("the split mesh file reads back to the same split mesh", "[split][io]"
   Mesh m = gridMesh(n);
   addHorizontalFracture(m, n, 3, 1, 5, 5, "crack");
   m.labelNames[5] = "crack";
-  const SplitMesh s = splitFractures(m, {{"crack", 5, {}}});
+  bool junctions = false;
+  SECTION("one fracture") {}
+  SECTION("fractures at junctions: a crossing, an abutting end, two joined ends") {
+    junctions = true;
+    addVerticalFracture(m, n, 3, 0, 5, 6, "cross");   // crosses "crack" at (3, 3)
+    addVerticalFracture(m, n, 2, 3, 5, 7, "branch");  // abuts "crack" at (2, 3)
+    addHorizontalFracture(m, n, 3, 5, 6, 8, "tail");  // joins "crack" at (5, 3), ends outside
+  }
+  std::vector<FractureSpec> specs;
+  for (const auto& [label, name] : m.labelNames)
+    if (label >= 5) specs.push_back({name, label, {}});
+  const SplitMesh s = splitFractures(m, specs);
+  if (junctions) {  // every junction kind goes through the file
+    Index kinds[3] = {0, 0, 0};
+    for (const FractureGeometry& g : s.fractures) {
+      kinds[0] += g.numOfKind(FractureNodeKind::crossing);
+      kinds[1] += g.numOfKind(FractureNodeKind::abutting);
+      kinds[2] += g.numOfKind(FractureNodeKind::joined);
+    }
+    CHECK(kinds[0] == 1);
+    CHECK(kinds[1] == 1);
+    CHECK(kinds[2] == 2);
+  }
   const auto dir =
       std::filesystem::temp_directory_path() / ("friction-splitio-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -419,11 +441,13 @@ TEST_CASE("the split mesh file reads back to the same split mesh", "[split][io]"
   CHECK(r.mesh.cellVertices == s.mesh.cellVertices);
   CHECK(r.origin == s.origin);
   CHECK(r.mesh.facetLabel.size() == s.mesh.facetLabel.size());
-  REQUIRE(r.fractures.size() == 1);
-  CHECK(r.fractures[0].node == s.fractures[0].node);
-  CHECK(r.fractures[0].plus == s.fractures[0].plus);
-  CHECK(r.fractures[0].minus == s.fractures[0].minus);
-  CHECK(r.fractures[0].kind == s.fractures[0].kind);
-  CHECK(r.fractures[0].normal == s.fractures[0].normal);
-  CHECK(r.fractures[0].arclength == s.fractures[0].arclength);
+  REQUIRE(r.fractures.size() == s.fractures.size());
+  for (std::size_t f = 0; f < s.fractures.size(); ++f) {
+    CHECK(r.fractures[f].node == s.fractures[f].node);
+    CHECK(r.fractures[f].plus == s.fractures[f].plus);
+    CHECK(r.fractures[f].minus == s.fractures[f].minus);
+    CHECK(r.fractures[f].kind == s.fractures[f].kind);
+    CHECK(r.fractures[f].normal == s.fractures[f].normal);
+    CHECK(r.fractures[f].arclength == s.fractures[f].arclength);
+  }
 }
