@@ -39,6 +39,11 @@ cp "$src/cases/sneddonCrack/constant/mesh/sneddonCrack.geo" "$work/"
   fail "gmsh failed: $(tail "$work/gmsh.log")"
 cmp -s "$work/sneddonCrack.msh" "$src/cases/sneddonCrack/constant/mesh/sneddonCrack.msh" ||
   fail "cases/sneddonCrack/constant/mesh/sneddonCrack.msh differs from what sneddonCrack.geo makes; run its Allmesh"
+cp "$src/cases/fractureNetwork/constant/mesh/fractureNetwork.geo" "$work/"
+(cd "$work" && gmsh -2 -format msh41 fractureNetwork.geo -o fractureNetwork.msh >gmsh.log 2>&1) ||
+  fail "gmsh failed: $(tail "$work/gmsh.log")"
+cmp -s "$work/fractureNetwork.msh" "$src/cases/fractureNetwork/constant/mesh/fractureNetwork.msh" ||
+  fail "cases/fractureNetwork/constant/mesh/fractureNetwork.msh differs from what fractureNetwork.geo makes; run its Allmesh"
 # 3D meshes are large: the work folders hold results compared across builds, keep only 2D's.
 rm -rf "$work/pennyCrack"
 echo "PASS: committed meshes match their generators"
