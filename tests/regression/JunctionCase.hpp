@@ -59,6 +59,18 @@ class JunctionCase {
     fs::remove(c_.dir() / "log.gmsh");
   }
 
+  /// FreeFEM on junctions.edp (the T), writing the mesh; meshDict names its labels.
+  void freefemScript() {
+    const fs::path dir = c_.dir() / "constant" / "mesh";
+    const std::string cmd = "cd '" + dir.string() +
+                            "' && FF_LOADPATH='/usr/lib/freefem++;./' FreeFem++ -nw -ns -v 0 "
+                            "junctions.edp -out junctions.msh";
+    INFO(cmd << "\n" << readText(c_.dir() / "log.FreeFem++"));
+    REQUIRE(run(cmd, c_.dir() / "log.FreeFem++") == 0);
+    fs::remove(c_.dir() / "log.FreeFem++");
+    writeMeshDict("patches { outer 1; main 5; branch 7; }\n");
+  }
+
   /// Replace the mesh by a FreeFEM .msh of `m` (which names its patches in meshDict).
   void freefem(const friction::Mesh& m) {
     fs::remove(meshFile());
