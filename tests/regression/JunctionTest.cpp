@@ -193,6 +193,22 @@ TEST_CASE("junctions: a T whose branch is bonded equals the fracture alone", "[j
   for (std::size_t r = 0; r < branch.rows.size(); ++r)
     if (r != junction && branch.state[r] != "tip") CHECK(branch.state[r] == (++stick, "stick"));
   CHECK(stick >= 5);
+  // ParaView's file codes the states in the table's order: 4 at the junction, 3 at the tip.
+  const std::string vtp = readText(bonded.dir() / "VTK" / "fractures" / "branch_1.vtp");
+  CHECK_THAT(vtp, Catch::Contains("3 tip, 4 junction"));
+  const auto from = vtp.find("Name=\"state\"");
+  REQUIRE(from != std::string::npos);
+  std::istringstream codes(vtp.substr(vtp.find('>', from) + 1));
+  std::vector<int> code;
+  for (int k; codes >> k;) code.push_back(k);
+  REQUIRE(code.size() == branch.rows.size());
+  for (std::size_t r = 0; r < code.size(); ++r) {
+    INFO("row " << r);
+    CHECK(code[r] == (branch.state[r] == "junction" ? 4 : branch.state[r] == "tip" ? 3 : 0));
+  }
+  // Without a junction row the comment reads as it always has.
+  CHECK_THAT(readText(alone.dir() / "VTK" / "fractures" / "main_1.vtp"),
+             Catch::Contains("3 tip (no traction"));
 }
 
 TEST_CASE("junctions: a fracture cut in two collinear fractures equals the uncut one",
