@@ -580,6 +580,11 @@ TEST_CASE("stability: junctions at small angles, three fractures at a node, on a
       {"three-ends", "branch 1 cut 1 theta 120", {"left", "right", "branch"}, "left"},
       {"on-dirichlet", "branch 1 toBoundary 1 xJ 5 theta 120", {"main", "branch"}, "branch"},
       {"near-dirichlet", "branch 1 toBoundary 1 xJ 4.8 theta 120", {"main", "branch"}, "main"},
+      // Two fractures ending together (joined) at 90 degrees, at 10 degrees from each other
+      // (the branch at 170 degrees folds back along "left"), and nearly straight.
+      {"L-corner", "branch 1 cut 1 theta 90", {"left", "branch"}, "branch"},
+      {"L-10deg", "branch 1 cut 1 theta 170", {"left", "branch"}, "left"},
+      {"L-170deg", "branch 1 cut 1 theta 10", {"left", "branch"}, "left"},
       {"X-off-centre", "branch 2 theta 90 xJ 0.5", {"main", "branch"}, "branch"},
       {"two-junctions",
        "branch 2 theta 90 xJ -0.5 xJ2 0.5",
