@@ -1,0 +1,203 @@
+// Friction coefficient, cohesion and threshold as fields along a fracture (issue #13;
+// FrictionField.hpp), through the real binaries: every constant form of a field gives the
+// number's outputs byte for byte (2D and 3D), a field changes the answer where the physics
+// says it must (a bonded half sticks, Coulomb holds node by node with the node's own μ_f), and
+// bad input is refused naming the file, the key and the place.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "CaseRunner.hpp"
+
+using namespace friction::regression;
+
+namespace {
+
+const char* const kCube = "tests:faultInCube";
+
+std::string fileOf(const Case& c, const std::string& relative) {
+  return readText(c.dir() / relative);
+}
+
+/// The outputs a field must leave unchanged: the fracture table and the displacement.
+void checkSameAs(const Case& base, const Case& c, const std::string& fracture) {
+  const std::string table = "1/fractures/" + fracture + ".dat";
+  REQUIRE(fs::exists(base.dir() / table));
+  CHECK(fileOf(c, table) == fileOf(base, table));
+  CHECK(fileOf(c, "1/D") == fileOf(base, "1/D"));
+}
+
+/// A points file "x y [z] value" with one row per row of the table (its coordinates as written).
+void writePoints(const fs::path& file, const Table& t, int dim, double (*value)(double x)) {
+  std::ofstream out(file);
+  out.precision(17);
+  out << "# x y" << (dim == 3 ? " z" : "") << " value\n";
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    out << t.at(i, "x") << " " << t.at(i, "y") << " ";
+    if (dim == 3) out << t.at(i, "z") << " ";
+    out << value(t.at(i, "x")) << "\n";
+  }
+}
+
+std::string setMu(const std::string& field) { return "frictionCoefficient " + field; }
+
+}  // namespace
+
+TEST_CASE("friction fields: every constant form equals the number (inclined crack, 2D)",
+          "[regression][field]") {
+  Case base("inclinedCrack", "field-base");
+  REQUIRE(base.solve() == 0);
+  const Table t = base.namedTable("1", "crack");
+  struct Variant {
+    const char* label;
+    std::string field;
+  };
+  const std::vector<Variant> variants = {
+      {"table", "{ type arclength; table ((0 0.4) (0.02 0.4) (1 0.4)); }"},
+      {"depth", "{ type depth; value 0.4; gradient 0; reference 0.5; }"},
+      {"points", "{ type points; file \"constant/mu.dat\"; }"},
+  };
+  for (const Variant& v : variants) {
+    DYNAMIC_SECTION(v.label) {
+      Case c("inclinedCrack", std::string("field-constant-") + v.label);
+      c.edit("constant/fractureProperties", "frictionCoefficient 0\\.4;", setMu(v.field));
+      writePoints(c.dir() / "constant" / "mu.dat", t, 2, [](double) { return 0.4; });
+      REQUIRE(c.solve() == 0);
+      INFO(c.log());
+      // The range the log states: the number at every node.
+      CHECK_THAT(c.log(), Catch::Contains("Fracture crack: frictionCoefficient from min 0.4 to "
+                                          "max 0.4 over " +
+                                          std::to_string(t.rows.size()) + " nodes"));
+      checkSameAs(base, c, "crack");
+    }
+  }
+}
+
+TEST_CASE("friction fields: a bonded half of the inclined crack sticks, the other half slips",
+          "[regression][field]") {
+  // μ_f = 0.4 for s < 0.05 (the slip tendency there, 1.73, exceeds it: slip) and 10 beyond
+  // (far above 1.73 and above what the slipping half adds at the transition: stick).
+  Case c("inclinedCrack", "field-bonded-half");
+  c.edit("constant/fractureProperties", "frictionCoefficient 0\\.4;",
+         setMu("{ type arclength; table ((0 0.4) (0.05 0.4) (0.0500001 10) (1 10)); }"));
+  REQUIRE(c.solve() == 0);
+  INFO(c.log());
+  CHECK_THAT(c.log(), Catch::Contains("frictionCoefficient from min 0.4 to max 10"));
+  const Table t = c.namedTable("1", "crack");
+  double maxSlip = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    maxSlip = std::max(maxSlip, std::abs(t.at(i, "slip")));
+  REQUIRE(maxSlip > 1e-6);  // the free half slips (analytic scale 6e-5 m for the whole crack)
+  int slipping = 0, sticking = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const double s = t.at(i, "s");
+    INFO("row " << i << ", s = " << s << ", state " << t.state[i]);
+    if (t.state[i] == "tip") continue;
+    const double sigmaN = t.at(i, "sigmaN"), tau = std::abs(t.at(i, "tau"));
+    REQUIRE(sigmaN < 0);  // compressed everywhere
+    if (s > 0.0505) {
+      // Bonded: no slip beyond the solver's tolerance (‖D‖ ≤ 1e-10 ‖Σ‖, D = γβ on stick
+      // nodes, so β is 1e-10 of the traction's slip scale), and |τ| within the bound.
+      CHECK(t.state[i] == "stick");
+      CHECK(std::abs(t.at(i, "slip")) <= 1e-6 * maxSlip);
+      CHECK(tau <= 10 * -sigmaN);
+      ++sticking;
+    } else if (s < 0.0495) {
+      // Free: Coulomb at its bound with μ_f = 0.4 (the tolerance 1e-10 and the table's 12
+      // digits: 1e-7 relative).
+      CHECK(t.state[i] == "slip");
+      CHECK(tau == Approx(0.4 * -sigmaN).epsilon(1e-7));
+      ++slipping;
+    }
+  }
+  CHECK(sticking >= 5);
+  CHECK(slipping >= 5);
+}
+
+TEST_CASE("friction fields: with mu_f growing with depth, Coulomb holds with each node's mu_f",
+          "[regression][field]") {
+  // μ_f(y) = 0.4 − 4 (y − 0.5): 0.23 at the upper tip (y = 0.5433), 0.57 at the lower one.
+  Case c("inclinedCrack", "field-depth");
+  c.edit("constant/fractureProperties", "frictionCoefficient 0\\.4;",
+         setMu("{ type depth; value 0.4; gradient -4; reference 0.5; }"));
+  REQUIRE(c.solve() == 0);
+  INFO(c.log());
+  CHECK_THAT(c.log(), Catch::Contains("frictionCoefficient from min 0.22") &&
+                          Catch::Contains("to max 0.57"));
+  const Table t = c.namedTable("1", "crack");
+  int slipping = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    INFO("row " << i << ", state " << t.state[i]);
+    if (t.state[i] == "tip") continue;
+    const double mu = 0.4 - 4 * (t.at(i, "y") - 0.5);
+    const double sigmaN = t.at(i, "sigmaN"), tau = std::abs(t.at(i, "tau"));
+    REQUIRE(sigmaN < 0);
+    if (t.state[i] == "slip") {
+      CHECK(tau == Approx(mu * -sigmaN).epsilon(1e-7));
+      ++slipping;
+    } else {
+      CHECK(t.state[i] == "stick");
+      CHECK(tau <= mu * -sigmaN * (1 + 1e-9));
+    }
+  }
+  // Slip tendency 1.73 against μ_f ≤ 0.57: the whole crack slips.
+  CHECK(slipping >= 10);
+}
+
+TEST_CASE(
+    "friction fields in 3D: constant forms equal the number; a points field holds node "
+    "by node",
+    "[regression][field][3d]") {
+  Case base(kCube, "field-3d-base");
+  REQUIRE(base.solve() == 0);
+  const Table t = base.namedTable("1", "fault");
+  SECTION("depth, no gradient") {
+    Case c(kCube, "field-3d-depth");
+    c.edit("constant/fractureProperties", "frictionCoefficient 0\\.2;",
+           setMu("{ type depth; value 0.2; gradient 0; }"));
+    REQUIRE(c.solve() == 0);
+    CHECK_THAT(c.log(), Catch::Contains("frictionCoefficient from min 0.2 to max 0.2"));
+    checkSameAs(base, c, "fault");
+  }
+  SECTION("points, the same value at every node") {
+    Case c(kCube, "field-3d-points");
+    c.edit("constant/fractureProperties", "frictionCoefficient 0\\.2;",
+           setMu("{ type points; file \"constant/mu.dat\"; }"));
+    writePoints(c.dir() / "constant" / "mu.dat", t, 3, [](double) { return 0.2; });
+    REQUIRE(c.solve() == 0);
+    checkSameAs(base, c, "fault");
+  }
+  SECTION("points, mu_f 2 for x < 0.5 and 0.2 beyond") {
+    Case c(kCube, "field-3d-halves");
+    c.edit("constant/fractureProperties", "frictionCoefficient 0\\.2;",
+           setMu("{ type points; file \"constant/mu.dat\"; }"));
+    const auto mu = [](double x) { return x < 0.5 ? 2.0 : 0.2; };
+    writePoints(c.dir() / "constant" / "mu.dat", t, 3, mu);
+    REQUIRE(c.solve() == 0);
+    INFO(c.log());
+    const Table h = c.namedTable("1", "fault");
+    REQUIRE(h.rows.size() == t.rows.size());
+    int slipLow = 0, stickHigh = 0;
+    for (std::size_t i = 0; i < h.rows.size(); ++i) {
+      INFO("row " << i << ", state " << h.state[i]);
+      if (h.state[i] == "tip") continue;
+      const double m = mu(h.at(i, "x")), sigmaN = h.at(i, "sigmaN"), tau = h.at(i, "tauMagnitude");
+      REQUIRE(sigmaN < 0);
+      if (h.state[i] == "slip") {
+        CHECK(tau == Approx(m * -sigmaN).epsilon(1e-7));
+        slipLow += m == 0.2;
+      } else {
+        CHECK(h.state[i] == "stick");
+        CHECK(tau <= m * -sigmaN * (1 + 1e-9));
+        stickHigh += m == 2.0;
+      }
+    }
+    // The base case slips on most nodes with 0.2; μ_f = 2 sticks everywhere on its own.
+    CHECK(slipLow >= 5);
+    CHECK(stickHigh >= 5);
+  }
+}
