@@ -201,3 +201,30 @@ TEST_CASE(
     CHECK(stickHigh >= 5);
   }
 }
+
+TEST_CASE("friction fields: a Tresca threshold along the crack bounds |tau| node by node",
+          "[regression][field]") {
+  // g(s) = 2 MPa at s = 0 to 8 MPa at s = 0.1 against |τ| = 4.33 MPa far from the crack: the
+  // low end slips at its own bound, the high end may hold.
+  Case c("inclinedCrack", "field-tresca");
+  c.edit("constant/fractureProperties", "law +coulomb;\\s*frictionCoefficient 0\\.4;",
+         "law tresca; threshold { type arclength; table ((0 2e6) (0.1 8e6) (1 8e6)); }");
+  REQUIRE(c.solve() == 0);
+  INFO(c.log());
+  CHECK_THAT(c.log(), Catch::Contains("Fracture crack: threshold from min 2e+06 to max 8e+06"));
+  const Table t = c.namedTable("1", "crack");
+  int slipping = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    INFO("row " << i << ", state " << t.state[i]);
+    if (t.state[i] == "tip") continue;
+    const double g = 2e6 + 6e6 * std::min(t.at(i, "s") / 0.1, 1.0), tau = std::abs(t.at(i, "tau"));
+    if (t.state[i] == "slip") {
+      CHECK(tau == Approx(g).epsilon(1e-7));
+      ++slipping;
+    } else {
+      CHECK(t.state[i] == "stick");
+      CHECK(tau <= g * (1 + 1e-9));
+    }
+  }
+  CHECK(slipping >= 5);
+}

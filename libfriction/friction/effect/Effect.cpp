@@ -2,16 +2,10 @@
 #include "friction/effect/Effect.hpp"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <optional>
 #include <sstream>
-#include <string_view>
 
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
-#include "friction/dict/Number.hpp"
 #include "friction/dict/NumberRows.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fracture/FractureSystem.hpp"

@@ -170,8 +170,8 @@ std::string FrictionField::describe() const {
       s << "points from " << file_ << rows;
       break;
     case Kind::depth:
-      s << "depth " << value_ << " + " << gradient_ << " (" << (dim_ == 2 ? "y" : "z") << " - "
-        << reference_ << ")";
+      s << "depth: " << value_ << " at " << (dim_ == 2 ? "y" : "z") << " = " << reference_
+        << " m, gradient " << gradient_ << " per m";
       break;
   }
   return s.str();

@@ -50,7 +50,7 @@ class FrictionField {
   /// The values at the given control nodes (all of one fracture), checked against the bounds.
   Eigen::VectorXd evaluate(const std::vector<const ControlNode*>& nodes) const;
   /// "0.6", or the field's form for the log ("arclength table (3 rows)", "points from
-  /// constant/mu.dat (41 rows)", "depth 0.6 + -0.01 (y - 0)").
+  /// constant/mu.dat (41 rows)", "depth: 0.6 at y = 0 m, gradient -0.01 per m").
   std::string describe() const;
 
  private:
