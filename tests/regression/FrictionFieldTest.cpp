@@ -228,3 +228,44 @@ TEST_CASE("friction fields: a Tresca threshold along the crack bounds |tau| node
   }
   CHECK(slipping >= 5);
 }
+
+TEST_CASE(
+    "friction fields on P2: a points file over vertices and midpoints equals the number; "
+    "the depth field holds at the midpoints too",
+    "[regression][field]") {
+  const auto p2 = [](Case& c) {
+    c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+  };
+  Case base("inclinedCrack", "field-P2-base");
+  p2(base);
+  REQUIRE(base.solve() == 0);
+  const Table t = base.namedTable("1", "crack");
+  SECTION("points, 0.4 at every node") {
+    Case c("inclinedCrack", "field-P2-points");
+    p2(c);
+    c.edit("constant/fractureProperties", "frictionCoefficient 0\\.4;",
+           setMu("{ type points; file \"constant/mu.dat\"; }"));
+    writePoints(c.dir() / "constant" / "mu.dat", t, 2, [](double) { return 0.4; });
+    REQUIRE(c.solve() == 0);
+    checkSameAs(base, c, "crack");
+  }
+  SECTION("depth: Coulomb with each node's own mu_f, midpoints included") {
+    Case c("inclinedCrack", "field-P2-depth");
+    p2(c);
+    c.edit("constant/fractureProperties", "frictionCoefficient 0\\.4;",
+           setMu("{ type depth; value 0.4; gradient -4; reference 0.5; }"));
+    REQUIRE(c.solve() == 0);
+    INFO(c.log());
+    const Table d = c.namedTable("1", "crack");
+    int slipping = 0;
+    for (std::size_t i = 0; i < d.rows.size(); ++i) {
+      INFO("row " << i << ", state " << d.state[i]);
+      if (d.state[i] != "slip") continue;
+      const double mu = 0.4 - 4 * (d.at(i, "y") - 0.5);
+      CHECK(std::abs(d.at(i, "tau")) == Approx(mu * -d.at(i, "sigmaN")).epsilon(1e-7));
+      ++slipping;
+    }
+    // P2 has twice the nodes of P1's 33, nearly all of them slipping (slip tendency 1.73).
+    CHECK(slipping >= 40);
+  }
+}
