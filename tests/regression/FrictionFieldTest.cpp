@@ -269,3 +269,34 @@ TEST_CASE(
     CHECK(slipping >= 40);
   }
 }
+
+TEST_CASE(
+    "friction fields: a cohesion field with depth, |tau| = c(y) - mu_f sigma_n where it "
+    "slips",
+    "[regression][field]") {
+  // c(y) = 0.5 MPa − 10 MPa/m (y − 0.5): 0.067 MPa at the upper tip, 0.93 MPa at the lower
+  // one, all below the driving τ_eff = 3.33 MPa: the crack slips, each node at its own bound.
+  Case c("inclinedCrack", "field-cohesion");
+  c.edit("constant/fractureProperties", "law +coulomb;",
+         "law coulombCohesion; cohesion { type depth; value 5e5; gradient -1e7; reference 0.5; }");
+  REQUIRE(c.solve() == 0);
+  INFO(c.log());
+  CHECK_THAT(c.log(), Catch::Contains("Fracture crack: cohesion from min 6") &&
+                          Catch::Contains(" Pa over 33 nodes"));
+  const Table t = c.namedTable("1", "crack");
+  int slipping = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    INFO("row " << i << ", state " << t.state[i]);
+    if (t.state[i] == "tip") continue;
+    const double bound = 5e5 - 1e7 * (t.at(i, "y") - 0.5) - 0.4 * t.at(i, "sigmaN");
+    const double tau = std::abs(t.at(i, "tau"));
+    if (t.state[i] == "slip") {
+      CHECK(tau == Approx(bound).epsilon(1e-7));
+      ++slipping;
+    } else {
+      CHECK(t.state[i] == "stick");
+      CHECK(tau <= bound * (1 + 1e-9));
+    }
+  }
+  CHECK(slipping >= 10);
+}

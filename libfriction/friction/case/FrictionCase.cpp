@@ -195,7 +195,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
     const FrictionField &mu = f.law->mu(), &c = f.law->cohesion();
     if (!mu.isConstant() || mu.value() > 0) log << ", frictionCoefficient " << mu.describe();
     if (!c.isConstant())
-      log << ", " << f.law->cohesionKey() << " " << c.describe() << " Pa";
+      log << ", " << f.law->cohesionKey() << " [Pa] " << c.describe();
     else if (c.value() > 0)
       log << ", threshold " << c.value() << " Pa";
     if (opening_) log << ", contact " << (f.unilateral ? "unilateral" : "bilateral");

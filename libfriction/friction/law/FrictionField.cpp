@@ -68,6 +68,24 @@ FrictionField FrictionField::read(const Dictionary& d, const std::string& key, B
                                          false, "", "no values: expected lines " + form);
     field.rows_ = r.rows;
     field.lines_ = r.lines;
+    // Two rows at one point with different values: which one a node takes would depend on the
+    // rows' order, so the file is refused.
+    std::vector<std::size_t> order(r.rows.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const auto point = [&](std::size_t i) {
+      return std::vector<double>(r.rows[i].begin(), r.rows[i].begin() + dim);
+    };
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return point(a) != point(b) ? point(a) < point(b) : a < b;
+    });
+    for (std::size_t i = 1; i < order.size(); ++i) {
+      const std::size_t a = order[i - 1], b = order[i];
+      if (point(a) == point(b) && r.rows[a][dim] != r.rows[b][dim])
+        throw InputError(SourceLocation{field.file_, r.lines[b]},
+                         "the same point as line " + std::to_string(r.lines[a]) +
+                             " with another value (" + formatNumber(r.rows[b][dim]) + ", not " +
+                             formatNumber(r.rows[a][dim]) + ")");
+    }
     if (f.found("maxDistance")) field.maxDistance_ = f.getScalar("maxDistance", Bounds::positive());
   } else {
     field.kind_ = Kind::depth;

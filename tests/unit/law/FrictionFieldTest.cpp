@@ -213,6 +213,13 @@ TEST_CASE("friction field: bad input names the file, the key and the node", "[un
     CHECK_THAT(e, Catch::Contains("bad.dat:2:") && Catch::Contains("'x y value'") &&
                       Catch::Contains("(2 items)"));
   }
+  SECTION("a points file with two values at one point") {
+    std::ofstream(caseDir() / "constant" / "bad.dat") << "0 0 0.5\n0.3 0.4 0.6\n0 0 0.7\n";
+    const std::string e =
+        errorOf("frictionCoefficient { type points; file \"constant/bad.dat\"; }", nodes);
+    CHECK_THAT(e, Catch::Contains("bad.dat:3:") && Catch::Contains("the same point as line 1") &&
+                      Catch::Contains("(0.7, not 0.5)"));
+  }
   SECTION("a missing file") {
     const std::string e =
         errorOf("frictionCoefficient { type points; file \"constant/none.dat\"; }", nodes);
