@@ -67,6 +67,9 @@ int main(int argc, char** argv) {
   if (args.count("listModels")) {
     std::cout << "friction laws (constant/fractureProperties, key 'law'): "
               << joinWords(FrictionLaw::names()) << "\n"
+              << "friction fields (constant/fractureProperties, frictionCoefficient, cohesion or "
+                 "threshold { type ...; }): "
+              << joinWords(FrictionField::typeNames()) << "\n"
               << "optimizers (system/frictionSolution, control/optimizer/type): "
               << joinWords(Optimizer::names()) << "\n"
               << "linear solvers (system/frictionSolution, linearSolver): "

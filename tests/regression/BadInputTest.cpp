@@ -668,3 +668,40 @@ TEST_CASE("what the reader accepts beyond OpenFOAM's rules reads as the plain fo
     CHECK(a[i].sigmaN == b[i].sigmaN);
   }
 }
+
+TEST_CASE("bad friction fields name file, line, key and the place where they fail",
+          "[regression][errors][field]") {
+  Case c("paperBenchmark", "bad-field");
+  split(c);
+  const std::string props = "constant/fractureProperties";
+  const fs::path file = c.dir() / props;
+  const auto mu = [&](const std::string& field) {
+    c.edit(props, "frictionCoefficient 0\\.2;", "frictionCoefficient " + field);
+    return lineOf(file, "frictionCoefficient {");
+  };
+  SECTION("a negative value at a node (the node named)") {
+    const int line = mu("{ type depth; value -0.1; gradient 0; }");
+    solverFails(c, {at(props, line), "'frictionCoefficient'", "the value -0.1 is not >= 0",
+                    "the fracture node at ("});
+  }
+  SECTION("a table that does not cover the fracture") {
+    const int line = mu("{ type arclength; table ((0 0.2) (0.001 0.2)); }");
+    solverFails(c, {at(props, line), "'frictionCoefficient'", "the table covers s in [0, 0.001]"});
+  }
+  SECTION("an unknown type lists the valid ones") {
+    const int line = mu("{ type linear; value 1; }");
+    solverFails(c, {at(props, line), "linear", "arclength, points, depth"});
+  }
+  SECTION("a malformed values file") {
+    mu("{ type arclength; file \"constant/mu.dat\"; }");
+    writeText(c.dir() / "constant/mu.dat", "# s mu\n0 0.2\n0.5 0.2 0.3\n");
+    solverFails(
+        c, {"constant/mu.dat:3:", "expected two numbers 's value'", "got '0.5 0.2 0.3' (3 items)"});
+  }
+  SECTION("a points file that misses nodes") {
+    mu("{ type points; file \"constant/mu.dat\"; }");
+    writeText(c.dir() / "constant/mu.dat", "0.5 0.5 0.2\n");
+    solverFails(c, {"'frictionCoefficient'", "no row of", "constant/mu.dat",
+                    "list every fracture node or set maxDistance"});
+  }
+}

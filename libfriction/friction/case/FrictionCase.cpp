@@ -119,7 +119,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
     // open").
     const bool unilateral =
         fd.getChoiceOr("contact", {"bilateral", "unilateral"}, "bilateral") == "unilateral";
-    fractures_.push_back({g.name, FrictionLaw::New(fd), unilateral});
+    fractures_.push_back({g.name, FrictionLaw::New(fd, caseDir, split_.mesh.dim), unilateral});
     opening_ |= unilateral;
   }
   fp.checkAllRead();
@@ -192,8 +192,12 @@ void FrictionCase::printSettings(std::ostream& log) const {
   if (fractures_.empty()) log << "Fractures: none (a plain elastic solve, no control loop)\n";
   for (const auto& f : fractures_) {
     log << "Fracture " << f.name << ": law " << f.law->name();
-    if (f.law->mu() > 0) log << ", frictionCoefficient " << f.law->mu();
-    if (f.law->cohesion() > 0) log << ", threshold " << f.law->cohesion() << " Pa";
+    const FrictionField &mu = f.law->mu(), &c = f.law->cohesion();
+    if (!mu.isConstant() || mu.value() > 0) log << ", frictionCoefficient " << mu.describe();
+    if (!c.isConstant())
+      log << ", " << f.law->cohesionKey() << " [Pa] " << c.describe();
+    else if (c.value() > 0)
+      log << ", threshold " << c.value() << " Pa";
     if (opening_) log << ", contact " << (f.unilateral ? "unilateral" : "bilateral");
     log << "\n";
   }
@@ -237,12 +241,27 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   const auto& nodes = system_->controlNodes();
   const Eigen::Index n = static_cast<Eigen::Index>(nodes.size());
 
-  // Per control node: ρ = c − μ σ_n from its fracture's law.
+  // Per control node: ρ = c − μ σ_n from its fracture's law, whose μ and c may vary along the
+  // fracture (FrictionField.hpp): evaluated here once, checked node by node, the range logged.
   mu_.resize(n);
   cohesion_.resize(n);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    mu_[k] = fractures_[nodes[k].fracture].law->mu();
-    cohesion_[k] = fractures_[nodes[k].fracture].law->cohesion();
+  for (std::size_t f = 0; f < fractures_.size(); ++f) {
+    std::vector<const ControlNode*> on;
+    std::vector<Eigen::Index> index;
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (nodes[k].fracture == static_cast<int>(f)) on.push_back(&nodes[k]), index.push_back(k);
+    const FrictionLaw& law = *fractures_[f].law;
+    const Eigen::VectorXd mu = law.mu().evaluate(on), c = law.cohesion().evaluate(on);
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      mu_[index[i]] = mu[static_cast<Eigen::Index>(i)];
+      cohesion_[index[i]] = c[static_cast<Eigen::Index>(i)];
+    }
+    const auto range = [&](const char* key, const Eigen::VectorXd& v, const char* unit) {
+      log << "Fracture " << fractures_[f].name << ": " << key << " from min " << v.minCoeff()
+          << " to max " << v.maxCoeff() << unit << " over " << v.size() << " nodes\n";
+    };
+    if (!law.mu().isConstant() && !on.empty()) range("frictionCoefficient", mu, "");
+    if (!law.cohesion().isConstant() && !on.empty()) range(law.cohesionKey().c_str(), c, " Pa");
   }
   // γ has units of stress/length; its scale-free default is E over the mean fracture edge
   // length h (docs/method.md §4): then γβ and τ are of the same size for slips of order h·τ/E.

@@ -2,16 +2,11 @@
 #include "friction/effect/Effect.hpp"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <optional>
 #include <sstream>
-#include <string_view>
 
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
-#include "friction/dict/Number.hpp"
+#include "friction/dict/NumberRows.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fracture/FractureSystem.hpp"
 
@@ -175,13 +170,14 @@ class FracturePressure : public Effect {
                "key 'values': a values file gives p along the arclength s of a fracture curve, "
                "which a fault surface of a 3D mesh does not have; give 'pressure' (a constant "
                "or a table) instead");
-      file_ =
-          (std::filesystem::path(caseDir) / d.getFileName("values")).lexically_normal().string();
-      std::ifstream in(file_, std::ios::binary);
-      if (!in || std::filesystem::is_directory(file_))
-        d.fail("values",
-               "key 'values': cannot open '" + file_ + "' (a file, relative to the case folder)");
-      readValues(std::string(std::istreambuf_iterator<char>(in), {}));
+      const std::string text = readValuesFile(d, "values", caseDir, file_);
+      const NumberRows rows = parseNumberRows(
+          file_, text, 2, "expected two numbers 's p' (arclength [m], pressure [Pa])", true, "s",
+          "no values: expected lines 's p'");
+      for (const auto& r : rows.rows) {
+        s_.push_back(r[0]);
+        p_.push_back(r[1]);
+      }
     } else {
       pressure_ = TimeFunction::read(d, "pressure", 1);
     }
@@ -201,52 +197,8 @@ class FracturePressure : public Effect {
   }
 
  private:
-  /// The values file: per line "s p", s the arclength [m] (increasing), p [Pa]; blank lines
-  /// and lines starting with '#' are skipped. Every number is read strictly (Number.hpp): the
-  /// values are interpolated linearly, so one misread value changes the load silently.
-  void readValues(std::string_view text) {
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte-order mark
-    const std::string expected = "expected two numbers 's p' (arclength [m], pressure [Pa])";
-    int lineNo = 0;
-    while (!text.empty()) {
-      ++lineNo;
-      const std::size_t eol = std::min(text.find('\n'), text.size());
-      const std::string_view line = text.substr(0, eol);
-      text.remove_prefix(std::min(eol + 1, text.size()));
-      std::vector<std::string_view> items;
-      for (std::size_t i = 0; i < line.size();) {
-        const std::size_t b = line.find_first_not_of(" \t\r", i);
-        if (b == std::string_view::npos) break;
-        const std::size_t e = std::min(line.find_first_of(" \t\r", b), line.size());
-        items.push_back(line.substr(b, e - b));
-        i = e;
-      }
-      if (items.empty() || items[0][0] == '#') continue;
-      const SourceLocation where{file_, lineNo};
-      const std::string got =
-          ", got '" + std::string(line.substr(0, line.find_last_not_of(" \t\r") + 1)) + "'";
-      if (items.size() != 2)
-        throw InputError(where, expected + got + " (" + std::to_string(items.size()) +
-                                    (items.size() == 1 ? " item)" : " items)"));
-      double v[2];
-      for (int k = 0; k < 2; ++k) {
-        const std::optional<double> x = parseNumber(items[k]);
-        if (!x) {
-          const std::string why = whyNotANumber(items[k]);
-          throw InputError(where, expected + got + ": '" + std::string(items[k]) + "' " +
-                                      (why.empty() ? "is not a number" : why));
-        }
-        v[k] = *x;
-      }
-      if (!s_.empty() && !(v[0] > s_.back()))
-        throw InputError(
-            where, expected + " with s increasing" + got + " after s = " + formatNumber(s_.back()));
-      s_.push_back(v[0]);
-      p_.push_back(v[1]);
-    }
-    if (s_.empty()) throw InputError(file_, "no values: expected lines 's p'");
-  }
-
+  /// The values file (NumberRows.hpp): per line "s p", s the arclength [m] (increasing), p
+  /// [Pa]. The values are interpolated linearly, constant beyond the ends.
   double interpolate(double s) const {
     if (s <= s_.front()) return p_.front();
     if (s >= s_.back()) return p_.back();

@@ -1,15 +1,18 @@
 // FrictionLaw: the friction bound ρ of a fracture, in the one form every law shares,
 //   ρ = c − μ σ_n   (σ_n < 0 in compression; ρ ≤ 0 means open: τ = 0),
-// run-time selectable by name from the table in FrictionLaw.cpp.
+// run-time selectable by name from the table in FrictionLaw.cpp. μ and c are fields along the
+// fracture (FrictionField.hpp): a number, or a table in arclength, values at points, or a
+// function of depth; the case evaluates them at its fracture nodes.
 #pragma once
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
-namespace friction {
+#include "friction/law/FrictionField.hpp"
 
-class Dictionary;
+namespace friction {
 
 class FrictionLaw {
  public:
@@ -17,58 +20,63 @@ class FrictionLaw {
 
   /// Names in the selection table (for messages, -listModels and the README).
   static std::vector<std::string> names();
-  /// Reads 'law' and that law's keys from a fracture's dictionary.
-  static std::unique_ptr<FrictionLaw> New(const Dictionary& dict);
+  /// Reads 'law' and that law's keys from a fracture's dictionary. caseDir: the files a field
+  /// names are relative to it; dim: the mesh's dimension (2 or 3).
+  static std::unique_ptr<FrictionLaw> New(const Dictionary& dict, const std::string& caseDir,
+                                          int dim);
 
   virtual std::string name() const = 0;
   /// μ in ρ = c − μ σ_n (dimensionless).
-  virtual double mu() const = 0;
+  virtual const FrictionField& mu() const { return zero_; }
   /// c in ρ = c − μ σ_n [Pa].
-  virtual double cohesion() const = 0;
+  virtual const FrictionField& cohesion() const { return zero_; }
+  /// The dictionary key c is read from ('threshold' or 'cohesion'; "" when c = 0).
+  virtual std::string cohesionKey() const { return ""; }
+
+ private:
+  FrictionField zero_;
 };
 
 /// τ = 0 on the fracture.
 class Frictionless : public FrictionLaw {
  public:
   std::string name() const override { return "frictionless"; }
-  double mu() const override { return 0; }
-  double cohesion() const override { return 0; }
 };
 
 /// |τ| ≤ g, a fixed threshold g > 0 [Pa] ('threshold').
 class Tresca : public FrictionLaw {
  public:
-  explicit Tresca(double g) : g_(g) {}
+  explicit Tresca(FrictionField g) : g_(std::move(g)) {}
   std::string name() const override { return "tresca"; }
-  double mu() const override { return 0; }
-  double cohesion() const override { return g_; }
+  const FrictionField& cohesion() const override { return g_; }
+  std::string cohesionKey() const override { return "threshold"; }
 
  private:
-  double g_;
+  FrictionField g_;
 };
 
 /// |τ| ≤ −μ_f σ_n with μ_f ≥ 0 ('frictionCoefficient').
 class Coulomb : public FrictionLaw {
  public:
-  explicit Coulomb(double muF) : mu_(muF) {}
+  explicit Coulomb(FrictionField muF) : mu_(std::move(muF)) {}
   std::string name() const override { return "coulomb"; }
-  double mu() const override { return mu_; }
-  double cohesion() const override { return 0; }
+  const FrictionField& mu() const override { return mu_; }
 
  private:
-  double mu_;
+  FrictionField mu_;
 };
 
 /// |τ| ≤ c − μ_f σ_n: Coulomb with cohesion c ≥ 0 [Pa] ('frictionCoefficient', 'cohesion').
 class CoulombCohesion : public FrictionLaw {
  public:
-  CoulombCohesion(double muF, double c) : mu_(muF), c_(c) {}
+  CoulombCohesion(FrictionField muF, FrictionField c) : mu_(std::move(muF)), c_(std::move(c)) {}
   std::string name() const override { return "coulombCohesion"; }
-  double mu() const override { return mu_; }
-  double cohesion() const override { return c_; }
+  const FrictionField& mu() const override { return mu_; }
+  const FrictionField& cohesion() const override { return c_; }
+  std::string cohesionKey() const override { return "cohesion"; }
 
  private:
-  double mu_, c_;
+  FrictionField mu_, c_;
 };
 
 }  // namespace friction
