@@ -10,7 +10,7 @@
 #     "~… left", peak memory, dates), which differs from run to run of the same binary;
 #     and after writing every absolute path into the work folders or a build tree as <work>, <build>/ (two builds
 #     live in different folders);
-#   * gmsh's own log (it stamps the date);
+#   * gmsh's own log (gmsh.log, log.gmsh: it stamps the date and the source path);
 #   * the runs that a signal or a kill stops at a moment the test does not fix (where the
 #     run stops depends on the machine's load): noDataLoss/{sigint,sigterm},
 #     noDataLoss/killRestart/{kill*,random}, and the logs of solver/*-secondSignal and
@@ -42,7 +42,7 @@ while IFS= read -r -d '' f; do
   esac
   if [ ! -e "$b/$rel" ]; then echo "only in $a: $rel"; status=1; continue; fi
   case "$(basename "$rel")" in
-    gmsh.log) continue ;;
+    gmsh.log | log.gmsh) continue ;;
     log.* | *.log)
       cmp -s <(normalise "$f") <(normalise "$b/$rel") || { echo "differs: $rel"; status=1; } ;;
     *) cmp -s "$f" "$b/$rel" || cmp -s <(onlyPaths "$f") <(onlyPaths "$b/$rel") ||
