@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 
@@ -135,6 +136,16 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
     w.entry("triangles", tris);
   }
   w.entry("regions", m.cellRegion);
+  // [beyond] The regions' names (constant/mechanicalProperties may key materials by them),
+  // written only when the cells lie in several regions: a one-region mesh needs no name to
+  // take one material, and its split mesh stays as it was. Optional on reading.
+  if (!m.regionNames.empty() &&
+      std::adjacent_find(m.cellRegion.begin(), m.cellRegion.end(), std::not_equal_to<int>()) !=
+          m.cellRegion.end()) {
+    w.beginDict("regionNames");
+    for (const auto& [number, name] : m.regionNames) w.entry(name, number);
+    w.endDict();
+  }
 
   w.beginDict("patches");
   for (const auto& [label, name] : m.labelNames) {
@@ -298,6 +309,9 @@ SplitMesh readSplitMesh(const std::string& path) {
     dict.fail("regions", "key 'regions': " + std::to_string(m.cellRegion.size()) +
                              " entries, expected one per " + cell + " (" +
                              std::to_string(m.numCells()) + ")");
+  if (const Dictionary* names = dict.findDict("regionNames"))
+    for (const std::string& name : names->keys())
+      m.regionNames[static_cast<int>(names->getInt(name, Bounds::nonNegative()))] = name;
 
   const Dictionary& patches = dict.subDict("patches");
   for (const std::string& name : patches.keys()) {
