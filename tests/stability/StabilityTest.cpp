@@ -582,7 +582,7 @@ TEST_CASE("stability: a stiffness contrast of 1e4 across a layer interface the c
   // the interface carry away from the crack (|x − 1/2| > 1/4) is the same from below and from
   // above (continuity of traction, which the discrete equilibrium holds only weakly: per cell
   // the stresses are a P1 / P2 field's, so the comparison is of the means over the interface,
-  // with the tolerance measured and stated below).
+  // with the tolerance measured and stated below). Both sides are on rollers.
   const double p = 1e7;
   for (int order : {1, 2})
     for (const char* stiff : {"caprock", "reservoir"}) {
@@ -600,6 +600,16 @@ TEST_CASE("stability: a stiffness contrast of 1e4 across a layer interface the c
                    "; nu 0.25; }\n    caprock { E " + (capStiff ? "1e13" : "1e9") +
                    "; nu 0.25; }\n}");
         if (order == 2) c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+        // Rollers on both sides: away from the crack the state is uniaxial strain, so what the
+        // interface carries there is known (σ_yy = −p, σ_xy = 0), with no free-edge singularity
+        // where the interface meets the free right side.
+        c.edit("0/D", "right +\\{ type free; \\}",
+               "right   { type fixedDisplacement; components (x); value (0 0); }");
+        // The stop rule at 1e-8: the contrast multiplies K's condition number by 1e4, and the
+        // residual of the state written carries that round-off (measured on P2, stiff caprock,
+        // right side free: Newton's model 9e-15, the state written 3.6e-10 against the default
+        // 1e-10, an honest 'inaccurate'); 1e-8 is the accuracy the contrast leaves.
+        c.edit("system/frictionSolution", "tolerance +1e-10;", "tolerance 1e-8;");
         const int rc = c.solve();
         checkRun(c, {"crack"}, rc);
         REQUIRE(rc == 0);
@@ -655,11 +665,13 @@ TEST_CASE("stability: a stiffness contrast of 1e4 across a layer interface the c
         const double sxy[2] = {shear[0] / length[0], shear[1] / length[1]};
         INFO("mean sigma_yy below " << syy[0] << ", above " << syy[1] << "; sigma_xy below "
                                     << sxy[0] << ", above " << sxy[1]);
-        // Tolerance: see the measured values in the test's comment.
-        CHECK(std::abs(syy[0] - syy[1]) <= 0.05 * p);
-        CHECK(std::abs(sxy[0] - sxy[1]) <= 0.05 * p);
-        // Away from the crack the column carries the top's load: σ_yy ≈ −p.
-        CHECK(std::abs(syy[0] + p) <= 0.2 * p);
+        // Measured (P1 and P2, either layer stiff): the two sides' mean σ_yy differ by 0.2 … 1.4 %
+        // of p, their mean σ_xy by at most 0.19 % of p, and σ_yy is within 0.3 % of −p: the
+        // bounds are two to three times that.
+        CHECK(std::abs(syy[0] - syy[1]) <= 0.03 * p);
+        CHECK(std::abs(sxy[0] - sxy[1]) <= 0.005 * p);
+        CHECK(std::abs(syy[0] + p) <= 0.01 * p);
+        CHECK(std::abs(syy[1] + p) <= 0.01 * p);
       }
     }
 }
