@@ -95,7 +95,12 @@ MaterialMap MaterialMap::read(const Dictionary& dict, const Mesh& mesh) {
         entries.fail(key, "'" + key + "' is no region of the mesh " + mesh.source +
                               suggestionText(key, candidates) +
                               " (regions: " + joinWords(available) +
-                              "; an entry is a region's name, region<number>, or 'default')");
+                              "; an entry is a region's name, region<number>, or 'default'" +
+                              (mesh.regionNames.empty()
+                                   ? "; the mesh names no region (a split mesh keeps the names "
+                                     "only when its cells lie in several regions): use "
+                                     "region<number>)"
+                                   : ")"));
       if (!target->entry.empty())
         entries.fail(key, "region " + describe(*target, mesh.dim) + " has two entries, '" +
                               target->entry + "' and '" + key + "' (expected one per region)");

@@ -135,6 +135,13 @@ TEST_CASE("fe material map: mistakes are InputErrors with line and key", "[fe][m
              Catch::StartsWith("mech:1: key 'regions': expected a sub-dictionary"));
   CHECK_THAT(errorOf("regions { reservoir 3; }\n", mesh),
              Catch::StartsWith("mech:1: key 'reservoir': expected a sub-dictionary"));
+  // A mesh without names (a split mesh of one region keeps none): the way out.
+  Mesh unnamed = mesh;
+  unnamed.regionNames.clear();
+  CHECK_THAT(
+      errorOf("regions { reservoir { E 1e9; nu 0.2; } default { E 1e9; nu 0.2; } }\n", unnamed),
+      Catch::EndsWith("the mesh names no region (a split mesh keeps the names only when "
+                      "its cells lie in several regions): use region<number>)"));
   // A number that no cell carries.
   CHECK_THAT(errorOf("regions { region7 { E 1e9; nu 0.2; } default { E 1e9; nu 0.2; } }\n", mesh),
              Catch::StartsWith("mech:1: 'region7' is no region of the mesh"));
