@@ -206,6 +206,16 @@ TEST_CASE("layered rock: the crack across the interface sees the stiff layer's E
   for (const Row& r : rows)
     if (r.state == "slip") ++slipping;
   CHECK(slipping > 0);
+  CHECK_THAT(c.log(), !Catch::Contains("P1 locks"));
+
+  // P1's locking warning names the region whose ν is near 1/2, and only that one.
+  Case w("tests:layeredRock", "layered-crack-nu/layeredRock");
+  makeMesh(w, 1);
+  w.edit("constant/mechanicalProperties", "caprock +\\{ E 30e9; nu 0.3; \\}",
+         "caprock { E 30e9; nu 0.49; }");
+  REQUIRE(w.solve() == 0);
+  CHECK_THAT(w.log(), Catch::Contains("Warning: nu = 0.49 in region caprock with P1 elements"));
+  CHECK_THAT(w.log(), !Catch::Contains("in region reservoir"));
 }
 
 TEST_CASE("layered rock: mistakes in the regions form are named", "[regression][materials]") {
