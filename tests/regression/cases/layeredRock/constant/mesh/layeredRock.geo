@@ -1,8 +1,9 @@
 // Mesh of the layered-rock regression tests: the unit square [0,1]^2 (metres) in two layers,
 // "reservoir" below y = 1/2 and "caprock" above, optionally (crack = 1) cut by a straight crack
-// of half-length a at angle theta that crosses the interface at its centre (0.5, 0.5).
+// of half-length a at angle theta that crosses the interface at its centre (0.5, 0.5), or
+// (crack = 2) by a fracture along the whole interface.
 //
-//   physical curves   1 "bottom", 2 "right", 3 "top", 4 "left", 5 "crack" (if crack = 1)
+//   physical curves   1 "bottom", 2 "right", 3 "top", 4 "left", 5 "crack" (if crack = 1, 2)
 //   physical surfaces 1 "reservoir", 2 "caprock"
 //
 // The crack has 2 Round(a/h) equal segments, half in each layer, so that a node lies on the
@@ -10,7 +11,7 @@
 //   gmsh -2 -format msh41 -setnumber crack 1 layeredRock.geo -o layeredRock.msh
 
 DefineConstant[
-  crack = {1,    Name "Parameters/1Crack (1) or none (0)"},
+  crack = {1,    Name "Parameters/1Inclined crack (1), none (0), along the interface (2)"},
   a     = {0.2,  Name "Parameters/2Crack half-length a [m]"},
   theta = {60,   Name "Parameters/3Crack angle from the x axis [deg]"},
   h     = {0.025, Name "Parameters/4Mesh size along the crack h [m]"},
@@ -45,7 +46,7 @@ Plane Surface(1) = {1};
 Curve Loop(2) = {-7, 3, 4, 5, -8};
 Plane Surface(2) = {2};
 
-If (crack)
+If (crack == 1)
   Point(8) = {0.5 - a*c, 0.5 - a*s, 0, h};
   Point(9) = {0.5 + a*c, 0.5 + a*s, 0, h};
   Line(9) = {8, 7};
@@ -54,6 +55,10 @@ If (crack)
   Curve{9} In Surface{1};
   Curve{10} In Surface{2};
   Physical Curve("crack", 5) = {9, 10};
+EndIf
+If (crack == 2)
+  Transfinite Curve{7, 8} = Round(0.5/h) + 1;
+  Physical Curve("crack", 5) = {7, 8};
 EndIf
 
 Physical Curve("bottom", 1) = {1};
