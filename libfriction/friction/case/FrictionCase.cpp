@@ -210,7 +210,8 @@ void FrictionCase::printSettings(std::ostream& log) const {
     const Material& m = materials_->materials().front();
     log << "Material: E " << m.youngModulus() << " Pa, nu " << m.poissonRatio() << kind << "\n";
   } else {
-    log << "Materials: " << materials_->regions().size() << " regions" << kind
+    log << "Materials: " << materials_->regions().size()
+        << (materials_->regions().size() == 1 ? " region" : " regions") << kind
         << "; E for gammaRelative and alphaRelative " << youngScale_
         << (split_.fractures.empty() ? " Pa (the largest E)\n"
                                      : " Pa (the largest E of the cells that touch a fracture)\n");
