@@ -14,6 +14,7 @@
 #include "friction/core/Assert.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
+#include "friction/dict/Tokenizer.hpp"
 #include "friction/fracture/SignConventions.hpp"
 #include "friction/mesh/MeshTopology.hpp"
 
@@ -138,12 +139,16 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
   w.entry("regions", m.cellRegion);
   // [beyond] The regions' names (constant/mechanicalProperties may key materials by them),
   // written only when the cells lie in several regions: a one-region mesh needs no name to
-  // take one material, and its split mesh stays as it was. Optional on reading.
+  // take one material, and its split mesh stays as it was. Optional on reading. A name that is
+  // no dictionary word, or that two regions share, is left out (region<N> reaches it).
   if (!m.regionNames.empty() &&
       std::adjacent_find(m.cellRegion.begin(), m.cellRegion.end(), std::not_equal_to<int>()) !=
           m.cellRegion.end()) {
+    std::map<std::string, int> uses;
+    for (const auto& entry : m.regionNames) ++uses[entry.second];
     w.beginDict("regionNames");
-    for (const auto& [number, name] : m.regionNames) w.entry(name, number);
+    for (const auto& [number, name] : m.regionNames)
+      if (detail::isSafeWord(name) && uses[name] == 1) w.entry(name, number);
     w.endDict();
   }
 

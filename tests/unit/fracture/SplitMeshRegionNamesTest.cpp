@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -61,5 +62,12 @@ TEST_CASE("the split mesh keeps region names when the cells lie in several regio
     const SplitMesh r = readSplitMesh(path);
     CHECK(r.mesh.regionNames == m.regionNames);
     CHECK(r.mesh.cellRegion == m.cellRegion);
+
+    // A name that is no dictionary word (gmsh allows "upper layer") is left out, and the
+    // split mesh still reads: that region is region2 to the materials.
+    m.regionNames[2] = "upper layer";
+    writeSplitMesh(splitFractures(m, {{"crack", 5, {}}}), path);
+    const SplitMesh spaced = readSplitMesh(path);
+    CHECK(spaced.mesh.regionNames == std::map<int, std::string>{{1, "reservoir"}});
   }
 }
