@@ -91,8 +91,28 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   split_ = readSplitMesh(splitPath);
   checkSplitMeshCurrent(caseDir, split_);
   const Dictionary mech = readCaseFile(caseDir, "constant/mechanicalProperties");
-  material_ = std::make_unique<Material>(Material::read(mech, split_.mesh.dim));
+  materials_ = std::make_unique<MaterialMap>(MaterialMap::read(mech, split_.mesh));
   mech.checkAllRead();
+  if (materials_->uniform() || split_.fractures.empty()) {
+    youngScale_ = materials_->maxYoungModulus();
+  } else {
+    // The cells with a vertex on a fracture (either side's copy): their stiffness sets the
+    // size of the tractions a slip makes.
+    const Mesh& m = split_.mesh;
+    std::vector<char> onFracture(m.points.size(), 0);
+    for (const auto& g : split_.fractures) {
+      for (Index v : g.plus) onFracture[v] = 1;
+      for (Index v : g.minus) onFracture[v] = 1;
+    }
+    std::vector<Index> touching;
+    for (Index c = 0; c < m.numCells(); ++c)
+      for (Index v : m.cell(c))
+        if (onFracture[v]) {
+          touching.push_back(c);
+          break;
+        }
+    youngScale_ = materials_->maxYoungModulus(touching);
+  }
 
   std::vector<int> fractureLabels;
   for (const auto& g : split_.fractures) fractureLabels.push_back(g.label);
@@ -182,13 +202,29 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
 }
 
 void FrictionCase::printSettings(std::ostream& log) const {
-  log << "Case: " << caseDir_ << "\n"
-      << "Material: E " << material_->youngModulus() << " Pa, nu " << material_->poissonRatio()
-      << (split_.mesh.dim == 3       ? ", 3D"
-          : material_->planeStress() ? ", plane stress"
-                                     : ", plane strain")
-      << "\n"
-      << "Elements: P" << order_ << ", linear solver " << linearSolver_ << "\n";
+  const std::string kind = split_.mesh.dim == 3        ? ", 3D"
+                           : materials_->planeStress() ? ", plane stress"
+                                                       : ", plane strain";
+  log << "Case: " << caseDir_ << "\n";
+  if (materials_->uniform()) {
+    const Material& m = materials_->materials().front();
+    log << "Material: E " << m.youngModulus() << " Pa, nu " << m.poissonRatio() << kind << "\n";
+  } else {
+    log << "Materials: " << materials_->regions().size()
+        << (materials_->regions().size() == 1 ? " region" : " regions") << kind
+        << "; E for gammaRelative and alphaRelative " << youngScale_
+        << (split_.fractures.empty() ? " Pa (the largest E)\n"
+                                     : " Pa (the largest E of the cells that touch a fracture)\n");
+    for (const MaterialMap::Region& r : materials_->regions()) {
+      const Material& m = materials_->materials()[r.material];
+      log << "Material " << (r.name.empty() ? "region" + std::to_string(r.number) : r.name)
+          << " (region " << r.number << ", " << r.cells
+          << (split_.mesh.dim == 3 ? " tetrahedra" : " triangles")
+          << (r.entry == "default" ? ", entry default" : "") << "): E " << m.youngModulus()
+          << " Pa, nu " << m.poissonRatio() << "\n";
+    }
+  }
+  log << "Elements: P" << order_ << ", linear solver " << linearSolver_ << "\n";
   if (fractures_.empty()) log << "Fractures: none (a plain elastic solve, no control loop)\n";
   for (const auto& f : fractures_) {
     log << "Fracture " << f.name << ": law " << f.law->name();
@@ -234,7 +270,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
 }
 
 FactorStatus FrictionCase::setup(std::ostream& log) {
-  system_ = std::make_unique<FractureSystem>(split_, order_, *material_);
+  system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
   bcs_->fix(system_->dirichlet());
   findFloatingParts();
   const FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());
@@ -266,9 +302,9 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   // γ has units of stress/length; its scale-free default is E over the mean fracture edge
   // length h (docs/method.md §4): then γβ and τ are of the same size for slips of order h·τ/E.
   const double h = meanFractureEdge();
-  if (!gammaAbsolute_) gamma_ = h > 0 ? gammaRelative_ * material_->youngModulus() / h : 1.0;
+  if (!gammaAbsolute_) gamma_ = h > 0 ? gammaRelative_ * youngScale_ / h : 1.0;
   if (gammaNGiven_ == GammaNGiven::relative)
-    gammaN_ = h > 0 ? gammaNRelative_ * material_->youngModulus() / h : 1.0;
+    gammaN_ = h > 0 ? gammaNRelative_ * youngScale_ / h : 1.0;
   else if (gammaNGiven_ == GammaNGiven::sameAsGamma)
     gammaN_ = gamma_;
   unilateral_.resize(n);
@@ -290,7 +326,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     // 0.2 on faultInCube and 0.5 on the penny crack a/4 with the P1 scale, and converges at
     // 0.1 and 0.3).
     if (split_.mesh.dim == 3) w = std::sqrt(w / (order_ == 2 ? 120 : 6));
-    if (std::isfinite(w)) optimizer_->setStepScale(std::pow(w / material_->youngModulus(), 2));
+    if (std::isfinite(w)) optimizer_->setStepScale(std::pow(w / youngScale_, 2));
   }
   slip_ = Eigen::VectorXd::Zero(system_->blockSize() * n);
 
@@ -301,10 +337,23 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       << " fracture control nodes\n";
   // P1 simplices lock for nearly incompressible material (the discrete divergence-free
   // space is too small): the displacement comes out too small. P2 copes far better.
-  if (order_ == 1 && !material_->planeStress() && material_->poissonRatio() > 0.45)
-    log << "Warning: nu = " << std::setprecision(12) << material_->poissonRatio()
-        << " with P1 elements: P1 locks for nearly incompressible material (displacements and "
-           "slip come out too small); use elementOrder 2\n";
+  if (order_ == 1 && !materials_->planeStress()) {
+    if (materials_->uniform()) {
+      if (materials_->maxPoissonRatio() > 0.45)
+        log << "Warning: nu = " << std::setprecision(12) << materials_->maxPoissonRatio()
+            << " with P1 elements: P1 locks for nearly incompressible material (displacements "
+               "and slip come out too small); use elementOrder 2\n";
+    } else {
+      for (const MaterialMap::Region& r : materials_->regions()) {
+        const double nu = materials_->materials()[r.material].poissonRatio();
+        if (r.cells > 0 && nu > 0.45)
+          log << "Warning: nu = " << std::setprecision(12) << nu << " in region "
+              << (r.name.empty() ? "region" + std::to_string(r.number) : r.name)
+              << " with P1 elements: P1 locks for nearly incompressible material (displacements "
+                 "and slip come out too small there); use elementOrder 2\n";
+      }
+    }
+  }
   // A part that only fractures hold factors fine (the unsplit body is whole), but where its
   // fractures cannot carry its load it slides without bound: say so before the run.
   for (const FloatingPart& p : floating_)
@@ -497,7 +546,7 @@ std::string FrictionCase::factorFailureDiagnosis() const {
   // 1. Scaling: entries beyond double precision (the case's units).
   if (!std::isfinite(f.maxAbsEntry()) || f.maxAbsEntry() > 1e250) {
     s << "its entries overflow double precision (largest |K_ij| " << f.maxAbsEntry()
-      << ", Young's modulus E = " << material_->youngModulus()
+      << ", Young's modulus E = " << materials_->maxYoungModulus()
       << " Pa); express the case in units that keep E and the stresses well below 1e300 "
          "(e.g. MPa or GPa for rock)";
     return s.str();
@@ -572,8 +621,8 @@ std::string FrictionCase::factorFailureDiagnosis() const {
     << (m.dim == 3 ? "tetrahedron" : "triangle") << ", at (" << where.x() << ", " << where.y();
   if (m.dim == 3) s << ", " << where.z();
   s << "), has aspect ratio (longest edge / height) " << worst << ", nu = " << std::setprecision(12)
-    << material_->poissonRatio() << "; remesh without slivers (aspect ratio below ~1e6)"
-    << (material_->poissonRatio() > 0.49 ? " and keep nu below 0.5 by a margin" : "");
+    << materials_->maxPoissonRatio() << "; remesh without slivers (aspect ratio below ~1e6)"
+    << (materials_->maxPoissonRatio() > 0.49 ? " and keep nu below 0.5 by a margin" : "");
   return s.str();
 }
 
@@ -937,7 +986,7 @@ void FrictionCase::judgeStep(StepResult& r) const {
     r.report.status = OptimizerStatus::diverged;
     std::ostringstream s;
     s << "non-finite " << joinWords(bad)
-      << ": the numbers overflow double precision (E = " << material_->youngModulus()
+      << ": the numbers overflow double precision (E = " << materials_->maxYoungModulus()
       << " Pa; J = ½‖D‖² squares the stresses); express the case "
       << "in units that keep E and the stresses well below 1e150 (e.g. MPa or GPa)";
     addNote(s.str());
@@ -954,7 +1003,7 @@ void FrictionCase::judgeStep(StepResult& r) const {
       << (r.report.history.empty() ? 0.0 : r.report.history.back().relResidual)
       << " but the state written has " << r.relResidual << " > tolerance " << rule.tolerance
       << ": round-off of an ill-conditioned system (nu = " << std::setprecision(12)
-      << material_->poissonRatio() << std::setprecision(3) << ", smallest pivot ratio "
+      << materials_->maxPoissonRatio() << std::setprecision(3) << ", smallest pivot ratio "
       << sys.factorization().minPivotRatio()
       << "); loosen the tolerance, use elementOrder 2, or remesh without slivers";
     addNote(s.str());

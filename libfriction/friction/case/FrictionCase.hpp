@@ -28,7 +28,7 @@
 #include "friction/core/AtomicFile.hpp"
 #include "friction/core/OutputError.hpp"
 #include "friction/effect/Effect.hpp"
-#include "friction/fe/Material.hpp"
+#include "friction/fe/MaterialMap.hpp"
 #include "friction/fracture/FractureSystem.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/law/FrictionLaw.hpp"
@@ -124,7 +124,11 @@ class FrictionCase {
   std::string caseDir_;
   std::unique_ptr<TimeControl> time_;
   SplitMesh split_;
-  std::unique_ptr<Material> material_;
+  std::unique_ptr<MaterialMap> materials_;
+  /// The E of γ's and the gradient step's scale-free defaults [Pa]: the material's E, or with
+  /// several materials the largest E among the cells that touch a fracture (the stiffest rock
+  /// the fractures load; the largest E of all without fractures).
+  double youngScale_ = 0;
   std::vector<std::unique_ptr<Effect>> effects_;
   std::vector<std::string> skippedEffects_;  ///< listed but 'active no'
   std::unique_ptr<BoundaryConditions> bcs_;

@@ -65,7 +65,8 @@ double lameLambda(const Material& material) {
 }
 
 template <int dim>
-Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V, const Material& material) {
+Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V,
+                                              const MaterialMap& materials) {
   const Mesh& mesh = V.mesh();
   const Index nn = V.numNodes(), nc = V.numCells();
   const int npc = V.nodesPerCell();
@@ -121,11 +122,14 @@ Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V, const Mate
 
   // Element loop. P1 gradients are constant (one point); for P2 the integrand ∇φ_i · ∇φ_j is
   // quadratic, so the degree-2 rule is exact.
-  const double lam = lameLambda<dim>(material), mu = material.mu();
+  // The same λ, μ for every cell of a homogeneous body (the uniform map's ofCell is that one
+  // material).
   const SimplexQuadrature<dim> rule = simplexQuadrature<dim>(V.degree() == 1 ? 0 : 2);
   ElementMatrix<dim> ke;
   for (Index c = 0; c < nc; ++c) {
     const NodeList nodes = V.cellNodes(c);
+    const Material& material = materials.ofCell(c);
+    const double lam = lameLambda<dim>(material), mu = material.mu();
     elementStiffness<dim>(V.degree(), cellGeometry<dim>(mesh, c), lam, mu, rule, ke);
     // Scatter: column node b, row node a at position k of adj(b).
     for (int j = 0; j < npc; ++j) {
@@ -245,12 +249,12 @@ SimplexPoint<dim> displacementAt(const LagrangeSpace& V, const Eigen::VectorXd& 
 
 }  // namespace
 
-ElasticityAssembler::ElasticityAssembler(const LagrangeSpace& space, const Material& material)
-    : space_(&space), material_(&material) {}
+ElasticityAssembler::ElasticityAssembler(const LagrangeSpace& space, const MaterialMap& materials)
+    : space_(&space), materials_(materials) {}
 
 Eigen::SparseMatrix<double> ElasticityAssembler::stiffness() const {
   return dispatch(space_->mesh(), [&](auto d) {
-    return assembleStiffness<decltype(d)::value>(*space_, *material_);
+    return assembleStiffness<decltype(d)::value>(*space_, materials_);
   });
 }
 
@@ -382,11 +386,12 @@ Eigen::Matrix3d ElasticityAssembler::strain(const Eigen::VectorXd& u, Index cell
 Eigen::Matrix3d ElasticityAssembler::stress(const Eigen::VectorXd& u, Index cell,
                                             const Point& x) const {
   const Eigen::Matrix3d e = strain(u, cell, x);
-  if (space_->dim() == 3) return material_->stress3d(e);
+  const Material& material = materials_.ofCell(cell);
+  if (space_->dim() == 3) return material.stress3d(e);
   const Eigen::Matrix2d e2 = e.topLeftCorner<2, 2>();
   Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
-  sigma.topLeftCorner<2, 2>() = material_->stress(e2);
-  sigma(2, 2) = material_->outOfPlaneStress(e2);
+  sigma.topLeftCorner<2, 2>() = material.stress(e2);
+  sigma(2, 2) = material.outOfPlaneStress(e2);
   return sigma;
 }
 
@@ -410,7 +415,7 @@ Eigen::Matrix2d ElasticityAssembler::strain(const Eigen::VectorXd& u, Index cell
 
 Eigen::Matrix2d ElasticityAssembler::stress(const Eigen::VectorXd& u, Index cell,
                                             const Vector2& x) const {
-  return material_->stress(strain(u, cell, x));
+  return materials_.ofCell(cell).stress(strain(u, cell, x));
 }
 
 ErrorNorms ElasticityAssembler::errorNorms(const Eigen::VectorXd& u, const VectorField& exact,

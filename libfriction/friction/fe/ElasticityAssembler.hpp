@@ -19,7 +19,7 @@
 
 #include "friction/core/Types.hpp"
 #include "friction/fe/LagrangeSpace.hpp"
-#include "friction/fe/Material.hpp"
+#include "friction/fe/MaterialMap.hpp"
 
 namespace friction {
 
@@ -38,11 +38,15 @@ struct ErrorNorms {
 
 class ElasticityAssembler {
  public:
-  /// The assembler keeps references to both: they must outlive it.
-  ElasticityAssembler(const LagrangeSpace& space, const Material& material);
+  /// The assembler keeps a reference to the space (it must outlive it) and a copy of the
+  /// materials: one Material for the whole body, or a MaterialMap of one per region (cell c
+  /// of the space's mesh takes materials.ofCell(c)).
+  ElasticityAssembler(const LagrangeSpace& space, const MaterialMap& materials);
 
   const LagrangeSpace& space() const { return *space_; }
-  const Material& material() const { return *material_; }
+  const MaterialMap& materials() const { return materials_; }
+  /// The material of a cell.
+  const Material& material(Index cell) const { return materials_.ofCell(cell); }
 
   /// Global stiffness matrix, numDofs × numDofs, symmetric, full storage. The sparsity
   /// pattern is built directly in compressed form from the node graph (no triplets), so the
@@ -93,7 +97,7 @@ class ElasticityAssembler {
   /// in plane stress).
   Eigen::Matrix3d strain(const Eigen::VectorXd& u, Index cell, const Point& x) const;
   /// Stress σ [Pa] at x: 3D Hooke's law; in 2D the in-plane stress with
-  /// σ_zz = Material::outOfPlaneStress.
+  /// σ_zz = Material::outOfPlaneStress. The cell's material.
   Eigen::Matrix3d stress(const Eigen::VectorXd& u, Index cell, const Point& x) const;
 
   /// The same on a 2D mesh with 2D types (σ in-plane only).
@@ -110,7 +114,7 @@ class ElasticityAssembler {
 
  private:
   const LagrangeSpace* space_;
-  const Material* material_;
+  MaterialMap materials_;
 };
 
 }  // namespace friction

@@ -13,7 +13,10 @@ Material Material::read(const Dictionary& dict, int dim) {
     dict.fail("planeStress",
               "key 'planeStress' has no meaning in 3D (the mesh is 3D: every strain component is "
               "resolved, there is no plane); remove it");
-  const bool planeStress = dict.getBoolOr("planeStress", false);
+  return readConstants(dict, dict.getBoolOr("planeStress", false));
+}
+
+Material Material::readConstants(const Dictionary& dict, bool planeStress) {
   if (dict.alternative({{"E", "nu"}, {"lambda", "mu"}}) == 0) {
     const double E = dict.getScalar("E", Bounds::positive());
     const double nu = dict.getScalar("nu", {-1.0, 0.5, true, true});

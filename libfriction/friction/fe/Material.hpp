@@ -20,6 +20,9 @@ class Material {
   /// checks are InputErrors naming file:line and key. `dim` is the mesh's dimension (2 or 3):
   /// in 3D the key 'planeStress' is refused (every strain component is resolved there).
   static Material read(const Dictionary& dict, int dim = 2);
+  /// The constants alone ('E' and 'nu', or 'lambda' and 'mu', with the same checks as read()),
+  /// for a dictionary that does not hold 'planeStress' (one region's entry of MaterialMap).
+  static Material readConstants(const Dictionary& dict, bool planeStress);
   /// From Young's modulus E [Pa] (> 0) and Poisson's ratio ν (−1 < ν < 1/2). Range checks
   /// with file and line belong to the dictionary layer; here they are debug asserts.
   static Material fromYoungPoisson(double youngModulus, double poissonRatio,

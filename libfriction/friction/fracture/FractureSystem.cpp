@@ -52,13 +52,16 @@ Mesh unsplitMeshOf(const SplitMesh& s) {
 
 }  // namespace
 
-FractureSystem::FractureSystem(const SplitMesh& split, int degree, const Material& material)
-    : split_(split), material_(material), dim_(split.mesh.dim), unsplitMesh_(unsplitMeshOf(split)) {
+FractureSystem::FractureSystem(const SplitMesh& split, int degree, const MaterialMap& materials)
+    : split_(split),
+      materials_(materials),
+      dim_(split.mesh.dim),
+      unsplitMesh_(unsplitMeshOf(split)) {
   FRICTION_ASSERT(dim_ == 2 || dim_ == 3, "a 2D or 3D split mesh");
   splitSpace_ = std::make_unique<LagrangeSpace>(split_.mesh, degree);
   unsplitSpace_ = std::make_unique<LagrangeSpace>(unsplitMesh_, degree);
-  splitAssembler_ = std::make_unique<ElasticityAssembler>(*splitSpace_, material_);
-  unsplitAssembler_ = std::make_unique<ElasticityAssembler>(*unsplitSpace_, material_);
+  splitAssembler_ = std::make_unique<ElasticityAssembler>(*splitSpace_, materials_);
+  unsplitAssembler_ = std::make_unique<ElasticityAssembler>(*unsplitSpace_, materials_);
   dirichlet_ = std::make_unique<DirichletConditions>(*unsplitSpace_);
 
   // P: split node -> unsplit node, read off cell by cell (same cells, same local order).

@@ -33,7 +33,7 @@
 #include "friction/fe/DirichletConditions.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fe/LagrangeSpace.hpp"
-#include "friction/fe/Material.hpp"
+#include "friction/fe/MaterialMap.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/linalg/SparseFactor.hpp"
 
@@ -70,8 +70,9 @@ struct ControlNode {
 
 class FractureSystem : public SlipResponse {
  public:
-  /// degree: 1 or 2. The split mesh and material must outlive the system.
-  FractureSystem(const SplitMesh& split, int degree, const Material& material);
+  /// degree: 1 or 2. The split mesh must outlive the system; the materials (one Material, or
+  /// a MaterialMap of one per region of the split mesh's cells) are copied.
+  FractureSystem(const SplitMesh& split, int degree, const MaterialMap& materials);
 
   /// Dirichlet conditions live on the unsplit space: fix patches here, before factor().
   DirichletConditions& dirichlet() { return *dirichlet_; }
@@ -182,7 +183,7 @@ class FractureSystem : public SlipResponse {
   double project(const Eigen::VectorXd& sigma, Index node, const Eigen::Vector3d& direction) const;
 
   const SplitMesh& split_;
-  const Material& material_;
+  const MaterialMap materials_;
   int dim_ = 2;  ///< the dimension of the split mesh (2: triangles, 3: tetrahedra)
   Mesh unsplitMesh_;
   std::unique_ptr<LagrangeSpace> splitSpace_, unsplitSpace_;

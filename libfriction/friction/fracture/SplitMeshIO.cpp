@@ -7,12 +7,14 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 
 #include "friction/core/Assert.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
+#include "friction/dict/Tokenizer.hpp"
 #include "friction/fracture/SignConventions.hpp"
 #include "friction/mesh/MeshTopology.hpp"
 
@@ -135,6 +137,20 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
     w.entry("triangles", tris);
   }
   w.entry("regions", m.cellRegion);
+  // [beyond] The regions' names (constant/mechanicalProperties may key materials by them),
+  // written only when the cells lie in several regions: a one-region mesh needs no name to
+  // take one material, and its split mesh stays as it was. Optional on reading. A name that is
+  // no dictionary word, or that two regions share, is left out (region<N> reaches it).
+  if (!m.regionNames.empty() &&
+      std::adjacent_find(m.cellRegion.begin(), m.cellRegion.end(), std::not_equal_to<int>()) !=
+          m.cellRegion.end()) {
+    std::map<std::string, int> uses;
+    for (const auto& entry : m.regionNames) ++uses[entry.second];
+    w.beginDict("regionNames");
+    for (const auto& [number, name] : m.regionNames)
+      if (detail::isSafeWord(name) && uses[name] == 1) w.entry(name, number);
+    w.endDict();
+  }
 
   w.beginDict("patches");
   for (const auto& [label, name] : m.labelNames) {
@@ -298,6 +314,9 @@ SplitMesh readSplitMesh(const std::string& path) {
     dict.fail("regions", "key 'regions': " + std::to_string(m.cellRegion.size()) +
                              " entries, expected one per " + cell + " (" +
                              std::to_string(m.numCells()) + ")");
+  if (const Dictionary* names = dict.findDict("regionNames"))
+    for (const std::string& name : names->keys())
+      m.regionNames[static_cast<int>(names->getInt(name, Bounds::nonNegative()))] = name;
 
   const Dictionary& patches = dict.subDict("patches");
   for (const std::string& name : patches.keys()) {

@@ -110,7 +110,6 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
   const int perCell = space.nodesPerCell();
   const int cellType = is3d ? (space.degree() == 1 ? kVtkTetra : kVtkQuadraticTetra)
                             : (space.degree() == 1 ? kVtkTriangle : kVtkQuadraticTriangle);
-  const Material& material = assembler.material();
 
   std::ostringstream s;
   s.precision(precision);
@@ -159,7 +158,7 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
       Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
       if (initialStress)
         sigma += initialStress(Point(centroid.x(), centroid.y(), 0.0)).topLeftCorner<2, 2>();
-      szz = material.outOfPlaneStress(assembler.strain(u, c, centroid));
+      szz = assembler.material(c).outOfPlaneStress(assembler.strain(u, c, centroid));
       sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
       s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
         << finite(sxy) << " 0 0\n";

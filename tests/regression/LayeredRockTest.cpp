@@ -1,0 +1,394 @@
+// Materials per region (constant/mechanicalProperties 'regions', README "Materials per
+// region") through the real binaries on tests/regression/cases/layeredRock (two layers,
+// "reservoir" below y = 1/2 and "caprock" above, gmsh physical surfaces) and on
+// tests/regression/cases/faultInCube cut into two regions (3D):
+//  * a two-layer column under uniaxial load against its exact, piecewise-linear solution,
+//    without and with a fracture along the interface (σ_n = −p, τ = 0 recovered there);
+//  * the inclined crack across the interface takes the stiff layer's E for γ; P1's locking
+//    warning names its region;
+//  * two regions with equal constants give the one-material run bit for bit (2D and 3D);
+//  * two different materials in 3D run and converge;
+//  * the mistakes a user makes in the regions form are named, with file, line and key.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "CaseRunner.hpp"
+#include "friction/mesh/MeshReader.hpp"
+
+using namespace friction::regression;
+
+namespace {
+
+fs::path geoFile() {
+  return fs::path(FRICTION_SOURCE_DIR) / "tests" / "regression" / "cases" / "layeredRock" /
+         "constant" / "mesh" / "layeredRock.geo";
+}
+
+/// The case's mesh from layeredRock.geo, with (crack 1) or without (crack 0) the crack.
+void makeMesh(const Case& c, int crack) {
+  const fs::path log = c.dir() / "log.gmsh";
+  const std::string cmd = "gmsh -2 -format msh41 -setnumber crack " + std::to_string(crack) + " '" +
+                          geoFile().string() + "' -o '" +
+                          (c.dir() / "constant" / "mesh" / "layeredRock.msh").string() + "'";
+  const int rc = run(cmd, log);
+  INFO(cmd << "\n" << readText(log));
+  REQUIRE(rc == 0);
+}
+
+/// The arrays of an ASCII .vtu as the solver writes it (one DataArray per block, its values
+/// between the opening and closing lines), by name; the points' array has the name "".
+std::map<std::string, std::vector<double>> readVtu(const fs::path& file) {
+  std::map<std::string, std::vector<double>> arrays;
+  std::istringstream in(readText(file));
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.find("<DataArray") == std::string::npos) continue;
+    std::string name;
+    const auto at = line.find("Name=\"");
+    if (at != std::string::npos) name = line.substr(at + 6, line.find('"', at + 6) - at - 6);
+    std::vector<double>& values = arrays[name];
+    while (std::getline(in, line) && line.find("</DataArray>") == std::string::npos) {
+      std::istringstream s(line);
+      for (std::string item; s >> item;) values.push_back(std::strtod(item.c_str(), nullptr));
+    }
+  }
+  return arrays;
+}
+
+/// The one .vtu of time 1 in the case's VTK folder.
+fs::path vtuOf(const Case& c) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(c.dir() / "VTK"))
+    if (e.path().extension() == ".vtu") files.push_back(e.path());
+  REQUIRE(files.size() == 1);
+  return files.front();
+}
+
+/// Plane-strain constrained modulus λ + 2μ = E(1 − ν)/((1 + ν)(1 − 2ν)) and λ [Pa].
+double constrained(double E, double nu) { return E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)); }
+double lame(double E, double nu) { return E * nu / ((1 + nu) * (1 - 2 * nu)); }
+
+std::string regionsText(const std::string& reservoir, const std::string& caprock) {
+  return "regions\n{\n    reservoir   { " + reservoir + " }\n    caprock     { " + caprock +
+         " }\n}";
+}
+
+}  // namespace
+
+TEST_CASE("layered rock: a two-layer column under uniaxial load is exact per layer",
+          "[regression][materials]") {
+  // Rollers on the left, right and bottom, pressure p on the top, no crack: u_x = 0, ε_xx = 0,
+  // σ_yy = −p in both layers, ε_yy = −p/(λ_i + 2μ_i) in layer i, σ_xx = σ_zz = λ_i ε_yy, so
+  // u_y is linear in each layer and continuous at y = 1/2 (plane strain). P1 and P2 hold it
+  // exactly (the mesh follows the interface): what remains is round-off. With a fracture along
+  // the whole interface (μ_f 0.4; the rollers hold u_x = 0, so nothing slides) the state is the
+  // same, and the traction recovered there from the residual (53), between a soft and a stiff
+  // cell on each side, is σ_n = −p, τ = 0: the bimaterial check of the recovery.
+  const double p = 1e7, E1 = 10e9, nu1 = 0.25, E2 = 30e9, nu2 = 0.3;
+  const double e1 = -p / constrained(E1, nu1), e2 = -p / constrained(E2, nu2);
+  const auto exactUy = [&](double y) { return y <= 0.5 ? e1 * y : e1 * 0.5 + e2 * (y - 0.5); };
+  for (int order : {1, 2})
+    for (bool fracture : {false, true}) {
+      DYNAMIC_SECTION("P" << order << (fracture ? ", fracture along the interface" : "")) {
+        Case c("tests:layeredRock", "layered-column-P" + std::to_string(order) +
+                                        (fracture ? "-fracture" : "") + "/layeredRock");
+        makeMesh(c, fracture ? 2 : 0);
+        if (!fracture) {
+          c.edit("system/meshDict", "fractures +\\(crack\\);", "fractures ();");
+          c.edit("constant/fractureProperties", "crack\\s*\\{[^}]*\\}", "");
+        }
+        c.edit("0/D", "right +\\{ type free; \\}",
+               "right   { type fixedDisplacement; components (x); value (0 0); }");
+        if (order == 2) c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+        const int rc = c.solve();
+        INFO(c.log());
+        REQUIRE(rc == 0);
+        // The log lists the materials per region.
+        CHECK_THAT(c.log(), Catch::Contains("Materials: 2 regions, plane strain"));
+        CHECK_THAT(c.log(), Catch::Contains("Material reservoir (region 1, "));
+        CHECK_THAT(c.log(), Catch::Contains("): E 1e+10 Pa, nu 0.25"));
+        CHECK_THAT(c.log(), Catch::Contains("Material caprock (region 2, "));
+        CHECK_THAT(c.log(), Catch::Contains("): E 3e+10 Pa, nu 0.3"));
+
+        auto vtu = readVtu(vtuOf(c));
+        const auto& x = vtu[""];
+        const auto& u = vtu["displacement"];
+        REQUIRE(x.size() >= 3 * 20);
+        REQUIRE(u.size() == x.size());
+        // What remains is round-off and the files' 12 significant digits (writePrecision 12):
+        // measured 1.5e-12 of the top's displacement, P1 and P2; 1e-10 leaves a margin of ~60
+        // and is far below what a wrong layer's modulus would make (a factor 3 in ε_yy).
+        const double scale = std::abs(exactUy(1.0));
+        double worst = 0;
+        int above = 0, below = 0;
+        for (std::size_t k = 0; 3 * k < x.size(); ++k) {
+          const double y = x[3 * k + 1];
+          worst = std::max({worst, std::abs(u[3 * k]), std::abs(u[3 * k + 1] - exactUy(y))});
+          (y > 0.5 ? above : below) += 1;
+        }
+        CHECK(above > 10);
+        CHECK(below > 10);
+        CHECK(worst <= 1e-10 * scale);
+
+        // Stresses per cell (the writer's centroid value): σ_yy = −p, σ_xx = σ_zz = λ_i ε_yy,
+        // σ_xy = 0, each layer with its own λ_i; 1e-8 p for the same round-off and digits.
+        const auto& stress = vtu["stress"];
+        const auto& region = vtu["region"];
+        REQUIRE(!region.empty());
+        REQUIRE(stress.size() == 6 * region.size());
+        int cells[3] = {0, 0, 0};
+        for (std::size_t k = 0; k < region.size(); ++k) {
+          const int r = static_cast<int>(region[k]);
+          REQUIRE((r == 1 || r == 2));
+          ++cells[r];
+          const double sxx = r == 1 ? lame(E1, nu1) * e1 : lame(E2, nu2) * e2;
+          CHECK(std::abs(stress[6 * k + 0] - sxx) <= 1e-8 * p);
+          CHECK(std::abs(stress[6 * k + 1] + p) <= 1e-8 * p);
+          CHECK(std::abs(stress[6 * k + 2] - sxx) <= 1e-8 * p);
+          CHECK(std::abs(stress[6 * k + 3]) <= 1e-8 * p);
+        }
+        CHECK(cells[1] > 10);
+        CHECK(cells[2] > 10);
+
+        if (fracture) {
+          // σ_n = −p and τ = 0 at every node of the interface, the jump zero; 1e-8 p as above.
+          // Except τ at the two end nodes: they lie on the roller patches, where the residual
+          // carries the rollers' reaction as well, and σ_xx = λ_i ε_yy differs between the
+          // layers (measured: τ = ±1.9e6 Pa there, twice the jump of σ_xx); the solver holds
+          // their jump at zero and says so.
+          CHECK_THAT(c.log(), Catch::Contains("2 fracture node(s) lie on a Dirichlet patch"));
+          const auto rows = c.table("1", "crack");
+          REQUIRE(rows.size() >= 11);
+          int interior = 0;
+          for (const Row& r : rows) {
+            INFO("s = " << r.s);
+            const bool end = r.x < 1e-12 || r.x > 1 - 1e-12;
+            interior += !end;
+            CHECK(std::abs(r.y - 0.5) < 1e-12);
+            CHECK(std::abs(r.sigmaN + p) <= 1e-8 * p);
+            if (!end) CHECK(std::abs(r.tau) <= 1e-8 * p);
+            CHECK(std::abs(r.slip) <= 1e-10 * scale);
+            CHECK(r.state == "stick");
+          }
+          CHECK(interior == static_cast<int>(rows.size()) - 2);
+        }
+      }
+    }
+}
+
+TEST_CASE("layered rock: two regions with equal constants are the one-material run",
+          "[regression][materials]") {
+  // The same λ, μ in every cell through the same arithmetic (the element matrices, the
+  // stresses, γ = E/h and the step scale from the same E): the outputs are the same bit for
+  // bit, so the comparison is of the files' bytes, with no tolerance.
+  std::map<std::string, std::string> outputsOf[2];
+  std::string gammaLine[2];
+  for (int regions : {0, 1}) {
+    Case c("tests:layeredRock",
+           std::string("layered-equal/") + (regions ? "regions" : "flat") + "/layeredRock");
+    makeMesh(c, 1);
+    const std::string body = regions ? regionsText("E 10e9; nu 0.25;", "E 10e9; nu 0.25;")
+                                     : std::string("E 10e9;\nnu 0.25;");
+    c.edit("constant/mechanicalProperties", "regions\\s*\\{[\\s\\S]*\\}\\s*\\}", body);
+    const int rc = c.solve();
+    INFO(c.log());
+    REQUIRE(rc == 0);
+    for (const char* file : {"1/fractures/crack.dat", "1/D", "1/solverStatus"})
+      outputsOf[regions][file] = readText(c.dir() / file);
+    outputsOf[regions]["vtu"] = readText(vtuOf(c));
+    const std::string log = c.log();
+    const auto at = log.find("gamma ");
+    REQUIRE(at != std::string::npos);
+    gammaLine[regions] = log.substr(at, log.find(',', at) - at);
+    CHECK_THAT(log, Catch::Contains(regions ? "Materials: 2 regions" : "Material: E 1e+10 Pa"));
+  }
+  REQUIRE(outputsOf[0].size() == 4);
+  for (const auto& [file, text] : outputsOf[0]) {
+    INFO(file);
+    REQUIRE(text.size() > 100);
+    CHECK(text == outputsOf[1][file]);
+  }
+  CHECK(gammaLine[0] == gammaLine[1]);
+}
+
+TEST_CASE("layered rock: the crack across the interface sees the stiff layer's E in gamma",
+          "[regression][materials]") {
+  // γ's default is gammaRelative·E/h with E the largest of the cells that touch the crack:
+  // the crack crosses into the caprock, so E = 3e10 Pa there; the run converges.
+  Case c("tests:layeredRock", "layered-crack/layeredRock");
+  makeMesh(c, 1);
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  CHECK_THAT(c.log(),
+             Catch::Contains("E for gammaRelative and alphaRelative 3e+10 Pa (the largest E of "
+                             "the cells that touch a fracture)"));
+  const auto rows = c.table("1", "crack");
+  int slipping = 0;
+  for (const Row& r : rows)
+    if (r.state == "slip") ++slipping;
+  CHECK(slipping > 0);
+  CHECK_THAT(c.log(), !Catch::Contains("P1 locks"));
+
+  // P1's locking warning names the region whose ν is near 1/2, and only that one.
+  Case w("tests:layeredRock", "layered-crack-nu/layeredRock");
+  makeMesh(w, 1);
+  w.edit("constant/mechanicalProperties", "caprock +\\{ E 30e9; nu 0.3; \\}",
+         "caprock { E 30e9; nu 0.49; }");
+  REQUIRE(w.solve() == 0);
+  CHECK_THAT(w.log(), Catch::Contains("Warning: nu = 0.49 in region caprock with P1 elements"));
+  CHECK_THAT(w.log(), !Catch::Contains("in region reservoir"));
+}
+
+TEST_CASE("layered rock: mistakes in the regions form are named", "[regression][materials]") {
+  struct Bad {
+    const char* label;
+    std::string body;
+    const char* lineText;  ///< a text of the line the error names
+    std::vector<std::string> expected;
+  };
+  const std::vector<Bad> bad = {
+      {"unknownName",
+       "regions\n{\n    reservior { E 10e9; nu 0.25; }\n    caprock { E 30e9; nu 0.3; }\n}",
+       "reservior {",
+       {"'reservior' is no region of the mesh", "did you mean 'reservoir'?",
+        "regions: reservoir (region1), caprock (region2)"}},
+      {"missingRegion",
+       "regions\n{\n    reservoir { E 10e9; nu 0.25; }\n}",
+       "regions",
+       {"key 'regions': no material for 'caprock' (region 2, ", "or a 'default' entry",
+        "regions: reservoir (region1), caprock (region2)"}},
+      {"bothForms",
+       "E 10e9;\nnu 0.25;\nregions\n{\n    default { E 10e9; nu 0.25; }\n}",
+       "E 10e9;",
+       {"key 'E' together with 'regions'", "not both"}},
+      {"badValue",
+       "regions\n{\n    reservoir { E 10e9; nu 0.5; }\n    caprock { E 30e9; nu 0.3; }\n}",
+       "reservoir {",
+       {"key 'nu'", "0.5"}},
+      {"planeStressInRegion",
+       "regions\n{\n    reservoir { E 10e9; nu 0.25; planeStress yes; }\n    caprock { E 30e9; "
+       "nu 0.3; }\n}",
+       "reservoir {",
+       {"key 'planeStress' is one setting for the whole body"}},
+      {"twice",
+       "regions\n{\n    reservoir { E 10e9; nu 0.25; }\n    region1 { E 10e9; nu 0.25; }\n    "
+       "caprock { E 30e9; nu 0.3; }\n}",
+       "region1 {",
+       {"has two entries, 'reservoir' and 'region1'"}},
+  };
+  for (const Bad& b : bad) {
+    DYNAMIC_SECTION(b.label) {
+      Case c("tests:layeredRock", std::string("layered-bad/") + b.label);
+      makeMesh(c, 1);
+      const fs::path bin = FRICTION_BIN_DIR;
+      REQUIRE(
+          run("'" + (bin / "splitFractureNodes").string() + "' -case '" + c.dir().string() + "'",
+              c.dir() / "log.splitFractureNodes") == 0);
+      c.edit("constant/mechanicalProperties", "regions\\s*\\{[\\s\\S]*\\}\\s*\\}", b.body);
+      const fs::path file = c.dir() / "constant" / "mechanicalProperties";
+      int line = 0;
+      {
+        std::ifstream in(file);
+        std::string l;
+        for (int n = 1; std::getline(in, l); ++n)
+          if (l.find(b.lineText) != std::string::npos) {
+            line = n;
+            break;
+          }
+      }
+      REQUIRE(line > 0);
+      const int rc =
+          run("'" + (bin / "frictionSolver").string() + "' -case '" + c.dir().string() + "'",
+              c.dir() / "log.frictionSolver");
+      const std::string out = c.log();
+      INFO(out);
+      CHECK(rc == 1);
+      CHECK_THAT(out,
+                 Catch::Contains("constant/mechanicalProperties:" + std::to_string(line) + ": "));
+      for (const std::string& e : b.expected) CHECK_THAT(out, Catch::Contains(e));
+      CHECK_FALSE(fs::exists(c.dir() / "1"));
+    }
+  }
+}
+
+namespace {
+
+/// Medit .mesh of m with each tetrahedron's region from `regionOf(centroid)`.
+void writeMedit(const fs::path& path, const friction::Mesh& m,
+                const std::function<int(const friction::Point&)>& regionOf) {
+  std::ofstream out(path);
+  out.precision(17);
+  out << "MeshVersionFormatted 2\nDimension 3\nVertices\n" << m.points.size() << "\n";
+  for (const auto& x : m.points) out << x.x() << " " << x.y() << " " << x.z() << " 0\n";
+  out << "Tetrahedra\n" << m.numCells() << "\n";
+  for (friction::Index c = 0; c < m.numCells(); ++c) {
+    friction::Point centroid = friction::Point::Zero();
+    for (friction::Index v : m.cell(c)) {
+      out << v + 1 << " ";
+      centroid += m.points[v] / 4;
+    }
+    out << regionOf(centroid) << "\n";
+  }
+  out << "Triangles\n" << m.numFacets() << "\n";
+  for (friction::Index f = 0; f < m.numFacets(); ++f) {
+    for (friction::Index v : m.facet(f)) out << v + 1 << " ";
+    out << m.facetLabel[f] << "\n";
+  }
+  out << "End\n";
+}
+
+}  // namespace
+
+TEST_CASE("layered rock 3D: two regions of tetrahedra, equal constants and a contrast",
+          "[regression][materials]") {
+  // tests/regression/cases/faultInCube with its tetrahedra in region 1 (centroid x < 1/2) and
+  // 2 (x > 1/2): the square fault crosses the interface. A Medit file names no region, so the
+  // entries are numbers.
+  const fs::path source = fs::path(FRICTION_SOURCE_DIR) / "tests" / "regression" / "cases" /
+                          "faultInCube" / "constant" / "mesh" / "cube.msh";
+  const friction::Mesh mesh = friction::readMesh(source.string());
+  REQUIRE(mesh.dim == 3);
+  const auto regionOf = [](const friction::Point& x) { return x.x() < 0.5 ? 1 : 2; };
+  const auto runWith = [&](const std::string& label, const std::string& materials) {
+    Case c("tests:faultInCube", "layered-3d/" + label + "/faultInCube");
+    writeMedit(c.dir() / "constant" / "mesh" / "cube.mesh", mesh, regionOf);
+    c.edit("system/meshDict", "cube\\.msh", "cube.mesh");
+    c.edit("constant/mechanicalProperties", "E +[^;]*;\\s*(//[^\\n]*)?\\s*nu +[^;]*;", materials);
+    const int rc = c.solve();
+    INFO(c.log());
+    REQUIRE(rc == 0);
+    return c;
+  };
+  // The case's own constants (E 1e9 Pa, nu 0.25), once for the body or per region.
+  const Case one = runWith("flat", "E 1e9;\nnu 0.25;");
+  const Case two =
+      runWith("equal", "regions { region1 { E 1e9; nu 0.25; } region2 { E 1e9; nu 0.25; } }");
+  CHECK_THAT(two.log(), Catch::Contains("Materials: 2 regions, 3D"));
+  for (const char* file : {"1/fractures/fault.dat", "1/D"}) {
+    INFO(file);
+    const std::string a = readText(one.dir() / file);
+    REQUIRE(a.size() > 100);
+    CHECK(a == readText(two.dir() / file));
+  }
+  // Region 2 a hundred times stiffer: the run converges, and γ takes the stiff E (the fault
+  // touches both regions).
+  const Case contrast =
+      runWith("contrast", "regions { region1 { E 1e9; nu 0.25; } default { E 1e11; nu 0.3; } }");
+  CHECK_THAT(contrast.log(), Catch::Contains("Material region2 (region 2, "));
+  CHECK_THAT(contrast.log(), Catch::Contains(", entry default): E 1e+11 Pa, nu 0.3"));
+  CHECK_THAT(contrast.log(), Catch::Contains("E for gammaRelative and alphaRelative 1e+11 Pa"));
+  CHECK(std::regex_search(readText(contrast.dir() / "1" / "solverStatus"),
+                          std::regex("\\nstatus +converged;")));
+}
