@@ -132,7 +132,7 @@ def main(argv):
         lines = LineCollection(segments, cmap="inferno_r", norm=norm, linewidths=4)
         lines.set_array([(s[i] + s[i + 1]) / 2 for i in range(len(s) - 1)])
         ax.add_collection(lines)
-        at = xy[(4 * len(xy)) // 5]
+        at = xy[len(xy) // 5]
         ax.annotate(name, at, xytext=(8, -4), textcoords="offset points", fontsize=9)
         for r, p in zip(rows, xy):
             key = (round(p[0], 6), round(p[1], 6))

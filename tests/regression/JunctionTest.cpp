@@ -127,10 +127,10 @@ double maxAbs(const Table& t, const std::string& column) {
   return m;
 }
 
-/// The row of table t at point (x, y) (which must exist).
-std::size_t rowAt(const Table& t, double x, double y) {
+/// The row of table t at point (x, y) (which must exist), within `tolerance` [m].
+std::size_t rowAt(const Table& t, double x, double y, double tolerance = 1e-9) {
   for (std::size_t r = 0; r < t.rows.size(); ++r)
-    if (std::hypot(t.at(r, "x") - x, t.at(r, "y") - y) < 1e-9) return r;
+    if (std::hypot(t.at(r, "x") - x, t.at(r, "y") - y) < tolerance) return r;
   FAIL("no row at (" << x << ", " << y << ")");
   return 0;
 }
@@ -535,4 +535,68 @@ TEST_CASE("junctions: a T meshed by FreeFEM splits and solves like gmsh's", "[ju
   CHECK(std::abs(a / b - 1) < 0.03);
   const Table branch = ff.table("branch");
   CHECK(branch.state[rowAt(branch, 0, 0)] == "junction");
+}
+
+TEST_CASE("cases/fractureNetwork: junctions in layered rock under gravity and extension",
+          "[junction][network]") {
+  // The case as committed (its README): faults A and B cross, the bedding plane crosses B and
+  // ends on A, four layers, friction rising with depth, an overpressured bedding plane,
+  // eight steps of extension. What the physics requires of it:
+  Case c("fractureNetwork", "network");
+  const int rc = c.solve();
+  INFO(c.log());
+  REQUIRE(rc == 0);
+  const std::string split = readText(c.dir() / "log.splitFractureNodes");
+  CHECK_THAT(split, Catch::Contains("Junctions: 3") &&
+                        Catch::Contains("'faultA' passes through, 'faultB' passes through") &&
+                        Catch::Contains("'faultB' passes through, 'bedding' passes through") &&
+                        Catch::Contains("'faultA' passes through, 'bedding' ends (held)"));
+  CHECK_THAT(c.log(), Catch::Contains("Materials: 4 regions"));
+  // The in-situ stress clamps every fracture until the extension has grown.
+  for (const std::string f : {"faultA", "faultB", "bedding"})
+    CHECK(maxAbs(c.namedTable("1", f), "slip") == 0.0);
+  const Table a = c.namedTable("8", "faultA"), b = c.namedTable("8", "faultB"),
+              bed = c.namedTable("8", "bedding");
+  // Coulomb node by node with each node's own mu_f = 0.5 - 5e-5 y (the depth field), and on
+  // the bedding plane with the effective normal stress sigma_n + p (p = 28 MPa).
+  int slipping = 0;
+  for (const auto& [t, field] :
+       std::vector<std::pair<const Table*, bool>>{{&a, true}, {&b, true}}) {
+    for (std::size_t r = 0; r < t->rows.size(); ++r) {
+      if (t->state[r] != "slip") continue;
+      const double mu = 0.5 - 5e-5 * t->at(r, "y");
+      CHECK(std::abs(std::abs(t->at(r, "tau")) - mu * -t->at(r, "sigmaN")) <=
+            1e-8 * -t->at(r, "sigmaN"));
+      ++slipping;
+    }
+  }
+  CHECK(slipping >= 20);
+  int bedSlipping = 0;
+  for (std::size_t r = 0; r < bed.rows.size(); ++r) {
+    if (bed.state[r] != "slip") continue;
+    const double effective = bed.at(r, "sigmaN") + 28e6;
+    CHECK(effective < 0);
+    CHECK(std::abs(std::abs(bed.at(r, "tau")) - 0.3 * -effective) <= 1e-8 * -bed.at(r, "sigmaN"));
+    // Fault A's slip shears the bedding plane next to where it ends on it.
+    CHECK(bed.at(r, "x") > 2000);
+    ++bedSlipping;
+  }
+  CHECK(bedSlipping >= 1);
+  // (The case writes 10 digits: 1e-3 m finds the node.)
+  CHECK(bed.state[rowAt(bed, 2000 + 350 / std::sqrt(3.0), -1350, 1e-3)] == "junction");
+  // Layered rock: fault A slips more in the stiff caprock (y > -1500) than in the soft
+  // reservoir below it (-2000 < y < -1500), which takes less of the extension's stress drop.
+  double caprock = 0, reservoir = 0;
+  for (std::size_t r = 0; r < a.rows.size(); ++r) {
+    const double y = a.at(r, "y"), s = std::abs(a.at(r, "slip"));
+    if (y > -1500 && y < -1000) caprock = std::max(caprock, s);
+    if (y > -2000 && y < -1500) reservoir = std::max(reservoir, s);
+  }
+  CHECK(caprock > 2 * reservoir);
+  // The map script runs on the result.
+  const fs::path script =
+      fs::path(FRICTION_SOURCE_DIR) / "cases" / "fractureNetwork" / "plotNetwork.py";
+  CHECK(run("'" + script.string() + "' -case '" + c.dir().string() + "'",
+            c.dir() / "log.plotNetwork") == 0);
+  CHECK(fs::file_size(c.dir() / "postProcessing" / "network.png") > 10000);
 }

@@ -4,8 +4,8 @@
 //   faultA   a normal fault dipping 60 degrees, 2 km long, centred at (2000, -1700), across
 //            the reservoir and the caprock into the basement and the overburden;
 //   faultB   its conjugate, 1.2 km long, crossing faultA at its centre (an X junction);
-//   bedding  a bedding-plane fracture in the caprock at y = -1350, from faultA to
-//            x = 3000 (a T junction: it ends on faultA).
+//   bedding  a bedding-plane fracture in the caprock at y = -1350, from x = 1000 to
+//            faultA: it crosses faultB (a second X junction) and ends on faultA (a T).
 // Layers (physical surfaces): basement y < -2000, reservoir -2000 < y < -1500, caprock
 // -1500 < y < -1000, overburden above. Physical curves: 1 bottom, 2 right, 3 top, 4 left,
 // 5 faultA, 6 faultB, 7 bedding.
@@ -49,8 +49,8 @@ Point(104) = {xX - 600*ca, yX + 600*sa, 0};
 Line(102) = {103, 104};             // faultB
 yBed = -1350;
 Point(105) = {xX + (yBed - yX)/sa*ca, yBed, 0};   // on faultA
-Point(106) = {3000, yBed, 0};
-Line(103) = {105, 106};             // bedding
+Point(106) = {1000, yBed, 0};
+Line(103) = {106, 105};             // bedding
 
 BooleanFragments{ Surface{1:4}; Delete; }{ Curve{101:103}; Delete; }
 
@@ -82,7 +82,7 @@ For k In {0:#cs()-1}
     right() += {c};
   EndIf
 EndFor
-If (#faultA() != 6 || #faultB() != 4 || #bedding() != 1)
+If (#faultA() != 6 || #faultB() != 5 || #bedding() != 2)
   Error("the fractures were not cut as expected");
   Exit;
 EndIf
