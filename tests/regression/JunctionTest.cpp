@@ -145,6 +145,23 @@ void measured(const std::string& name, const std::string& what, double value) {
       << what << " " << std::setprecision(3) << value << "\n";
 }
 
+/// Row `row` of t against row k of the reference, at the same point: slip to 1e-9 of
+/// slipScale, sigma_n and tau to 1e-9 of stressScale (where the reference has a traction),
+/// the same state. Returns |slip difference| / slipScale.
+double sameRow(const Table& t, std::size_t row, const Table& ref, std::size_t k, double slipScale,
+               double stressScale) {
+  CHECK(t.at(row, "x") == ref.at(k, "x"));
+  CHECK(t.at(row, "y") == ref.at(k, "y"));
+  const double slip = std::abs(t.at(row, "slip") - ref.at(k, "slip"));
+  CHECK(slip <= 1e-9 * slipScale);
+  if (std::isfinite(ref.at(k, "sigmaN"))) {
+    CHECK(std::abs(t.at(row, "sigmaN") - ref.at(k, "sigmaN")) <= 1e-9 * stressScale);
+    CHECK(std::abs(t.at(row, "tau") - ref.at(k, "tau")) <= 1e-9 * stressScale);
+  }
+  CHECK(t.state[row] == ref.state[k]);
+  return slip / slipScale;
+}
+
 /// L2 norm of the slip along a table (trapezoidal rule over s).
 double slipNorm(const Table& t) {
   double sum = 0;
@@ -174,15 +191,7 @@ TEST_CASE("junctions: a T whose branch is bonded equals the fracture alone", "[j
   double worst = 0;
   for (std::size_t r = 0; r < a.rows.size(); ++r) {
     INFO("row " << r);
-    CHECK(b.at(r, "x") == a.at(r, "x"));
-    CHECK(b.at(r, "y") == a.at(r, "y"));
-    CHECK(std::abs(b.at(r, "slip") - a.at(r, "slip")) <= 1e-9 * slipScale);
-    worst = std::max(worst, std::abs(b.at(r, "slip") - a.at(r, "slip")) / slipScale);
-    if (std::isfinite(a.at(r, "sigmaN"))) {
-      CHECK(std::abs(b.at(r, "sigmaN") - a.at(r, "sigmaN")) <= 1e-9 * stressScale);
-      CHECK(std::abs(b.at(r, "tau") - a.at(r, "tau")) <= 1e-9 * stressScale);
-    }
-    CHECK(b.state[r] == a.state[r]);
+    worst = std::max(worst, sameRow(b, r, a, r, slipScale, stressScale));
   }
   measured("bonded", "max |slip - slip alone| / max slip", worst);
   const Table branch = bonded.table("branch");
@@ -232,15 +241,7 @@ TEST_CASE("junctions: a fracture cut in two collinear fractures equals the uncut
     const Table& t = inLeft ? l : r;
     const std::size_t row = inLeft ? k : k - l.rows.size();
     INFO("row " << k << " (" << (inLeft ? "left" : "right") << " " << row << ")");
-    CHECK(t.at(row, "x") == w.at(k, "x"));
-    CHECK(t.at(row, "y") == w.at(k, "y"));
-    CHECK(std::abs(t.at(row, "slip") - w.at(k, "slip")) <= 1e-9 * slipScale);
-    worst = std::max(worst, std::abs(t.at(row, "slip") - w.at(k, "slip")) / slipScale);
-    if (std::isfinite(w.at(k, "sigmaN"))) {
-      CHECK(std::abs(t.at(row, "sigmaN") - w.at(k, "sigmaN")) <= 1e-9 * stressScale);
-      CHECK(std::abs(t.at(row, "tau") - w.at(k, "tau")) <= 1e-9 * stressScale);
-    }
-    CHECK(t.state[row] == w.state[k]);
+    worst = std::max(worst, sameRow(t, row, w, k, slipScale, stressScale));
   }
   measured("cut", "max |slip - slip uncut| / max slip", worst);
   // The joined node is inside: it slips like its neighbours.
