@@ -194,8 +194,15 @@ TEST_CASE("junctions: a T whose branch is bonded equals the fracture alone", "[j
     worst = std::max(worst, sameRow(b, r, a, r, slipScale, stressScale));
   }
   measured("bonded", "max |slip - slip alone| / max slip", worst);
+  // The tables say where their fracture meets others (a comment after the status line).
+  REQUIRE(b.comments.size() == 2);
+  CHECK(b.comments[1] == "# junction at (0 0): passes through; meets 'branch'");
+  CHECK(a.comments.size() == 1);
   const Table branch = bonded.table("branch");
   CHECK(maxAbs(branch, "slip") <= 1e-9 * slipScale);
+  REQUIRE(branch.comments.size() == 2);
+  CHECK(branch.comments[1] ==
+        "# junction at (0 0): ends here, its jump held (state junction); meets 'main'");
   const std::size_t junction = rowAt(branch, 0, 0);
   CHECK(branch.state[junction] == "junction");
   int stick = 0;
@@ -244,6 +251,10 @@ TEST_CASE("junctions: a fracture cut in two collinear fractures equals the uncut
     worst = std::max(worst, sameRow(t, row, w, k, slipScale, stressScale));
   }
   measured("cut", "max |slip - slip uncut| / max slip", worst);
+  REQUIRE(r.comments.size() == 2);
+  CHECK(r.comments[1] ==
+        "# junction at (0 0): joined end to end (one node of both: its row is in 'left'); meets "
+        "'left'");
   // The joined node is inside: it slips like its neighbours.
   CHECK(l.state.back() == "slip");
 }

@@ -1148,7 +1148,8 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
       rows.push_back(row);
     }
     writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), rows,
-                       status.str(), precision, dim);
+                       status.str(), precision, dim,
+                       dim == 2 ? junctionNotes(split_, f) : std::vector<std::string>{});
     // 3D: the fault triangles as row indices for the .vtp. A vertex's row is found by its Ω⁺
     // copy (the unsplit number, as in the triangles), a P2 midpoint's by the split-space node
     // of the edge between the Ω⁺ copies, as FractureSystem made those control nodes.

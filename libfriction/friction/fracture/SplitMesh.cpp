@@ -870,4 +870,36 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
 
 }  // namespace
 
+std::vector<std::string> junctionNotes(const SplitMesh& split, std::size_t f) {
+  std::vector<std::string> notes;
+  const FractureGeometry& g = split.fractures.at(f);
+  for (Index i = 0; i < g.numNodes(); ++i) {
+    const FractureNodeKind kind = g.kind[i];
+    if (kind != FractureNodeKind::crossing && kind != FractureNodeKind::abutting &&
+        kind != FractureNodeKind::joined)
+      continue;
+    std::string others;
+    std::size_t first = f;  // the lowest-numbered fracture at the node (a joined node's owner)
+    for (std::size_t o = 0; o < split.fractures.size(); ++o) {
+      if (o == f) continue;
+      const auto& nodes = split.fractures[o].node;
+      if (std::find(nodes.begin(), nodes.end(), g.node[i]) == nodes.end()) continue;
+      others += (others.empty() ? "'" : ", '") + split.fractures[o].name + "'";
+      first = std::min(first, o);
+    }
+    std::string what;
+    if (kind == FractureNodeKind::crossing)
+      what = "passes through";
+    else if (kind == FractureNodeKind::abutting)
+      what = "ends here, its jump held (state junction)";
+    else
+      what = first == f ? "joined end to end (one node of both: its row is in this table)"
+                        : "joined end to end (one node of both: its row is in '" +
+                              split.fractures[first].name + "')";
+    notes.push_back("junction at " + formatPoint(split.mesh.points[g.node[i]], 2) + ": " + what +
+                    "; meets " + others);
+  }
+  return notes;
+}
+
 }  // namespace friction

@@ -123,4 +123,9 @@ struct SplitMesh {
 ///   pieces (not joined through edges).
 SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& fractures);
 
+/// 2D: one line per junction node of fracture f (kinds crossing, abutting, joined) saying
+/// where it is, what the fracture does there and which fractures it meets, e.g.
+/// "junction at (0 0): passes through; meets 'branch'". For the fracture tables' comments.
+std::vector<std::string> junctionNotes(const SplitMesh& split, std::size_t f);
+
 }  // namespace friction

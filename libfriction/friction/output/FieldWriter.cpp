@@ -49,7 +49,8 @@ bool turnedFrame(const std::vector<FractureRow>& rows) {
 }  // namespace
 
 void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,
-                        const std::string& statusLine, int precision, int dim) {
+                        const std::string& statusLine, int precision, int dim,
+                        const std::vector<std::string>& notes) {
   std::ostringstream out;
   out.precision(precision);
   // One spelling of NaN ("nan", never "-nan"), which numpy, pandas and VTK read.
@@ -65,6 +66,7 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   if (dim != 3) {
     out << "# s x y slip slipIncrement sigmaN tau ST residual " << (opening ? "opening " : "")
         << "state\n# " << statusLine << "\n";
+    for (const std::string& note : notes) out << "# " << note << "\n";
     for (const FractureRow& r : rows) {
       out << r.s << " " << r.position.x() << " " << r.position.y() << " " << r.slip[0] << " "
           << r.slipIncrement[0] << " ";

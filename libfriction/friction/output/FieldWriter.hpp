@@ -3,7 +3,8 @@
 //    2D) on the points of the split mesh, so the jump across a fracture is visible;
 //    foamDictionary reads it.
 //  * writeFractureTable: <time>/fractures/<name>.dat, whitespace-separated, one row per control
-//    node; line 2 gives the step's solver status. state is stick, slip, open or tip; a tip has
+//    node; line 2 gives the step's solver status (2D: then one comment per junction node, see
+//    junctionNotes). state is stick, slip, open, tip or junction; a tip has
 //    no traction: its traction columns are "nan" (numpy.loadtxt, pandas and VTK read it as
 //    NaN), every other value is finite.
 //    2D: line 1 "# s x y slip slipIncrement sigmaN tau ST residual state", rows in arclength
@@ -50,7 +51,10 @@ struct FractureRow {
 
 /// dim: 2 or 3, the layout of the file comment (2D: components [0]; 3D: both, the magnitudes
 /// and slipX.. = slip[0] t₁ + slip[1] t₂ derived here). NaN values are written "nan".
+/// `notes`: more comment lines after the status line (2D: the fracture's junctions), each
+/// written as "# " + note.
 void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,
-                        const std::string& statusLine, int precision, int dim);
+                        const std::string& statusLine, int precision, int dim,
+                        const std::vector<std::string>& notes = {});
 
 }  // namespace friction
