@@ -460,15 +460,23 @@ TEST_CASE("junctions: every law, every optimizer, fractures that open", "[juncti
     // lbfgs and barzilaiBorwein to a tolerance of 1e-8 (they are first-order: 260 and ~1200
     // iterations here) against Newton's slip: the residual bound leaves a slip error of
     // that order (measured 4.9e-8 and 1.6e-7 of the largest slip, written to
-    // measured-optimizers.txt); 1e-6 is the bound. steepestDescent and armijo need tens of
-    // thousands of iterations on this case (as on others): not run here.
+    // measured-optimizers.txt); 1e-6 is the bound.
     Table newton;
-    for (const std::string optimizer : {"semismoothNewton", "lbfgs", "barzilaiBorwein"}) {
+    // armijo and steepestDescent to 1e-6 and 1e-5 (12 349 and 17 935 iterations: what
+    // first-order descent on a fracture costs): their slips within 100 times the tolerance of
+    // Newton's (measured 1.6e-5 and 1.6e-4).
+    for (const auto& [optimizer, tolerance] :
+         std::vector<std::pair<std::string, std::string>>{{"semismoothNewton", "1e-8"},
+                                                          {"lbfgs", "1e-8"},
+                                                          {"barzilaiBorwein", "1e-8"},
+                                                          {"armijo", "1e-6"},
+                                                          {"steepestDescent", "1e-5"}}) {
       JunctionCase c("optimizers-" + optimizer, {{"main", 0.3}, {"branch", 0.3}});
       c.gmsh("branch 2 theta 90");
       c.runner().edit("system/frictionSolution", "type +semismoothNewton;",
                       "type " + optimizer + ";");
-      c.runner().edit("system/frictionSolution", "tolerance +1e-12;", "tolerance 1e-8;");
+      c.runner().edit("system/frictionSolution", "tolerance +1e-12;",
+                      "tolerance " + tolerance + ";");
       c.runner().edit("system/frictionSolution", "maxIterations +100;", "maxIterations 20000;");
       c.solve();
       const Table m = c.table("main");
@@ -482,9 +490,11 @@ TEST_CASE("junctions: every law, every optimizer, fractures that open", "[juncti
         worst = std::max(worst, std::abs(m.at(r, "slip") - newton.at(r, "slip")));
         CHECK(m.state[r] == newton.state[r]);
       }
-      measured("optimizers", optimizer + ": max |slip - Newton's| / max slip",
+      measured("optimizers",
+               optimizer + " (tolerance " + tolerance + "): max |slip - Newton's| / max slip",
                worst / maxAbs(newton, "slip"));
-      CHECK(worst <= 1e-6 * maxAbs(newton, "slip"));
+      CHECK(worst <=
+            (tolerance == "1e-8" ? 1e-6 : 1e2 * std::stod(tolerance)) * maxAbs(newton, "slip"));
     }
   }
   SECTION("fractures that open") {
