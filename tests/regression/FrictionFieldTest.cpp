@@ -149,7 +149,7 @@ TEST_CASE("friction fields: with mu_f growing with depth, Coulomb holds with eac
 }
 
 TEST_CASE(
-    "friction fields in 3D: constant forms equal the number; a points field holds node "
+    "friction fields in 3D: constant forms equal the number and a points field holds node "
     "by node",
     "[regression][field][3d]") {
   Case base(kCube, "field-3d-base");
@@ -230,7 +230,7 @@ TEST_CASE("friction fields: a Tresca threshold along the crack bounds |tau| node
 }
 
 TEST_CASE(
-    "friction fields on P2: a points file over vertices and midpoints equals the number; "
+    "friction fields on P2: a points file over vertices and midpoints equals the number and "
     "the depth field holds at the midpoints too",
     "[regression][field]") {
   const auto p2 = [](Case& c) {

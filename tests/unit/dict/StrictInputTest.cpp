@@ -108,7 +108,7 @@ TEST_CASE("a number out of the range of a double is an error, not inf or 0", "[d
         "items before '(')");
 }
 
-TEST_CASE("'uniform' may precede a single value; 'nonuniform' and 'List<>' only a list",
+TEST_CASE("'uniform' may precede a single value, 'nonuniform' and 'List<>' only a list",
           "[dict][numbers]") {
   const Dictionary d = Dictionary::parse(
       "a uniform 3;\nv uniform (1 2);\nl List<scalar> 2(1 2);\nn nonuniform 3;\n"
@@ -149,7 +149,7 @@ TEST_CASE("a UTF-8 byte-order mark is skipped, in the file and in an included fi
   CHECK(inside.getWord("E") == kBom);
 }
 
-TEST_CASE("a dictionary without a FoamFile header reads like one with it; binary is refused",
+TEST_CASE("a dictionary without a FoamFile header reads like one with it and binary is refused",
           "[dict][header]") {
   TempDir dir;
   const std::string with = dir.write("with", "FoamFile\n{\n    format ascii;\n}\nE 1;\n");
