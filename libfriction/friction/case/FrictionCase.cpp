@@ -1005,7 +1005,9 @@ void FrictionCase::judgeStep(StepResult& r) const {
       << ": round-off of an ill-conditioned system (nu = " << std::setprecision(12)
       << materials_->maxPoissonRatio() << std::setprecision(3) << ", smallest pivot ratio "
       << sys.factorization().minPivotRatio()
-      << "); loosen the tolerance, use elementOrder 2, or remesh without slivers";
+      << "); loosen the tolerance, "
+      // A P2 run is told nothing about elementOrder 2.
+      << (order_ == 1 ? "use elementOrder 2, " : "") << "or remesh without slivers";
     addNote(s.str());
   }
   // 3. A slip larger than the body: nothing holds part of it.
