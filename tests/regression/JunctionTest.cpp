@@ -515,6 +515,16 @@ TEST_CASE("junctions: every law, every optimizer, fractures that open", "[juncti
     CHECK(open >= static_cast<int>(m.rows.size()) - 2);
     CHECK(b.state[jb] != "open");
     CHECK(b.at(jb, "opening") == 0.0);
+    // With fractures that open the step's line counts the nodes per state: the X has no held
+    // end, so no junction count.
+    CHECK_THAT(c.log(), !Catch::Contains(" junction "));
+  }
+  SECTION("fractures that open: the log counts the held junction end") {
+    JunctionCase c("laws-opening-T", {{"main", 0.3}, {"branch", 0.3}});
+    c.gmsh("branch 1 theta 120");
+    c.properties("law coulomb; frictionCoefficient 0.3; contact unilateral;");
+    c.solve();
+    CHECK_THAT(c.log(), Catch::Contains(" tip 3 junction 1"));
   }
 }
 

@@ -159,18 +159,6 @@ void printSummary3(const Mesh& mesh) {
   std::cout << std::right << "\n";
 }
 
-// The other fractures at unsplit node v than g, quoted: "'a' and 'b'".
-std::string othersAt(const SplitMesh& split, const FractureGeometry& g, Index v) {
-  std::vector<std::string> names;
-  for (const FractureGeometry& h : split.fractures)
-    if (&h != &g && std::find(h.node.begin(), h.node.end(), v) != h.node.end())
-      names.push_back("'" + h.name + "'");
-  std::string s;
-  for (std::size_t k = 0; k < names.size(); ++k)
-    s += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
-  return s;
-}
-
 // 2D: each node where fractures meet, with each fracture's role there and the copies made.
 void printJunctions(const Mesh& mesh, const SplitMesh& split) {
   std::map<Index, std::vector<std::pair<const FractureGeometry*, FractureNodeKind>>> at;
@@ -228,7 +216,8 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
   }
   std::cout << std::right << "\n";
 
-  for (const FractureGeometry& g : split.fractures) {
+  for (std::size_t f = 0; f < split.fractures.size(); ++f) {
+    const FractureGeometry& g = split.fractures[f];
     const Index n = g.numNodes();
     std::cout << "Fracture " << g.name << " (label " << g.label << ")\n"
               << "    edges:        " << n - 1 << "\n"
@@ -243,11 +232,11 @@ void printSummary(const Mesh& mesh, const SplitMesh& split, const std::set<int>&
           what = "tip inside the body (single node)";
           break;
         case FractureNodeKind::abutting:
-          what = "ends on the junction with " + othersAt(split, g, g.node[i]) +
+          what = "ends on the junction with " + othersAt(split, f, g.node[i]) +
                  " (its jump held there)";
           break;
         case FractureNodeKind::joined:
-          what = "joined end to end with " + othersAt(split, g, g.node[i]) + " (one node of both)";
+          what = "joined end to end with " + othersAt(split, f, g.node[i]) + " (one node of both)";
           break;
         default:
           what = "on the outer boundary, " + patchesAt(mesh, g.node[i], fractureLabels) +

@@ -870,6 +870,19 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
 
 }  // namespace
 
+std::string othersAt(const SplitMesh& split, std::size_t f, Index node) {
+  std::vector<std::string> names;
+  for (std::size_t o = 0; o < split.fractures.size(); ++o) {
+    const auto& nodes = split.fractures[o].node;
+    if (o != f && std::find(nodes.begin(), nodes.end(), node) != nodes.end())
+      names.push_back("'" + split.fractures[o].name + "'");
+  }
+  std::string s;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    s += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return s;
+}
+
 std::vector<std::string> junctionNotes(const SplitMesh& split, std::size_t f) {
   std::vector<std::string> notes;
   const FractureGeometry& g = split.fractures.at(f);
@@ -878,26 +891,24 @@ std::vector<std::string> junctionNotes(const SplitMesh& split, std::size_t f) {
     if (kind != FractureNodeKind::crossing && kind != FractureNodeKind::abutting &&
         kind != FractureNodeKind::joined)
       continue;
-    std::string others;
-    std::size_t first = f;  // the lowest-numbered fracture at the node (a joined node's owner)
-    for (std::size_t o = 0; o < split.fractures.size(); ++o) {
-      if (o == f) continue;
-      const auto& nodes = split.fractures[o].node;
-      if (std::find(nodes.begin(), nodes.end(), g.node[i]) == nodes.end()) continue;
-      others += (others.empty() ? "'" : ", '") + split.fractures[o].name + "'";
-      first = std::min(first, o);
-    }
     std::string what;
     if (kind == FractureNodeKind::crossing)
       what = "passes through";
     else if (kind == FractureNodeKind::abutting)
       what = "ends here, its jump held (state junction)";
-    else
-      what = first == f ? "joined end to end (one node of both: its row is in this table)"
+    else {
+      // A joined node belongs to the first-listed of its two fractures.
+      std::size_t owner = f;
+      for (std::size_t o = 0; o < f; ++o) {
+        const auto& nodes = split.fractures[o].node;
+        if (std::find(nodes.begin(), nodes.end(), g.node[i]) != nodes.end()) owner = o;
+      }
+      what = owner == f ? "joined end to end (one node of both: its row is in this table)"
                         : "joined end to end (one node of both: its row is in '" +
-                              split.fractures[first].name + "')";
+                              split.fractures[owner].name + "')";
+    }
     notes.push_back("junction at " + formatPoint(split.mesh.points[g.node[i]], 2) + ": " + what +
-                    "; meets " + others);
+                    "; meets " + othersAt(split, f, g.node[i]));
   }
   return notes;
 }

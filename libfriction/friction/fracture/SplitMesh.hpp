@@ -123,6 +123,10 @@ struct SplitMesh {
 ///   pieces (not joined through edges).
 SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& fractures);
 
+/// The fractures other than f that have unsplit node `node`, quoted and listed in their
+/// order: "'a'", "'a' and 'b'", "'a', 'b' and 'c'"; empty if none.
+std::string othersAt(const SplitMesh& split, std::size_t f, Index node);
+
 /// 2D: one line per junction node of fracture f (kinds crossing, abutting, joined) saying
 /// where it is, what the fracture does there and which fractures it meets, e.g.
 /// "junction at (0 0): passes through; meets 'branch'". For the fracture tables' comments.
