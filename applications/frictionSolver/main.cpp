@@ -4,6 +4,7 @@
 //
 // Sample run (after splitFractureNodes):
 //   frictionSolver -case cases/paperBenchmark
+//   mpirun -np 2 frictionSolver -parallel -case cases/paperBenchmark   (linearSolver mumps)
 // prints the settings, one line per time step (iterations, back-substitutions, J,
 // |D|/|Sigma|, max(ST − μ_f, 0), status) and End; writes time folders <t>/D,
 // <t>/fractures/<name>.dat, <t>/solverStatus and postProcessing/convergence.dat.
@@ -26,6 +27,7 @@
 #include "friction/control/Optimizer.hpp"
 #include "friction/core/CommandLine.hpp"
 #include "friction/core/OutputError.hpp"
+#include "friction/core/Parallel.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/effect/Effect.hpp"
 #include "friction/law/FrictionLaw.hpp"
@@ -45,6 +47,15 @@ std::string peakMemoryGb() {
   s << std::setprecision(3) << static_cast<double>(usage.ru_maxrss) * 1024 / 1e9;
   return s.str();
 }
+
+// A stream buffer that drops what it is given: the log of ranks other than 0.
+class NullBuffer : public std::streambuf {
+ protected:
+  int overflow(int c) override { return c == EOF ? 0 : c; }
+  std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+};
+
+int solve(const po::variables_map& args);
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,12 +65,15 @@ int main(int argc, char** argv) {
       "listModels", "list the friction laws, optimizers and linear solvers")(
       "overwrite",
       "remove an earlier run's outputs (time folders after startTime, VTK files, "
-      "postProcessing/convergence.dat) before running")("help", "print this help");
+      "postProcessing/convergence.dat) before running")(
+      "parallel",
+      "run on the ranks mpirun started (mpirun -np N frictionSolver -parallel ...; needs "
+      "linearSolver mumps)")("help", "print this help");
   const auto parsed = parseCommandLine(argc, argv, options, "frictionSolver");
   if (!parsed) return 2;
   const po::variables_map& args = *parsed;
   if (args.count("help")) {
-    std::cout << "Usage: frictionSolver [-case DIR] [-overwrite] [-listModels]\n\n"
+    std::cout << "Usage: frictionSolver [-case DIR] [-overwrite] [-parallel] [-listModels]\n\n"
                  "Runs the case in DIR (split by splitFractureNodes) through quasi-static time.\n\n"
               << options;
     return 0;
@@ -78,13 +92,48 @@ int main(int argc, char** argv) {
     return 0;
   }
 
+  // Several ranks (mpirun): MPI first. Without -parallel every rank would run the whole case
+  // and write the same files: refused.
+  const int launched = parallel::launchedRanks();
+  if (!args.count("parallel") && launched > 1) {
+    std::cerr << "frictionSolver: error: started as one of " << launched
+              << " ranks (mpirun) without -parallel: each would run the whole case and write "
+                 "the same files; run 'mpirun -np "
+              << launched << " frictionSolver -parallel ...' (with linearSolver mumps)\n";
+    return 2;
+  }
+  if (args.count("parallel") && !parallel::initialize(argc, argv)) {
+    std::cerr << "frictionSolver: error: -parallel: this build has no MPI (configure with "
+                 "-DFRICTION_MUMPS=ON, with libmumps-dev and mpi-default-dev installed)\n";
+    return 2;
+  }
+  // Rank 0 writes the log; the others keep quiet (their errors still reach stderr).
+  NullBuffer quiet;
+  std::streambuf* const logBuffer = std::cout.rdbuf();
+  if (!parallel::isMaster()) std::cout.rdbuf(&quiet);
+  const int status = solve(args);
+  std::cout.flush();
+  std::cout.rdbuf(logBuffer);
+  // An output or system error may strike one rank only (rank 0 writes; memory runs out on
+  // one): the others would wait in a shared solve forever, so stop them all with its status.
+  // Input errors are found by every rank alike while reading, before any shared work.
+  if (status == 6 && parallel::size() > 1) parallel::abort(status);
+  parallel::finalize();
+  return status;
+}
+
+namespace {
+int solve(const po::variables_map& args) {
   try {
     // 2. Read and validate the whole case before any work.
-    std::cout << "frictionSolver\n";
+    std::cout << "frictionSolver";
+    if (parallel::size() > 1) std::cout << " (" << parallel::size() << " ranks)";
+    std::cout << "\n";
     FrictionCase c(args["case"].as<std::string>());
     // An earlier run's time folders are refused, continued (startFrom latestTime) or, with
     // -overwrite, removed: before any work.
     c.prepareOutput(args.count("overwrite") > 0, std::cout);
+    parallel::barrier();  // rank 0 has removed what -overwrite removes
 
     // 3. Assemble and factor once.
     if (c.setup(std::cout) != FactorStatus::ok) {
@@ -143,3 +192,4 @@ int main(int argc, char** argv) {
     return 6;
   }
 }
+}  // namespace

@@ -20,6 +20,7 @@
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/OutputError.hpp"
+#include "friction/core/Parallel.hpp"
 #include "friction/core/StopRequest.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
@@ -166,7 +167,19 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
 
   const Dictionary sol = readCaseFile(caseDir, "system/frictionSolution");
   order_ = static_cast<int>(sol.getIntOr("elementOrder", 1, {1, 2}));
+  if (!parallel::available() && sol.found("linearSolver") && sol.getWord("linearSolver") == "mumps")
+    throw InputError(sol.location("linearSolver"),
+                     "linear solver 'mumps' is not in this build: configure with "
+                     "-DFRICTION_MUMPS=ON and MUMPS and MPI installed (libmumps-dev, "
+                     "mpi-default-dev); valid types are: " +
+                         joinWords(SparseFactor::backendNames()));
   linearSolver_ = sol.getChoiceOr("linearSolver", SparseFactor::backendNames(), "cholmod");
+  // Several ranks share the factorisation: only the mumps solver can.
+  if (parallel::size() > 1 && linearSolver_ != "mumps")
+    throw InputError(sol.found("linearSolver") ? sol.location("linearSolver") : sol.location(),
+                     "this run has " + std::to_string(parallel::size()) +
+                         " ranks (frictionSolver -parallel) but linear solver '" + linearSolver_ +
+                         "' runs on one: set 'linearSolver mumps;'");
   const Dictionary& control = sol.subDict("control");
   if (control.alternative({{"gamma"}, {"gammaRelative"}}, 1) == 0) {
     gammaAbsolute_ = true;
@@ -387,6 +400,10 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
            << " s numeric";
       if (a.complementSeconds > 0) line << ", " << a.complementSeconds << " s the complement";
     }
+    // A distributed factor: how many ranks share it and what it took on each.
+    if (a.rankMemoryMax > 0)
+      line << "; " << a.ranks << (a.ranks == 1 ? " rank, " : " ranks, ") << a.rankMemoryMax / 1e9
+           << " GB on the largest rank, " << a.memoryTotal / 1e9 << " GB in all";
     log << line.str() << "\n";
   }
   // Condensed Newton's S: a by-product of the factorisation, or blocks of solves where the
@@ -647,6 +664,8 @@ void FrictionCase::prepareOutput(bool overwrite, std::ostream& log) {
   for (const auto& [t, name] : timeFolders(caseDir_))
     if (t > time_->startTime()) earlier.push_back(name);
   if (overwrite) {
+    // Several ranks: rank 0 alone touches the files (the others wait at a barrier in main).
+    if (!parallel::isMaster()) return;
     for (const std::string& name : earlier) {
       std::error_code ec;
       fs::remove_all(fs::path(caseDir_) / name, ec);
@@ -671,6 +690,7 @@ void FrictionCase::prepareOutput(bool overwrite, std::ostream& log) {
 }
 
 void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh) {
+  if (!parallel::isMaster()) return;  // rank 0 writes every output file
   TimeFolder::removeLeftovers(caseDir_);
   std::vector<std::string> fractureNames;
   for (const auto& g : split_.fractures) fractureNames.push_back(g.name);
@@ -843,7 +863,14 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         last_ = problem.evaluate(beta);
         r.relResidual = problem.relativeResidual(last_);
       } catch (const StopNow& s) {
-        // A second signal: the step is abandoned; nothing of it is written.
+        // A second signal: the step is abandoned; nothing of it is written. With several ranks
+        // the others may be inside a shared solve that would wait for this one forever: stop
+        // them all (exit status 5, as a serial run's).
+        if (parallel::size() > 1) {
+          log << "\nStopped during the step to time " << time_->timeName(r.time) << " (" << s.what()
+              << " twice: abandoned, not written)" << std::endl;
+          parallel::abort(5);
+        }
         stoppedEarly_ = std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM") + ", then " +
                         s.what() + ": the step to time " + time_->timeName(r.time) +
                         " was abandoned and not written";
@@ -890,7 +917,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     for (const auto& h : r.report.history)
       lines << time_->timeName(r.time) << " " << h.iteration << " " << h.J << " " << h.relResidual
             << " " << std::max(h.stepNorm, 0.0) << "\n";
-    history_->append(lines.str());
+    if (history_) history_->append(lines.str());  // rank 0's only
 
     // Stop requests: the user edited stopAt in controlDict, or sent SIGINT/SIGTERM.
     std::error_code stampError;
@@ -910,8 +937,13 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         log << "controlDict changed but cannot be read (" << e.what() << "): ignored\n";
       }
     }
-    const auto stopAt = time_->stopAt();
-    const bool signalled = stopRequested() != 0;
+    // Every rank takes rank 0's stopAt and the first signal any rank received, so that they
+    // all stop, or go on, together.
+    int shared[2] = {static_cast<int>(time_->stopAt()), parallel::maxOverRanks(stopRequested())};
+    parallel::broadcast(shared, 2);
+    const auto stopAt = static_cast<TimeControl::StopAt>(shared[0]);
+    const int signal = shared[1];
+    const bool signalled = signal != 0;
     const bool stopNow = signalled || stopAt == TimeControl::StopAt::writeNow ||
                          stopAt == TimeControl::StopAt::noWriteNow ||
                          (stopAt == TimeControl::StopAt::nextWrite && time_->writes(k));
@@ -957,7 +989,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     log.flush();
     results.push_back(std::move(r));
     if (stopNow && k < time_->numSteps()) {
-      stoppedEarly_ = signalled ? std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM")
+      stoppedEarly_ = signalled ? std::string(signal == SIGINT ? "SIGINT" : "SIGTERM")
                                 : "stopAt in system/controlDict";
       log << "\nStopped at time " << time_->timeName(time_->time(k)) << " (" << stoppedEarly_ << ")"
           << (results.back().written ? ", this time written" : "") << "\n";
@@ -1089,6 +1121,7 @@ std::string FrictionCase::nodeState(Eigen::Index k) const {
 }
 
 void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step) {
+  if (!parallel::isMaster()) return;  // rank 0 writes every output file
   const int precision = time_->writePrecision();
   TimeFolder folder(caseDir_, time_->timeName(r.time));
   const FractureSystem& sys = *system_;

@@ -12,35 +12,12 @@
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/Suggest.hpp"
+#include "friction/linalg/SparseFactorBackend.hpp"
 
 // LAPACK (OpenBLAS's at run time, as for CHOLMOD): U Uᵀ in place of an upper triangular U.
 extern "C" void dlauum_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 
 namespace friction {
-
-using SparseMatrix = Eigen::SparseMatrix<double>;
-
-/// A factorisation backend. factor() returns the backend's own verdict; pivots() gives, per
-/// original row i, the pivot of that row in the factor (d of LDLᵀ or l² of LLᵀ), so that the
-/// caller can apply one relative test to every backend.
-class SparseFactor::Backend {
- public:
-  virtual ~Backend() = default;
-  virtual FactorStatus factor(const SparseMatrix& A) = 0;
-  virtual Eigen::VectorXd pivots() const = 0;
-  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
-  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const = 0;
-  /// Factor the bordered matrix [A B; Bᵀ C] with the border last and return C − Bᵀ A⁻¹ B in
-  /// `schur`; afterwards pivots() and solve() are those of A. Returns false when the backend
-  /// cannot (then nothing was changed, `whyNot` says why, and the caller factors A alone).
-  virtual bool factorBordered(const SparseMatrix& /*A*/, const SparseMatrix& /*B*/,
-                              const SparseMatrix& /*C*/, Eigen::MatrixXd& /*schur*/,
-                              FactorStatus& /*status*/, std::string& /*whyNot*/) {
-    return false;
-  }
-  /// The ordering and size of the last analysis, as far as the backend knows them.
-  virtual FactorAnalysis analysis() const { return {}; }
-};
 
 namespace {
 
@@ -462,6 +439,9 @@ const BackendEntry kBackends[] = {
     {"cholmod", [] { return std::unique_ptr<SparseFactor::Backend>(new CholmodBackend); }},
     {"simplicialLDLT",
      [] { return std::unique_ptr<SparseFactor::Backend>(new SimplicialLdltBackend); }},
+#ifdef FRICTION_WITH_MUMPS
+    {"mumps", makeMumpsBackend},
+#endif
 };
 
 // One BLAS thread for a single right-hand side. A back-substitution with one vector is
@@ -519,6 +499,14 @@ SparseFactor::SparseFactor(const std::string& backend, const SourceLocation& whe
     : backend_(backend) {
   for (const auto& entry : kBackends)
     if (backend == entry.name) impl_ = entry.make();
+#ifndef FRICTION_WITH_MUMPS
+  if (backend == "mumps")
+    throw InputError(where,
+                     "linear solver 'mumps' is not in this build: configure with "
+                     "-DFRICTION_MUMPS=ON and MUMPS and MPI installed (libmumps-dev, "
+                     "mpi-default-dev); valid types are: " +
+                         joinWords(backendNames()));
+#endif
   if (!impl_)
     throw InputError(where, "unknown linear solver '" + backend + "'" +
                                 suggestionText(backend, backendNames()) +
@@ -557,6 +545,7 @@ FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix*
   }
   // The bordered factorisation where the backend has one (and the border is finite: a
   // non-finite border is left to the blocked solves, whose results then say so).
+  impl_->setPivotTolerance(pivotTolerance_);
   bool bordered = false;
   if (B && C) {
     bool finite = true;
@@ -580,6 +569,7 @@ FactorStatus SparseFactor::judgePivots(const SparseMatrix& A) {
     // One relative test for every backend: a pivot that is round-off compared with its
     // diagonal entry means the matrix is singular to working precision.
     const Eigen::VectorXd pivot = impl_->pivots();
+    if (pivot.size() == 0) return status_;  // the backend judged them (mumps)
     const Eigen::VectorXd diag = A.diagonal();
     double minRatio = std::numeric_limits<double>::infinity();
     for (Eigen::Index i = 0; i < pivot.size(); ++i) {

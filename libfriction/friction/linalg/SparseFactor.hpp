@@ -6,6 +6,9 @@
 //                   fill-reducing ordering by CHOLMOD (AMD / METIS). The default.
 //   simplicialLDLT  Eigen's SimplicialLDLT with AMD ordering: no external library; slower on
 //                   large 2D problems, kept as a fallback and a cross-check.
+//   mumps           MUMPS (multifrontal LDLᵀ, symmetric mode) shared by the ranks of an MPI run
+//                   (frictionSolver -parallel); with one rank, the same solver serially. Only
+//                   in builds with FRICTION_MUMPS (README "Running in parallel").
 // Both read the lower triangle of the matrix, so full and lower storage are both fine.
 //
 // A failed factorisation is a value (FactorStatus), not an exception or a crash: the caller
@@ -47,6 +50,12 @@ struct FactorAnalysis {
   double analysisSeconds = 0;
   double numericSeconds = 0;
   double complementSeconds = 0;
+  // Distributed backends (mumps): the ranks that share the factor, and the memory the
+  // factorisation used on the rank that used most and on all of them together [bytes] (0:
+  // unknown).
+  int ranks = 1;
+  double rankMemoryMax = 0;
+  double memoryTotal = 0;
 };
 
 class SparseFactor {
@@ -82,7 +91,9 @@ class SparseFactor {
   double pivotTolerance() const { return pivotTolerance_; }
   void setPivotTolerance(double tolerance) { pivotTolerance_ = tolerance; }
   /// Smallest d_k / A_kk of the last factorisation (diagnostics: a tiny value warns of a
-  /// nearly singular problem even when the status is ok). NaN before the first factor().
+  /// nearly singular problem even when the status is ok). NaN before the first factor(), and
+  /// with a backend that does not report its pivots (mumps: it detects null and negative
+  /// pivots itself, against pivotTolerance() · max |A_ij|).
   double minPivotRatio() const { return minPivotRatio_; }
   /// Largest |A_ij| of the last factorisation's matrix (inf when an entry overflowed or is
   /// NaN): tells overflow and bad scaling (E in Pa near 1e300) apart from singularity.

@@ -3,6 +3,7 @@
 // give a status value; a typo in the backend name is an InputError listing valid names.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "../fe/FeTestMeshes.hpp"
 #include "friction/fe/DirichletConditions.hpp"
@@ -26,10 +27,17 @@ Eigen::SparseMatrix<double> spdMatrix(Eigen::SparseMatrix<double>* full = nullpt
   return ReducedSystem(K, bc).matrix();
 }
 
+/// The relative pivot test passed: minPivotRatio above the tolerance, or NaN for a backend
+/// that judges its pivots itself (mumps, which then reported ok).
+bool pivotsPass(const SparseFactor& factor) {
+  if (factor.backend() == "mumps") return factor.ok() && std::isnan(factor.minPivotRatio());
+  return factor.minPivotRatio() > factor.pivotTolerance();
+}
+
 }  // namespace
 
 TEST_CASE("linalg SparseFactor backends solve an SPD system to round-off", "[linalg]") {
-  const std::string backend = GENERATE(as<std::string>{}, "cholmod", "simplicialLDLT");
+  const std::string backend = GENERATE(from_range(SparseFactor::backendNames()));
   CAPTURE(backend);
   const Eigen::SparseMatrix<double> A = spdMatrix();
   SparseFactor factor(backend);
@@ -39,7 +47,7 @@ TEST_CASE("linalg SparseFactor backends solve an SPD system to round-off", "[lin
   REQUIRE(factor.factor(A) == FactorStatus::ok);
   REQUIRE(factor.ok());
   REQUIRE(factor.rows() == A.rows());
-  REQUIRE(factor.minPivotRatio() > factor.pivotTolerance());
+  REQUIRE(pivotsPass(factor));
   REQUIRE(factor.factorSeconds() >= 0.0);
 
   // Manufactured: x known, b = A x.
@@ -76,7 +84,7 @@ TEST_CASE("linalg SparseFactor backends agree with each other", "[linalg]") {
 }
 
 TEST_CASE("linalg SparseFactor reports singular and indefinite matrices as values", "[linalg]") {
-  const std::string backend = GENERATE(as<std::string>{}, "cholmod", "simplicialLDLT");
+  const std::string backend = GENERATE(from_range(SparseFactor::backendNames()));
   CAPTURE(backend);
   SparseFactor factor(backend);
   // The free-floating stiffness matrix has the three rigid modes in its null space.
@@ -98,7 +106,20 @@ TEST_CASE("linalg SparseFactor reports singular and indefinite matrices as value
 }
 
 TEST_CASE("linalg SparseFactor rejects an unknown backend with the valid names", "[linalg]") {
+#ifdef FRICTION_WITH_MUMPS
+  REQUIRE(SparseFactor::backendNames() ==
+          std::vector<std::string>{"cholmod", "simplicialLDLT", "mumps"});
+#else
   REQUIRE(SparseFactor::backendNames() == std::vector<std::string>{"cholmod", "simplicialLDLT"});
+  // A build without MUMPS names what it lacks.
+  try {
+    SparseFactor factor("mumps", SourceLocation{"system/frictionSolution", 3});
+    FAIL("no InputError");
+  } catch (const InputError& e) {
+    REQUIRE_THAT(e.message(),
+                 Catch::Contains("not in this build") && Catch::Contains("-DFRICTION_MUMPS=ON"));
+  }
+#endif
   try {
     SparseFactor factor("cholmd", SourceLocation{"system/solverDict", 12});
     FAIL("no InputError");
@@ -134,7 +155,7 @@ void border(Eigen::Index n, Eigen::Index m, Eigen::SparseMatrix<double>& B,
 
 TEST_CASE("linalg SparseFactor forms the Schur complement C - B^T A^-1 B with the factorisation",
           "[linalg]") {
-  const std::string backend = GENERATE(as<std::string>{}, "cholmod", "simplicialLDLT");
+  const std::string backend = GENERATE(from_range(SparseFactor::backendNames()));
   CAPTURE(backend);
   const Eigen::SparseMatrix<double> A = spdMatrix();
   const Eigen::Index n = A.rows(), m = 40;
@@ -159,9 +180,9 @@ TEST_CASE("linalg SparseFactor forms the Schur complement C - B^T A^-1 B with th
   REQUIRE(scale > 0);
   CHECK((S - reference).cwiseAbs().maxCoeff() <= 1e-9 * scale);
   CHECK((S - S.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale);
-  // cholmod delivers it from the bordered factorisation, with no back-substitution; the
-  // other backend spends one per border column.
-  if (backend == "cholmod")
+  // cholmod and mumps deliver it from the bordered factorisation, with no back-substitution;
+  // simplicialLDLT spends one per border column.
+  if (backend != "simplicialLDLT")
     CHECK(factor.schurSolves() == 0);
   else
     CHECK(factor.schurSolves() == m);
@@ -175,7 +196,7 @@ TEST_CASE("linalg SparseFactor forms the Schur complement C - B^T A^-1 B with th
   CHECK((Y - X).cwiseAbs().maxCoeff() <= 1e-10);
   const Eigen::VectorXd y = factor.solve(Eigen::VectorXd(A * X.col(0)));
   CHECK((y - X.col(0)).cwiseAbs().maxCoeff() <= 1e-10);
-  CHECK(factor.minPivotRatio() > factor.pivotTolerance());
+  CHECK(pivotsPass(factor));
 
   // The complement by blocks of solves, from the same factor, agrees.
   const long before = factor.numSolves();
@@ -190,7 +211,7 @@ TEST_CASE("linalg SparseFactor forms the Schur complement C - B^T A^-1 B with th
 
 TEST_CASE("linalg SparseFactor: a semi-definite complement is formed, a singular A is reported",
           "[linalg]") {
-  const std::string backend = GENERATE(as<std::string>{}, "cholmod", "simplicialLDLT");
+  const std::string backend = GENERATE(from_range(SparseFactor::backendNames()));
   CAPTURE(backend);
   const Eigen::SparseMatrix<double> A = spdMatrix();
   const Eigen::Index n = A.rows();
@@ -255,3 +276,24 @@ TEST_CASE("linalg SparseFactor reports the ordering and the size of the factor i
   CHECK(ldlt.analysis().entries == 0);
   CHECK(ldlt.analysis().ordering.empty());
 }
+
+#ifdef FRICTION_WITH_MUMPS
+TEST_CASE("linalg SparseFactor mumps reports its ordering, factor size and memory", "[linalg]") {
+  const Eigen::SparseMatrix<double> A = spdMatrix();
+  const Eigen::Index n = A.rows();
+  const Eigen::SparseMatrix<double> lower = A.triangularView<Eigen::Lower>();
+  SparseFactor mumps("mumps");
+  REQUIRE(mumps.factor(A) == FactorStatus::ok);
+  const FactorAnalysis a = mumps.analysis();
+  // As for cholmod: L holds at least A's lower triangle, at most a dense one.
+  CHECK(a.entries >= static_cast<double>(lower.nonZeros()));
+  CHECK(a.entries <= 0.5 * static_cast<double>(n) * static_cast<double>(n + 1));
+  CHECK(a.flops >= a.entries);
+  CHECK_THAT(std::string("AMD AMF SCOTCH PORD METIS QAMD"), Catch::Contains(a.ordering));
+  CHECK_FALSE(a.ordering.empty());
+  // One rank here (the unit tests run without mpirun): it holds everything.
+  CHECK(a.ranks == 1);
+  CHECK(a.rankMemoryMax > 8 * a.entries);
+  CHECK(a.memoryTotal == a.rankMemoryMax);
+}
+#endif

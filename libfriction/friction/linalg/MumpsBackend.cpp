@@ -1,0 +1,312 @@
+// MumpsBackend: the "mumps" linear solver — MUMPS's multifrontal LDLᵀ (symmetric mode,
+// SYM = 2), shared by the ranks of an MPI run (docs/method.md §4 "The distributed engine").
+//
+// Every rank holds the same assembled matrix (the set-up is replicated, README "Running in
+// parallel") and hands MUMPS its own share of the entries (distributed assembled input,
+// ICNTL(18) = 3): MUMPS then orders, factors and solves across the ranks. Right-hand sides
+// and solutions are centralised on rank 0 and the solution is broadcast, so that every rank
+// continues with the same numbers.
+//
+// The interface operator: MUMPS's Schur complement (ICNTL(19) = 1) on the jump unknowns of
+// the bordered matrix [A B; Bᵀ C], ordered last by MUMPS itself — the same "by-product of the
+// one factorisation" as the cholmod backend's, but distributed. Solves with A afterwards use
+// ICNTL(26) = 0, which solves the interior problem A x = b with the same factor. (PETSc's
+// interface to MUMPS refuses Schur complements on more than one rank, which is why this calls
+// MUMPS directly.)
+// Compiled only in builds with FRICTION_WITH_MUMPS (other builds skip the file).
+#ifdef FRICTION_WITH_MUMPS
+#include <dmumps_c.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "friction/core/Assert.hpp"
+#include "friction/core/Parallel.hpp"
+#include "friction/linalg/SparseFactorBackend.hpp"
+
+namespace friction {
+
+namespace {
+
+// MUMPS's 1-based control arrays, with the manual's numbering.
+#define ICNTL(I) icntl[(I)-1]
+#define CNTL(I) cntl[(I)-1]
+#define INFOG(I) infog[(I)-1]
+#define RINFOG(I) rinfog[(I)-1]
+
+const char* mumpsOrderingName(int ordering) {
+  switch (ordering) {
+    case 0:
+      return "AMD";
+    case 2:
+      return "AMF";
+    case 3:
+      return "SCOTCH";
+    case 4:
+      return "PORD";
+    case 5:
+      return "METIS";
+    case 6:
+      return "QAMD";
+    default:
+      return "";
+  }
+}
+
+class MumpsBackend : public SparseFactor::Backend {
+ public:
+  MumpsBackend() {
+    parallel::ensureInitialized();
+    id_.comm_fortran = static_cast<MUMPS_INT>(parallel::fortranCommunicator());
+    id_.par = 1;  // rank 0 works too
+    // Symmetric (LDLᵀ), not MUMPS's SPD mode: only this mode detects null pivots (ICNTL(24)).
+    // Measured: the stiffness of a free body bordered by jumps factored "fine" with SYM = 1,
+    // round-off pivots and all; with SYM = 2 its three rigid modes are three null pivots. On
+    // an SPD matrix every pivot passes the threshold test, so the factor is the same work.
+    id_.sym = 2;
+    id_.job = -1;
+    dmumps_c(&id_);
+    live_ = id_.INFOG(1) >= 0;
+  }
+  ~MumpsBackend() override {
+    if (live_ && parallel::running()) {
+      id_.job = -2;
+      dmumps_c(&id_);
+    }
+  }
+  MumpsBackend(const MumpsBackend&) = delete;
+  MumpsBackend& operator=(const MumpsBackend&) = delete;
+
+  void setPivotTolerance(double tolerance) override { tolerance_ = tolerance; }
+
+  FactorStatus factor(const SparseMatrix& A) override {
+    schurSize_ = 0;
+    return run(A, nullptr, nullptr, nullptr);
+  }
+
+  bool factorBordered(const SparseMatrix& A, const SparseMatrix& B, const SparseMatrix& C,
+                      Eigen::MatrixXd& schur, FactorStatus& status, std::string& whyNot) override {
+    schurSize_ = static_cast<MUMPS_INT>(B.cols());
+    status = run(A, &B, &C, &schur);
+    if (status == FactorStatus::failed && !problem_.empty()) {
+      // Let the caller try A alone (and the complement by solves): say why.
+      whyNot = "MUMPS could not factor the bordered matrix: " + problem_;
+      schurSize_ = 0;
+      return false;
+    }
+    return true;
+  }
+
+  Eigen::VectorXd pivots() const override { return {}; }
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const override {
+    return solveColumns(Eigen::MatrixXd(b)).col(0);
+  }
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const override { return solveColumns(B); }
+
+  FactorAnalysis analysis() const override { return analysis_; }
+
+ private:
+  // Entries of the lower triangle of [A B; Bᵀ C] (1-based), this rank's share: the columns of
+  // a contiguous range chosen so that the ranks get about as many entries each.
+  void shareEntries(const SparseMatrix& A, const SparseMatrix* B, const SparseMatrix* C) {
+    const Eigen::Index n = A.rows(), m = B ? B->cols() : 0;
+    // Column j's entries: A's lower part, then B's row j as (n + a, j); C's lower part after.
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> Brows =
+        B ? Eigen::SparseMatrix<double, Eigen::RowMajor>(*B)
+          : Eigen::SparseMatrix<double, Eigen::RowMajor>();
+    std::vector<long> count(static_cast<std::size_t>(n + m), 0);
+    long total = 0;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it) count[j] += it.row() >= j;
+      if (B) count[j] += Brows.outerIndexPtr()[j + 1] - Brows.outerIndexPtr()[j];
+      total += count[j];
+    }
+    for (Eigen::Index a = 0; a < m; ++a) {
+      for (SparseMatrix::InnerIterator it(*C, a); it; ++it) count[n + a] += it.row() >= a;
+      total += count[n + a];
+    }
+    const int ranks = parallel::size(), me = parallel::rank();
+    const long from = total * me / ranks, to = total * (me + 1) / ranks;
+    rows_.clear();
+    cols_.clear();
+    values_.clear();
+    long seen = 0;
+    const auto add = [&](Eigen::Index i, Eigen::Index j, double v) {
+      rows_.push_back(static_cast<MUMPS_INT>(i + 1));
+      cols_.push_back(static_cast<MUMPS_INT>(j + 1));
+      values_.push_back(v);
+    };
+    for (Eigen::Index j = 0; j < n + m; ++j) {
+      // A column belongs to the rank whose range holds its first entry.
+      const bool mine = seen >= from && seen < to;
+      seen += count[j];
+      if (!mine) continue;
+      if (j < n) {
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          if (it.row() >= j) add(it.row(), j, it.value());
+        if (B)
+          for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Brows, j); it; ++it)
+            add(n + it.col(), j, it.value());
+      } else {
+        for (SparseMatrix::InnerIterator it(*C, j - n); it; ++it)
+          if (it.row() >= j - n) add(n + it.row(), j, it.value());
+      }
+    }
+  }
+
+  FactorStatus run(const SparseMatrix& A, const SparseMatrix* B, const SparseMatrix* C,
+                   Eigen::MatrixXd* schur) {
+    problem_.clear();
+    analysis_ = {};
+    if (!live_) {
+      problem_ = "MUMPS did not start";
+      return FactorStatus::failed;
+    }
+    n_ = static_cast<MUMPS_INT>(A.rows());
+    const MUMPS_INT m = B ? static_cast<MUMPS_INT>(B->cols()) : 0;
+    shareEntries(A, B, C);
+    // Silent: the log reports what matters.
+    id_.ICNTL(1) = -1;
+    id_.ICNTL(2) = -1;
+    id_.ICNTL(3) = -1;
+    id_.ICNTL(4) = 0;
+    id_.ICNTL(18) = 3;         // distributed assembled input
+    id_.ICNTL(24) = 1;         // detect null pivots: a singular matrix is a status, not a factor
+    id_.CNTL(3) = tolerance_;  // null below tolerance · max |A_ij| (relative, CNTL(3) > 0)
+    id_.n = n_ + m;
+    id_.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
+    id_.irn_loc = rows_.data();
+    id_.jcn_loc = cols_.data();
+    id_.a_loc = values_.data();
+    schurVars_.clear();
+    schurValues_.clear();
+    if (m > 0) {
+      for (MUMPS_INT a = 0; a < m; ++a) schurVars_.push_back(n_ + a + 1);
+      id_.ICNTL(19) = 1;  // the complement, centralised on rank 0
+      id_.size_schur = m;
+      id_.listvar_schur = schurVars_.data();
+      if (parallel::isMaster()) schurValues_.assign(static_cast<std::size_t>(m) * m, 0.0);
+      id_.schur = parallel::isMaster() ? schurValues_.data() : nullptr;
+    } else {
+      id_.ICNTL(19) = 0;
+      id_.size_schur = 0;
+      id_.listvar_schur = nullptr;
+      id_.schur = nullptr;
+    }
+    // Analysis, then the numeric factorisation; MUMPS's workspace estimate may be short:
+    // grow it (ICNTL(14), percent) and factor again.
+    double clock = wallClock();
+    id_.job = 1;
+    dmumps_c(&id_);
+    analysis_.analysisSeconds = wallClock() - clock;
+    if (id_.INFOG(1) < 0) return verdict();
+    clock = wallClock();
+    id_.ICNTL(14) = 30;
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      id_.job = 2;
+      dmumps_c(&id_);
+      const int e = id_.INFOG(1);
+      if (e != -8 && e != -9 && e != -14 && e != -15 && e != -17 && e != -20) break;
+      id_.ICNTL(14) *= 3;
+    }
+    analysis_.numericSeconds = wallClock() - clock;
+    const FactorStatus status = verdict();
+    record();
+    if (status == FactorStatus::ok && schur) {
+      clock = wallClock();
+      Eigen::MatrixXd S(m, m);
+      if (parallel::isMaster()) S = Eigen::Map<Eigen::MatrixXd>(schurValues_.data(), m, m);
+      parallel::broadcast(S.data(), static_cast<long>(S.size()));
+      schurValues_ = std::vector<double>();
+      // For SYM = 1 MUMPS fills one triangle (which one depends on its storage order): mirror
+      // the filled one; a full matrix is kept, made symmetric to round-off.
+      const bool upperEmpty = S.triangularView<Eigen::StrictlyUpper>().toDenseMatrix().isZero(0);
+      const bool lowerEmpty = S.triangularView<Eigen::StrictlyLower>().toDenseMatrix().isZero(0);
+      if (lowerEmpty)
+        S.triangularView<Eigen::StrictlyLower>() = S.transpose();
+      else if (upperEmpty)
+        S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
+      else
+        S = (0.5 * (S + S.transpose())).eval();
+      schur->swap(S);
+      analysis_.complementSeconds = wallClock() - clock;
+    }
+    return status;
+  }
+
+  FactorStatus verdict() {
+    const int e = id_.INFOG(1);
+    if (e == -10) return FactorStatus::notPositiveDefinite;  // numerically singular
+    if (e < 0) {
+      problem_ = e == -13 ? "out of memory (INFOG(1) = -13)"
+                          : "error INFOG(1) = " + std::to_string(e) +
+                                ", INFOG(2) = " + std::to_string(id_.INFOG(2));
+      return FactorStatus::failed;
+    }
+    if (id_.job == 1) return FactorStatus::ok;
+    // A negative pivot (INFOG(12)) means A is indefinite, a null one (INFOG(28), below
+    // pivotTolerance · max |A_ij|) that it is singular to round-off.
+    if (id_.INFOG(12) > 0 || id_.INFOG(28) > 0) return FactorStatus::notPositiveDefinite;
+    return FactorStatus::ok;
+  }
+
+  void record() {
+    analysis_.ordering = mumpsOrderingName(id_.INFOG(7));
+    // INFOG(29): entries of the factors (negative: millions).
+    const double entries = id_.INFOG(29) >= 0 ? id_.INFOG(29) : -1e6 * id_.INFOG(29);
+    analysis_.entries = entries;
+    analysis_.bytes = 8.0 * entries;
+    analysis_.flops = id_.RINFOG(3);
+    analysis_.ranks = parallel::size();
+    // INFOG(21), INFOG(22): memory the factorisation used [MB], the largest rank's and all.
+    analysis_.rankMemoryMax = 1e6 * id_.INFOG(21);
+    analysis_.memoryTotal = 1e6 * id_.INFOG(22);
+  }
+
+  // Every rank calls it with the same B; rank 0's solution reaches all of them.
+  Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& B) const {
+    const Eigen::Index n = n_, k = B.cols(), N = n_ + schurSize_;
+    FRICTION_ASSERT(B.rows() == n, "mumps solve: right-hand side of the wrong size");
+    Eigen::MatrixXd X = Eigen::MatrixXd::Zero(N, k);
+    if (parallel::isMaster()) X.topRows(n) = B;
+    id_.ICNTL(20) = 0;  // dense right-hand sides on rank 0
+    id_.ICNTL(21) = 0;  // solution there too
+    id_.ICNTL(26) = 0;  // with a Schur complement: the interior problem A x = b only
+    id_.nrhs = static_cast<MUMPS_INT>(k);
+    id_.lrhs = static_cast<MUMPS_INT>(N);
+    id_.rhs = parallel::isMaster() ? X.data() : nullptr;
+    id_.job = 3;
+    dmumps_c(&id_);
+    FRICTION_ASSERT(id_.INFOG(1) >= 0, "MUMPS solve failed");
+    Eigen::MatrixXd out = X.topRows(n);
+    parallel::broadcast(out.data(), static_cast<long>(out.size()));
+    return out;
+  }
+
+  static double wallClock() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+  }
+
+  mutable DMUMPS_STRUC_C id_{};
+  bool live_ = false;
+  double tolerance_ = 1e-10;
+  MUMPS_INT n_ = 0, schurSize_ = 0;
+  std::vector<MUMPS_INT> rows_, cols_, schurVars_;
+  std::vector<double> values_, schurValues_;
+  std::string problem_;
+  FactorAnalysis analysis_;
+};
+
+}  // namespace
+
+std::unique_ptr<SparseFactor::Backend> makeMumpsBackend() {
+  return std::unique_ptr<SparseFactor::Backend>(new MumpsBackend);
+}
+
+}  // namespace friction
+#endif  // FRICTION_WITH_MUMPS

@@ -1,0 +1,47 @@
+// SparseFactor's backend interface (internal to linalg/): one class per sparse direct solver,
+// listed in the table of SparseFactor.cpp.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+
+#include "friction/linalg/SparseFactor.hpp"
+
+namespace friction {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// A factorisation backend. factor() returns the backend's own verdict; pivots() gives, per
+/// original row i, the pivot of that row in the factor (d of LDLᵀ or l² of LLᵀ), so that the
+/// caller can apply one relative test to every backend; a backend that cannot tell them
+/// (MUMPS) returns an empty vector and judges definiteness itself.
+class SparseFactor::Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual FactorStatus factor(const SparseMatrix& A) = 0;
+  virtual Eigen::VectorXd pivots() const = 0;
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const = 0;
+  /// Factor the bordered matrix [A B; Bᵀ C] with the border last and return C − Bᵀ A⁻¹ B in
+  /// `schur`; afterwards pivots() and solve() are those of A. Returns false when the backend
+  /// cannot (then nothing was changed, `whyNot` says why, and the caller factors A alone).
+  virtual bool factorBordered(const SparseMatrix& /*A*/, const SparseMatrix& /*B*/,
+                              const SparseMatrix& /*C*/, Eigen::MatrixXd& /*schur*/,
+                              FactorStatus& /*status*/, std::string& /*whyNot*/) {
+    return false;
+  }
+  /// Backends that judge their pivots themselves (pivots() empty) take the relative tolerance
+  /// here, before factor().
+  virtual void setPivotTolerance(double /*tolerance*/) {}
+  /// The ordering and size of the last analysis, as far as the backend knows them.
+  virtual FactorAnalysis analysis() const { return {}; }
+};
+
+#ifdef FRICTION_WITH_MUMPS
+/// MUMPS (linalg/MumpsBackend.cpp): shared by the ranks of a run.
+std::unique_ptr<SparseFactor::Backend> makeMumpsBackend();
+#endif
+
+}  // namespace friction
