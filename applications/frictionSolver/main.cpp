@@ -48,6 +48,12 @@ std::string peakMemoryGb() {
   return s.str();
 }
 
+// The largest resident set of this process so far [bytes].
+double peakMemoryBytes() {
+  rusage usage{};
+  return getrusage(RUSAGE_SELF, &usage) == 0 ? static_cast<double>(usage.ru_maxrss) * 1024 : 0.0;
+}
+
 // A stream buffer that drops what it is given: the log of ranks other than 0.
 class NullBuffer : public std::streambuf {
  protected:
@@ -149,7 +155,15 @@ int solve(const po::variables_map& args) {
     const auto& f = c.system().factorization();
     std::cout << "\nFactorisations " << f.numFactorizations() << " (" << f.factorSeconds()
               << " s), back-substitutions " << f.numSolves() << " (" << f.solveSeconds()
-              << " s), peak memory " << peakMemoryGb() << " GB\n";
+              << " s), peak memory " << peakMemoryGb() << " GB";
+    if (parallel::size() > 1) {
+      // Every rank's, as a user sizing a cluster job needs it (collective: every rank is here).
+      const double mine = peakMemoryBytes();
+      std::cout << " on rank 0, " << std::setprecision(3) << parallel::maxOverRanks(mine) / 1e9
+                << " GB on the largest rank, " << parallel::sumOverRanks(mine) / 1e9
+                << " GB on all " << parallel::size();
+    }
+    std::cout << "\n";
     if (!c.stoppedEarly().empty()) {
       std::cout << "\nStopped early (" << c.stoppedEarly()
                 << "); continue with startFrom latestTime\n\nEnd\n";
