@@ -32,16 +32,31 @@ makeCase() {  # makeCase DIR STEPS
   # The case's own optimizer, condensed Newton: it builds S in the first step of every run,
   # a restart included; the time folders must not show it.
   "$bin/splitFractureNodes" -case "$1/case" >"$1/case/log.splitFractureNodes" 2>&1 || fail "split failed"
+  if ((${#launcher[@]})); then
+    sed -i 's/^linearSolver .*/linearSolver mumps;/' "$1/case/system/frictionSolution"
+    grep -q "^linearSolver mumps;" "$1/case/system/frictionSolution" || fail "cannot set mumps"
+  fi
 }
 setKey() {  # setKey CASE KEY VALUE: set a controlDict key
   sed -i "s/^$2 .*/$2 $3;/" "$1/system/controlDict"
   grep -q "^$2 $3;" "$1/system/controlDict" || fail "cannot set $2 in $1/system/controlDict"
 }
+# The parallel scenarios run every solve on 2 ranks with linearSolver mumps.
+launcher=()
+if [[ $scenario == parallel* ]]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  launcher=(mpirun -np 2)
+fi
 solve() {  # solve CASE LOG [ARGS...]: the exit code in $rc
   local c=$1 log=$2
   shift 2
-  "$bin/frictionSolver" -case "$c" "$@" >"$log" 2>&1
+  if ((${#launcher[@]})); then
+    "${launcher[@]}" "$bin/frictionSolver" -parallel -case "$c" "$@" >"$log" 2>&1
+  else
+    "$bin/frictionSolver" -case "$c" "$@" >"$log" 2>&1
+  fi
   rc=$?
+  return $rc  # also for a solve in the background: wait gives it
 }
 timeFolders() { (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -vx 0 | sort -g); }
 # Everything a run writes: all files but the logs and the inputs.
@@ -79,13 +94,39 @@ reference() {
   ((rc == 0)) || fail "reference run failed: $(tail -3 "$work/reference/case/log.frictionSolver")"
 }
 
+# sameOutputsParallel REFERENCE CASE [EXTRA_TIME]: as sameOutputs, for runs on several ranks,
+# which are reproducible to round-off only (MUMPS adds the contributions of other ranks in the
+# order they arrive: two uninterrupted 2-rank runs of this case differ by 1e-14 of the tractions).
+# The same files, no leftovers, the same .pvd and the same (time, iteration) history, byte for
+# byte; the fracture tables equal to round-off (parallelCompare.py).
+sameOutputsParallel() {
+  local ref=$1 c=$2 extra=${3:-} mine
+  mine=$(outputs "$c")
+  [[ -n $extra ]] && mine=$(grep -v -e "^\./$extra/" -e "_$extra\.vt[up]\$" <<<"$mine")
+  [[ $(outputs "$ref" | wc -l) -gt 5 ]] || fail "the reference wrote too few files: nothing is compared"
+  diff <(outputs "$ref") <(echo "$mine") >"$work/files.diff" ||
+    fail "files differ from the uninterrupted run (< reference, > restarted): $(head -20 "$work/files.diff")"
+  [[ -z $(cd "$c" && find . -name '.?*') ]] || fail "leftovers: $(cd "$c" && find . -name '.?*')"
+  local pvd=VTK/case.pvd
+  cmp -s "$ref/$pvd" <(grep -v "_${extra:-none}\.vt[up]\"" "$c/$pvd") || fail "$pvd differs"
+  cmp -s <(awk '{print $1, $2}' "$ref/postProcessing/convergence.dat") \
+    <(awk '{print $1, $2}' "$c/postProcessing/convergence.dat") ||
+    fail "the (time, iteration) history differs from the uninterrupted run"
+  /usr/bin/python3 "$src/tests/regression/parallelCompare.py" "$ref" "$c" ||
+    fail "the fracture tables differ from the uninterrupted run beyond round-off"
+}
+
 # restartAndCompare CASE [EXTRA_TIME]
 restartAndCompare() {
   local c=$1
   setKey "$c" startFrom latestTime
   solve "$c" "$c/log.2"
   ((rc == 0)) || fail "restart failed (exit $rc): $(tail -3 "$c/log.2")"
-  sameOutputs "$work/reference/case" "$c" "${2:-}"
+  if ((${#launcher[@]})); then
+    sameOutputsParallel "$work/reference/case" "$c" "${2:-}"
+  else
+    sameOutputs "$work/reference/case" "$c" "${2:-}"
+  fi
 }
 
 case $scenario in
@@ -145,6 +186,62 @@ sigterm | sigint)
   [[ -f $c/$stopped/uniform/frictionState ]] || fail "the step at $stopped was not written"
   echo "stopped at time $stopped; restarting"
   # The stop wrote its step; if the schedule does not, that time is the one extra.
+  extra=$stopped
+  [[ -d $work/reference/case/$stopped ]] && extra=
+  restartAndCompare "$c" "$extra"
+  ;;
+parallelKill)
+  # 2 ranks (mumps): rank 0, the one that writes, killed with SIGKILL as soon as a few time
+  # folders exist; mpirun then ends the other rank. The restart on 2 ranks leaves every file as
+  # the uninterrupted 2-rank run does.
+  steps=40
+  reference $steps
+  makeCase "$work/killed" $steps
+  c=$work/killed/case
+  solve "$c" "$c/log.1" &
+  for _ in $(seq 4000); do (($(timeFolders "$c" | wc -l) >= 3)) && break; sleep 0.002; done
+  # Rank 0: the solver process whose log is the case's (the other's output is discarded);
+  # among mpirun's children, the one with the smallest OMPI_COMM_WORLD_RANK.
+  victim=
+  for p in $(pgrep -f "frictionSolver -parallel -case $c"); do
+    [[ -r /proc/$p/environ ]] || continue
+    tr '\0' '\n' <"/proc/$p/environ" | grep -qx "OMPI_COMM_WORLD_RANK=0" && victim=$p
+  done
+  [[ -n $victim ]] || fail "rank 0 not found: nothing was tested"
+  kill -KILL "$victim"
+  wait
+  (($(timeFolders "$c" | wc -l) < steps / 5)) || fail "the run ended before the kill: nothing was tested"
+  sleep 1
+  [[ -z $(pgrep -f "frictionSolver -parallel -case $c") ]] || fail "a rank outlived the kill of rank 0"
+  for t in $(timeFolders "$c"); do
+    [[ -f $c/$t/uniform/frictionState && -f $c/$t/D ]] || fail "time folder $t is not whole"
+  done
+  echo "rank 0 killed after time $(timeFolders "$c" | tail -1); restarting on 2 ranks"
+  restartAndCompare "$c"
+  ;;
+parallelSigterm)
+  # SIGTERM to both ranks (as a batch system signals the tasks of a job): they finish and
+  # write the step together (exit 5); the restart completes the run as the uninterrupted 2-rank
+  # run. (A SIGTERM to mpirun itself makes OpenMPI 4 end the job by killing its ranks: that is
+  # parallelKill's case.)
+  steps=200  # a run long enough to be signalled in the middle
+  reference $steps
+  makeCase "$work/stopped" $steps
+  c=$work/stopped/case
+  solve "$c" "$c/log.1" &
+  pid=$!
+  for _ in $(seq 4000); do [[ -n $(timeFolders "$c") ]] && break; sleep 0.002; done
+  ranks=$(pgrep -f "^$bin/frictionSolver -parallel -case $c")
+  [[ $(wc -w <<<"$ranks") == 2 ]] || fail "expected 2 ranks, found: $ranks"
+  kill -TERM $ranks
+  wait $pid
+  rc=$?
+  ((rc == 5)) || fail "exit code $rc after SIGTERM, expected 5: $(tail -5 "$c/log.1")"
+  stopped=$(sed -n 's/.*Stopped at time \([^ ]*\) .*/\1/p' "$c/log.1")
+  [[ -n $stopped && -f $c/$stopped/uniform/frictionState ]] ||
+    fail "the step at '$stopped' was not written: $(tail -5 "$c/log.1")"
+  (($(timeFolders "$c" | wc -l) < steps / 5)) || fail "the run ended before the signal: nothing was tested"
+  echo "stopped at time $stopped; restarting on 2 ranks"
   extra=$stopped
   [[ -d $work/reference/case/$stopped ]] && extra=
   restartAndCompare "$c" "$extra"
