@@ -124,15 +124,22 @@ class Case {
   }
 
   /// splitFractureNodes then frictionSolver; returns the solver's exit status. The logs are
-  /// kept in the case folder.
-  int solve() {
+  /// kept in the case folder. ranks > 0: 'mpirun -np ranks frictionSolver -parallel'
+  /// (oversubscribed; the case must select linearSolver mumps).
+  int solve(int ranks = 0) {
     const fs::path bin = FRICTION_BIN_DIR;
     const int split = run(
         "'" + (bin / "splitFractureNodes").string() + "' -case '" + dir_.string() + "' -overwrite",
         dir_ / "log.splitFractureNodes");
     INFO(readText(dir_ / "log.splitFractureNodes"));
     REQUIRE(split == 0);
-    return run("'" + (bin / "frictionSolver").string() + "' -case '" + dir_.string() + "'",
+    const std::string launcher =
+        ranks > 0 ? "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun "
+                    "--oversubscribe -np " +
+                        std::to_string(ranks) + " "
+                  : "";
+    return run(launcher + "'" + (bin / "frictionSolver").string() + "'" +
+                   (ranks > 0 ? " -parallel" : "") + " -case '" + dir_.string() + "'",
                dir_ / "log.frictionSolver");
   }
 
