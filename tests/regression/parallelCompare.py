@@ -12,7 +12,7 @@ its own largest magnitude. A column's own scale would not do: a fault that carri
 has |tau| of 1e-8 Pa next to sigmaN of 1e7 Pa, pure round-off that differs between any two
 factorisations. Why 1e-9: the tables carry 10 significant digits, and the runs differ only by the
 order of MUMPS's and CHOLMOD's eliminations, i.e. round-off amplified by the condition number
-(measured: at most 3.9e-14 on the P2 paper benchmark, 1.2e-12 on cases/strikeSlipFault and
+(measured: at most 4.3e-14 on the P2 paper benchmark, 3e-11 on cases/strikeSlipFault and
 2.8e-10 on cases/fractureNetwork, whose sigmaN of 1e7-1e8 Pa is mostly the in-situ stress added
 to a solved perturbation); a wrong rank's share of the
 matrix or a solution not shared by all ranks changes the slip in the first digits.

@@ -78,6 +78,8 @@ for run in "${runs[@]}"; do
       n=${run#mumps}
       grep -q "^frictionSolver ($n ranks)" "$log" || fail "$run: the log does not say $n ranks"
       grep -q "; $n ranks, .* GB on the largest rank" "$log" || fail "$run: no per-rank memory"
+      grep -q "^Stiffness: each of the $n ranks assembled its own cells" "$log" ||
+        fail "$run: the ranks did not assemble their own cells"
       # The log is written once: one End, one line per step.
       [[ $(grep -c "^End" "$log") == 1 ]] || fail "$run: the log has $(grep -c '^End' "$log") End lines"
       ;;

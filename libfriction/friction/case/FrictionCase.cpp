@@ -387,6 +387,10 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   log << "Assemblies: " << system_->numAssemblies() << " stiffness matri"
       << (system_->numAssemblies() == 1 ? "x" : "ces")
       << (n == 0 ? " (no fracture: no split stiffness, no control loop)" : "") << "\n";
+  if (system_->ownCells() > 0)
+    log << "Stiffness: each of the " << parallel::size() << " ranks assembled its own cells ("
+        << system_->ownCells() << " of " << system_->unsplitSpace().numCells()
+        << " on rank 0); the factorisation adds them\n";
   log << "Factorisation: " << toString(status) << " (" << f.backend() << ", "
       << std::setprecision(3) << f.factorSeconds() << " s)\n";
   // What the factor costs: at 10⁶ unknowns in 3D it sets the run's time and memory.

@@ -112,6 +112,29 @@ double maxOverRanks(double value) {
   return value;
 }
 
+void sumOverRanks(double* data, long count) {
+  if (size() <= 1 || count <= 0) return;
+  const long chunk = 1L << 30;  // MPI counts are int
+  for (long first = 0; first < count; first += chunk)
+    MPI_Allreduce(MPI_IN_PLACE, data + first, static_cast<int>(std::min(chunk, count - first)),
+                  MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+}
+
+std::vector<int> gatherOnMaster(const std::vector<int>& mine) {
+  if (size() <= 1) return mine;
+  const int count = static_cast<int>(mine.size());
+  std::vector<int> counts(static_cast<std::size_t>(size())), offsets(counts.size() + 1, 0);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::vector<int> all;
+  if (isMaster()) {
+    for (std::size_t r = 0; r < counts.size(); ++r) offsets[r + 1] = offsets[r] + counts[r];
+    all.resize(static_cast<std::size_t>(offsets.back()));
+  }
+  MPI_Gatherv(mine.data(), count, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, 0,
+              MPI_COMM_WORLD);
+  return all;
+}
+
 void abort(int code) {
   if (size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
   std::exit(code);
@@ -136,6 +159,8 @@ void broadcast(int*, long, int) {}
 int maxOverRanks(int value) { return value; }
 double sumOverRanks(double value) { return value; }
 double maxOverRanks(double value) { return value; }
+void sumOverRanks(double*, long) {}
+std::vector<int> gatherOnMaster(const std::vector<int>& mine) { return mine; }
 void abort(int code) { std::exit(code); }
 int fortranCommunicator() { return 0; }
 #endif

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace friction {
 namespace parallel {
@@ -46,6 +47,10 @@ void broadcast(int* data, long count, int root = 0);
 int maxOverRanks(int value);
 /// The sum of value over the ranks.
 double sumOverRanks(double value);
+/// data[i] becomes the sum over the ranks of their data[i], on every rank.
+void sumOverRanks(double* data, long count);
+/// Rank 0 receives every rank's values, in rank order; the others an empty vector.
+std::vector<int> gatherOnMaster(const std::vector<int>& mine);
 /// The maximum of value over the ranks.
 double maxOverRanks(double value);
 

@@ -3,6 +3,7 @@
 #include "friction/fe/DirichletConditions.hpp"
 
 #include "friction/core/Assert.hpp"
+#include "friction/core/Parallel.hpp"
 
 namespace friction {
 
@@ -129,8 +130,21 @@ Eigen::VectorXd ReducedSystem::rhs(const Eigen::VectorXd& F,
                                    const Eigen::VectorXd& fixedValues) const {
   FRICTION_ASSERT(fixedValues.size() == Kfd_.cols(), "one value per fixed dof");
   Eigen::VectorXd r = restrictToFree(F);
-  r.noalias() -= Kfd_ * fixedValues;
+  if (summed_) {
+    // Each rank holds its cells' part of K_fd: their products add up.
+    Eigen::VectorXd lift = Kfd_ * fixedValues;
+    parallel::sumOverRanks(lift.data(), lift.size());
+    r -= lift;
+  } else {
+    r.noalias() -= Kfd_ * fixedValues;
+  }
   return r;
+}
+
+Eigen::VectorXd ReducedSystem::apply(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd y = Kff_ * x;
+  if (summed_) parallel::sumOverRanks(y.data(), y.size());
+  return y;
 }
 
 Eigen::VectorXd ReducedSystem::expand(const Eigen::VectorXd& uFree,

@@ -94,6 +94,13 @@ class ReducedSystem {
  public:
   ReducedSystem(const Eigen::SparseMatrix<double>& K, const DirichletConditions& conditions);
 
+  /// K here is this rank's summand of the stiffness (its own cells; the distributed engine):
+  /// rhs() and apply() then sum the ranks' parts (collective calls: every rank makes them).
+  void setSummedOverRanks(bool summed) { summed_ = summed; }
+  bool summedOverRanks() const { return summed_; }
+  /// K_ff x, summed over the ranks when K is a summand.
+  Eigen::VectorXd apply(const Eigen::VectorXd& x) const;
+
   /// K_ff: numFree × numFree, symmetric, full storage. Factor this once.
   const Eigen::SparseMatrix<double>& matrix() const { return Kff_; }
   /// K_fd: numFree × numFixed, the coupling to the prescribed values.
@@ -116,6 +123,7 @@ class ReducedSystem {
   std::vector<Index> fixedDofs_;
   Eigen::SparseMatrix<double> Kff_;
   Eigen::SparseMatrix<double> Kfd_;
+  bool summed_ = false;
 };
 
 }  // namespace friction

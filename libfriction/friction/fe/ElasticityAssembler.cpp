@@ -65,29 +65,34 @@ double lameLambda(const Material& material) {
 }
 
 template <int dim>
-Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V,
-                                              const MaterialMap& materials) {
+Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V, const MaterialMap& materials,
+                                              const std::vector<char>* use = nullptr) {
   const Mesh& mesh = V.mesh();
   const Index nn = V.numNodes(), nc = V.numCells();
   const int npc = V.nodesPerCell();
 
   // Node graph in compressed rows: node → cells, then node → sorted neighbour nodes.
+  // use: the cells assembled (all when null); a node of none of them has an empty column.
+  const auto used = [use](Index c) { return !use || (*use)[static_cast<std::size_t>(c)] != 0; };
   std::vector<Index> cellStart(static_cast<std::size_t>(nn) + 1, 0);
   for (Index c = 0; c < nc; ++c)
-    for (Index n : V.cellNodes(c)) ++cellStart[n + 1];
+    if (used(c))
+      for (Index n : V.cellNodes(c)) ++cellStart[n + 1];
   for (Index n = 0; n < nn; ++n) cellStart[n + 1] += cellStart[n];
   std::vector<Index> cellOf(static_cast<std::size_t>(cellStart[nn]));
   {
     std::vector<Index> fill(cellStart.begin(), cellStart.end() - 1);
     for (Index c = 0; c < nc; ++c)
-      for (Index n : V.cellNodes(c)) cellOf[fill[n]++] = c;
+      if (used(c))
+        for (Index n : V.cellNodes(c)) cellOf[fill[n]++] = c;
   }
   std::vector<Index> adjStart(static_cast<std::size_t>(nn) + 1, 0);
   std::vector<Index> adj;
   // Typical node degrees (the node itself included): P1 / P2 triangles 7 / 12, tetrahedra 15 /
   // about 30; only a capacity hint.
-  adj.reserve(static_cast<std::size_t>(nn) *
-              (dim == 2 ? (npc == 3 ? 7 : 12) : (npc == 4 ? 15 : 30)));
+  if (!use)
+    adj.reserve(static_cast<std::size_t>(nn) *
+                (dim == 2 ? (npc == 3 ? 7 : 12) : (npc == 4 ? 15 : 30)));
   std::vector<Index> scratch;
   for (Index n = 0; n < nn; ++n) {
     scratch.clear();
@@ -127,6 +132,7 @@ Eigen::SparseMatrix<double> assembleStiffness(const LagrangeSpace& V,
   const SimplexQuadrature<dim> rule = simplexQuadrature<dim>(V.degree() == 1 ? 0 : 2);
   ElementMatrix<dim> ke;
   for (Index c = 0; c < nc; ++c) {
+    if (!used(c)) continue;
     const NodeList nodes = V.cellNodes(c);
     const Material& material = materials.ofCell(c);
     const double lam = lameLambda<dim>(material), mu = material.mu();
@@ -255,6 +261,13 @@ ElasticityAssembler::ElasticityAssembler(const LagrangeSpace& space, const Mater
 Eigen::SparseMatrix<double> ElasticityAssembler::stiffness() const {
   return dispatch(space_->mesh(), [&](auto d) {
     return assembleStiffness<decltype(d)::value>(*space_, materials_);
+  });
+}
+
+Eigen::SparseMatrix<double> ElasticityAssembler::stiffness(const std::vector<char>& cells) const {
+  FRICTION_ASSERT(static_cast<Index>(cells.size()) == space_->numCells(), "one flag per cell");
+  return dispatch(space_->mesh(), [&](auto d) {
+    return assembleStiffness<decltype(d)::value>(*space_, materials_, &cells);
   });
 }
 

@@ -52,6 +52,10 @@ class ElasticityAssembler {
   /// pattern is built directly in compressed form from the node graph (no triplets), so the
   /// cost is linear in the mesh size.
   Eigen::SparseMatrix<double> stiffness() const;
+  /// The same from the cells c with cells[c] != 0 only (a part of the body: the band of cells
+  /// around the fractures, or one rank's own cells): its entries are the sums over those cells,
+  /// in the same order as stiffness() adds them, and the pattern holds only their entries.
+  Eigen::SparseMatrix<double> stiffness(const std::vector<char>& cells) const;
 
   /// Load vector of a constant body force f [N/m³]: F_i = ∫_Ω f · φ_i (any dimension; z
   /// ignored in 2D), and the same for 2D code.

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "friction/core/Assert.hpp"
+#include "friction/core/Parallel.hpp"
 #include "friction/fracture/SignConventions.hpp"
 #include "friction/mesh/MeshTopology.hpp"
 
@@ -474,8 +475,17 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
 
   if (n > 0) {
     // The split stiffness is needed only for the lifting and the traction recovery: a case
-    // without fractures never assembles it.
-    const Eigen::SparseMatrix<double> Ksplit = splitAssembler_->stiffness();
+    // without fractures never assembles it. And only its rows and columns at the fracture
+    // copies are read (K_split L, E K_split): the cells that touch a copy give them whole, in
+    // the order the whole assembly adds them, so the band of those cells is assembled.
+    std::vector<char> copy(static_cast<std::size_t>(splitSpace_->numNodes()), 0);
+    for (const ControlNode& v : nodes_) copy[v.plus] = copy[v.minus] = 1;
+    for (const LiftEntry& e : junctionLift_) copy[e.copy] = 1;
+    std::vector<char> band(static_cast<std::size_t>(splitSpace_->numCells()), 0);
+    for (Index c = 0; c < splitSpace_->numCells(); ++c)
+      for (Index node : splitSpace_->cellNodes(c))
+        if (copy[node]) band[c] = 1;
+    const Eigen::SparseMatrix<double> Ksplit = splitAssembler_->stiffness(band);
     ++numAssemblies_;
     B_ = P_.transpose() * (Ksplit * L_);
     // Rows of K_split at the copies, scaled: Σ_k = (r⁺_k − r⁻_k) / (2 w_k); 3D P2: Σ̃_k =
@@ -533,10 +543,28 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
 
   if (consistent_ && !buildRecovery()) return FactorStatus::failed;
 
-  const Eigen::SparseMatrix<double> K = unsplitAssembler_->stiffness();
+  factor_ = std::make_unique<SparseFactor>(backend);
+  // Several ranks sharing a backend that takes summands: each rank assembles its own cells (a
+  // contiguous block of the mesh's numbering) and the backend adds the ranks' parts; the
+  // products with K (the Dirichlet lifting, the equilibrium check) add them too.
+  const bool own = parallel::size() > 1 && factor_->takesSummands();
+  Eigen::SparseMatrix<double> K;
+  if (own) {
+    const Index cells = unsplitSpace_->numCells();
+    const Index first = cells * parallel::rank() / parallel::size(),
+                last = cells * (parallel::rank() + 1) / parallel::size();
+    std::vector<char> mine(static_cast<std::size_t>(cells), 0);
+    std::fill(mine.begin() + first, mine.begin() + last, 1);
+    ownCells_ = last - first;
+    K = unsplitAssembler_->stiffness(mine);
+  } else {
+    K = unsplitAssembler_->stiffness();
+  }
   ++numAssemblies_;
   reduced_ = std::make_unique<ReducedSystem>(K, *dirichlet_);
-  factor_ = std::make_unique<SparseFactor>(backend);
+  K = Eigen::SparseMatrix<double>();  // the reduced blocks hold what the run needs
+  reduced_->setSummedOverRanks(own);
+  factor_->setSummedOverRanks(own);
   if (withInterfaceOperator && !jumpDofs_.empty())
     return factor_->factorWithSchur(reduced_->matrix(), borderB_, borderC_);
   return factor_->factor(reduced_->matrix());
@@ -857,7 +885,7 @@ InterfaceOperator FractureSystem::interfaceOperator(InterfaceMethod method, bool
 double FractureSystem::equilibriumResidual() const {
   if (lastRhs_.size() == 0) return 0;
   const double scale = lastRhs_.norm();
-  const double r = (reduced_->matrix() * lastFree_ - lastRhs_).norm();
+  const double r = (reduced_->apply(lastFree_) - lastRhs_).norm();
   return scale > 0 ? r / scale : r;
 }
 

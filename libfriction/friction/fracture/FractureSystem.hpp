@@ -99,6 +99,9 @@ class FractureSystem : public SlipResponse {
   /// Stiffness matrices assembled so far (the unsplit one, plus the split one when there is
   /// a fracture): a counter that shows skipped work in the log.
   int numAssemblies() const { return numAssemblies_; }
+  /// With several ranks and a backend that takes summands (mumps): the cells of the unsplit
+  /// mesh whose stiffness this rank assembled (its own block); 0 when every rank assembles all.
+  Index ownCells() const { return ownCells_; }
 
   const std::vector<ControlNode>& controlNodes() const { return nodes_; }
   /// 3D: replace node i's tangent basis by (t₁, n_Γ × t₁), t₁ a unit vector normal to n_Γ —
@@ -191,6 +194,7 @@ class FractureSystem : public SlipResponse {
   std::unique_ptr<DirichletConditions> dirichlet_;
   std::unique_ptr<ReducedSystem> reduced_;
   std::unique_ptr<SparseFactor> factor_;
+  Index ownCells_ = 0;
 
   std::vector<ControlNode> nodes_;
   Eigen::VectorXd weights_, mask_, componentMask_;

@@ -84,6 +84,8 @@ class MumpsBackend : public SparseFactor::Backend {
   MumpsBackend& operator=(const MumpsBackend&) = delete;
 
   void setPivotTolerance(double tolerance) override { tolerance_ = tolerance; }
+  bool takesSummands() const override { return true; }
+  void setSummedInput(bool summed) override { summed_ = summed; }
 
   FactorStatus factor(const SparseMatrix& A) override {
     schurSize_ = 0;
@@ -114,7 +116,9 @@ class MumpsBackend : public SparseFactor::Backend {
 
  private:
   // Entries of the lower triangle of [A B; Bᵀ C] (1-based), this rank's share: the columns of
-  // a contiguous range chosen so that the ranks get about as many entries each.
+  // a contiguous range chosen so that the ranks get about as many entries each. A summed A
+  // (each rank's own cells) goes whole from every rank, MUMPS adds the ranks' entries; B and C,
+  // whole on every rank, are shared out by columns.
   void shareEntries(const SparseMatrix& A, const SparseMatrix* B, const SparseMatrix* C) {
     const Eigen::Index n = A.rows(), m = B ? B->cols() : 0;
     // Column j's entries: A's lower part, then B's row j as (n + a, j); C's lower part after.
@@ -124,7 +128,8 @@ class MumpsBackend : public SparseFactor::Backend {
     std::vector<long> count(static_cast<std::size_t>(n + m), 0);
     long total = 0;
     for (Eigen::Index j = 0; j < n; ++j) {
-      for (SparseMatrix::InnerIterator it(A, j); it; ++it) count[j] += it.row() >= j;
+      if (!summed_)
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it) count[j] += it.row() >= j;
       if (B) count[j] += Brows.outerIndexPtr()[j + 1] - Brows.outerIndexPtr()[j];
       total += count[j];
     }
@@ -147,10 +152,11 @@ class MumpsBackend : public SparseFactor::Backend {
       // A column belongs to the rank whose range holds its first entry.
       const bool mine = seen >= from && seen < to;
       seen += count[j];
-      if (!mine) continue;
-      if (j < n) {
+      if (j < n && (mine || summed_))
         for (SparseMatrix::InnerIterator it(A, j); it; ++it)
           if (it.row() >= j) add(it.row(), j, it.value());
+      if (!mine) continue;
+      if (j < n) {
         if (B)
           for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Brows, j); it; ++it)
             add(n + it.col(), j, it.value());
@@ -184,13 +190,18 @@ class MumpsBackend : public SparseFactor::Backend {
     // worse here: with a Schur complement it takes AMD whatever ICNTL(7) asks (METIS, SCOTCH
     // and PORD tried), which on cases/pennyCrack at h = a/8 made 8.9e7 factor entries and
     // 3.1e11 flops, against 5.0e7 and 9.1e10 with this order (CHOLMOD's own: 4.7e7, 8.7e10).
-    if (parallel::isMaster() && metisOrder(A, m, perm_)) {
+    // A summed A: rank 0 orders the pattern of the whole (the ranks' patterns gathered there for
+    // the analysis, then freed).
+    SparseMatrix whole;
+    if (summed_) whole = gatherPattern(A);
+    if (parallel::isMaster() && metisOrder(summed_ ? whole : A, m, perm_)) {
       id_.ICNTL(7) = 1;
       id_.perm_in = perm_.data();
     } else {
       id_.ICNTL(7) = 7;  // MUMPS's automatic choice
       id_.perm_in = nullptr;
     }
+    whole = SparseMatrix();
     int given = id_.ICNTL(7);
     parallel::broadcast(&given, 1);
     id_.ICNTL(7) = given;
@@ -250,6 +261,25 @@ class MumpsBackend : public SparseFactor::Backend {
       analysis_.complementSeconds = wallClock() - clock;
     }
     return status;
+  }
+
+  // The pattern of the sum of the ranks' A (lower triangle, values 1) on rank 0; empty on the
+  // others. Collective.
+  static SparseMatrix gatherPattern(const SparseMatrix& A) {
+    std::vector<int> mine;
+    for (Eigen::Index j = 0; j < A.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        if (it.row() >= j)
+          mine.insert(mine.end(), {static_cast<int>(it.row()), static_cast<int>(j)});
+    const std::vector<int> all = parallel::gatherOnMaster(mine);
+    std::vector<int>().swap(mine);
+    SparseMatrix P(A.rows(), A.cols());
+    if (!parallel::isMaster()) return P;
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(all.size() / 2);
+    for (std::size_t k = 0; k + 1 < all.size(); k += 2) t.emplace_back(all[k], all[k + 1], 1.0);
+    P.setFromTriplets(t.begin(), t.end());
+    return P;
   }
 
   // perm[i] = position (1-based) of unknown i in the elimination order: METIS on A's pattern,
@@ -341,6 +371,7 @@ class MumpsBackend : public SparseFactor::Backend {
   mutable DMUMPS_STRUC_C id_{};
   bool live_ = false;
   double tolerance_ = 1e-10;
+  bool summed_ = false;
   MUMPS_INT n_ = 0, schurSize_ = 0;
   std::vector<MUMPS_INT> rows_, cols_, schurVars_, perm_;
   std::vector<double> values_, schurValues_;

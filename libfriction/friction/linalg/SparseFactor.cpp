@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "friction/core/Assert.hpp"
+#include "friction/core/Parallel.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/linalg/SparseFactorBackend.hpp"
 
@@ -519,6 +520,14 @@ SparseFactor& SparseFactor::operator=(SparseFactor&&) noexcept = default;
 
 FactorStatus SparseFactor::factor(const SparseMatrix& A) { return factorImpl(A, nullptr, nullptr); }
 
+bool SparseFactor::takesSummands() const { return impl_->takesSummands(); }
+
+void SparseFactor::setSummedOverRanks(bool summed) {
+  FRICTION_ASSERT(!summed || takesSummands(), "this backend needs the whole matrix");
+  summed_ = summed;
+  impl_->setSummedInput(summed);
+}
+
 FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix* B,
                                       const SparseMatrix* C) {
   FRICTION_ASSERT(A.rows() == A.cols(), "factor: matrix must be square");
@@ -536,6 +545,8 @@ FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix*
       maxAbsEntry_ = std::isfinite(it.value()) ? std::max(maxAbsEntry_, std::abs(it.value()))
                                                : std::numeric_limits<double>::infinity();
   // A non-finite entry makes every pivot meaningless: no backend is asked.
+  // Each rank's summand: the verdict must be every rank's (an overflow on one is on all).
+  if (summed_) maxAbsEntry_ = parallel::maxOverRanks(maxAbsEntry_);
   if (!std::isfinite(maxAbsEntry_)) {
     status_ = FactorStatus::nonFinite;
     factored_ = false;

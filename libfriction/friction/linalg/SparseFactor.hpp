@@ -135,6 +135,15 @@ class SparseFactor {
   /// X = A⁻¹ B, one back-substitution per column.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B);
 
+  /// Whether the backend takes each rank's summand of the matrix (its own cells' entries; the
+  /// distributed engine, README "Running in parallel"): mumps.
+  bool takesSummands() const;
+  /// With true, the A given to factor() and factorWithSchur() on each rank is that rank's
+  /// summand of the matrix (the matrix is their sum); B and C stay whole on every rank. Only
+  /// for a backend that takesSummands(); every rank must call factor() alike.
+  void setSummedOverRanks(bool summed);
+  bool summedOverRanks() const { return summed_; }
+
   /// Order of the factored matrix (0 before the first factor()).
   Eigen::Index rows() const { return rows_; }
   /// Number of factor() calls (successful or not).
@@ -155,6 +164,7 @@ class SparseFactor {
   bool factored_ = false;
   Eigen::Index rows_ = 0;
   double pivotTolerance_ = 1e-10;
+  bool summed_ = false;
   double minPivotRatio_ = std::numeric_limits<double>::quiet_NaN();
   double maxAbsEntry_ = 0.0;
   long numFactorizations_ = 0;

@@ -32,6 +32,9 @@ class SparseFactor::Backend {
                               FactorStatus& /*status*/, std::string& /*whyNot*/) {
     return false;
   }
+  /// Whether A may be each rank's summand of the matrix (setSummedInput).
+  virtual bool takesSummands() const { return false; }
+  virtual void setSummedInput(bool /*summed*/) {}
   /// Backends that judge their pivots themselves (pivots() empty) take the relative tolerance
   /// here, before factor().
   virtual void setPivotTolerance(double /*tolerance*/) {}

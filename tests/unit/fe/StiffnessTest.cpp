@@ -102,3 +102,47 @@ TEST_CASE("fe stiffness of a split mesh decouples the two sides", "[fe][stiffnes
     REQUIRE(K(2 * mm, 2 * mm) > 0.0);
   }
 }
+
+TEST_CASE("fe stiffness of a part of the cells: the parts add up to the whole", "[fe][stiffness]") {
+  // ElasticityAssembler::stiffness(cells): the band of cells around the fractures and each
+  // rank's own cells in a parallel run (README "Running in parallel") rely on it.
+  const int degree = GENERATE(1, 2);
+  const bool threeD = GENERATE(false, true);
+  CAPTURE(degree, threeD);
+  const Mesh mesh = threeD ? test::unitCubeMesh(3, 0.3) : test::unitSquareMesh(6, 0.3);
+  const LagrangeSpace V(mesh, degree);
+  const ElasticityAssembler assembler(V, Material::fromYoungPoisson(3.0e10, 0.25));
+  const Eigen::SparseMatrix<double> K = assembler.stiffness();
+  const Index cells = V.numCells();
+  REQUIRE(cells > 3);
+
+  // All cells: the same matrix, entry for entry (the same sums in the same order).
+  const std::vector<char> all(static_cast<std::size_t>(cells), 1);
+  const Eigen::SparseMatrix<double> Kall = assembler.stiffness(all);
+  REQUIRE(Kall.nonZeros() == K.nonZeros());
+  CHECK(Eigen::MatrixXd(Kall - K).cwiseAbs().maxCoeff() == 0.0);
+
+  // Three contiguous blocks (as three ranks take them): their sum is K to round-off (the sums
+  // are grouped otherwise: a few ulps of the largest entry), and each holds only its cells'
+  // entries.
+  Eigen::SparseMatrix<double> sum(K.rows(), K.cols());
+  for (int part = 0; part < 3; ++part) {
+    std::vector<char> mine(static_cast<std::size_t>(cells), 0);
+    std::fill(mine.begin() + cells * part / 3, mine.begin() + cells * (part + 1) / 3, 1);
+    const Eigen::SparseMatrix<double> Kp = assembler.stiffness(mine);
+    CHECK(Kp.nonZeros() < K.nonZeros());
+    CHECK(Eigen::MatrixXd(Kp - Eigen::SparseMatrix<double>(Kp.transpose())).cwiseAbs().maxCoeff() <=
+          1e-12 * K.coeffs().cwiseAbs().maxCoeff());
+    sum += Kp;
+  }
+  const double scale = K.coeffs().cwiseAbs().maxCoeff();
+  REQUIRE(scale > 0);
+  CHECK(Eigen::MatrixXd(sum - K).cwiseAbs().maxCoeff() <= 1e-14 * scale);
+
+  // One cell alone: its element matrix, d·(nodes per cell) rows and columns at most.
+  std::vector<char> one(static_cast<std::size_t>(cells), 0);
+  one[1] = 1;
+  const Eigen::SparseMatrix<double> K1 = assembler.stiffness(one);
+  const long n = static_cast<long>(V.nodesPerCell()) * (threeD ? 3 : 2);
+  CHECK(K1.nonZeros() == n * n);
+}
