@@ -26,8 +26,10 @@ cmake --build "$build" -j "$jobs" || { echo "sanitize.sh: building $build failed
 # halt_on_error / -fno-sanitize-recover: the first report ends the process with an error, so
 # the test that met it fails. exitcode 99: the default (1) is also the binaries' "bad input"
 # code, which the error-path tests expect. The suppressions cover only the uninstrumented
-# libraries (CHOLMOD, OpenBLAS) and say why each entry is there.
-export ASAN_OPTIONS="exitcode=99:detect_leaks=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+# libraries (CHOLMOD, OpenBLAS, OpenMPI) and say why each entry is there. fast_unwind_on_malloc=0:
+# the fast unwinder loses OpenMPI's frames (its plugins are unloaded at MPI_Finalize), and the
+# suppressions match those frames' names.
+export ASAN_OPTIONS="exitcode=99:detect_leaks=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="exitcode=99:print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 export LSAN_OPTIONS="exitcode=99:suppressions=$here/sanitize.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 cd "$build" && ctest -LE long -j "$jobs" --output-on-failure
