@@ -5,7 +5,8 @@
 # every fracture table of every time folder is compared (parallelCompare.py: each column to
 # round-off of its own scale, states and statuses exactly), and each parallel run must have
 # written the same files as the serial one, once (rank 0 writes). Also refused, with a
-# message: -parallel with a one-rank solver, and ranks started without -parallel.
+# message: -parallel with a one-rank solver, ranks started without -parallel, and
+# splitFractureNodes under mpirun.
 # Usage: parallelRanks.sh BIN_DIR SOURCE_DIR WORK_DIR CASE
 #   CASE: paperBenchmarkP2 (2D, P2), fractureNetwork (2D: junctions, layers, fields, 8 steps),
 #         strikeSlipFault (3D: gravity, in-situ stress, cohesion, 8 steps), refusals
@@ -50,6 +51,10 @@ case $scenario in
     ((rc != 0)) || fail "2 ranks without -parallel: exit 0: $out"
     grep -q "without -parallel" <<<"$out" || fail "2 ranks without -parallel: no message: $out"
     [[ -z $(ls -d "$work/refuse/case"/1 2>/dev/null) ]] || fail "ranks without -parallel wrote a time folder"
+    out=$(mpirun -np 2 "$bin/splitFractureNodes" -case "$work/refuse/case" -overwrite 2>&1)
+    rc=$?
+    ((rc != 0)) || fail "splitFractureNodes on 2 ranks: exit 0: $out"
+    grep -q "runs as one process" <<<"$out" || fail "splitFractureNodes on 2 ranks: no message: $out"
     echo "parallel.refusals: ok"
     exit 0
     ;;

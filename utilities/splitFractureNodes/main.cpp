@@ -21,6 +21,7 @@
 
 #include "friction/case/MeshSettings.hpp"
 #include "friction/core/CommandLine.hpp"
+#include "friction/core/Parallel.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/fracture/SplitMeshIO.hpp"
 #include "friction/mesh/MeshCheck.hpp"
@@ -273,6 +274,15 @@ int main(int argc, char** argv) {
                                                                             "print this help");
   const auto parsed = parseCommandLine(argc, argv, options, "splitFractureNodes");
   if (!parsed) return 2;
+  // Under mpirun every rank would split the same mesh into the same file: the splitter is one
+  // process (it is cheap next to the solve); only frictionSolver runs on several ranks.
+  if (const int ranks = parallel::launchedRanks(); ranks > 1) {
+    std::cerr << "splitFractureNodes: error: started as one of " << ranks
+              << " ranks (mpirun): it runs as one process; run it without mpirun, then "
+                 "'mpirun -np "
+              << ranks << " frictionSolver -parallel'\n";
+    return 2;
+  }
   const po::variables_map& args = *parsed;
   if (args.count("help")) {
     std::cout << "Usage: splitFractureNodes [-case DIR] [-overwrite]\n\n"
