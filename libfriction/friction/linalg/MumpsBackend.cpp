@@ -1,15 +1,16 @@
 // MumpsBackend: the "mumps" linear solver — MUMPS's multifrontal LDLᵀ (symmetric mode,
 // SYM = 2), shared by the ranks of an MPI run (docs/method.md §4 "The distributed engine").
 //
-// Every rank holds the same assembled matrix (the set-up is replicated, README "Running in
-// parallel") and hands MUMPS its own share of the entries (distributed assembled input,
-// ICNTL(18) = 3): MUMPS then orders, factors and solves across the ranks. Right-hand sides
-// and solutions are centralised on rank 0 and the solution is broadcast, so that every rank
-// continues with the same numbers.
+// Each rank hands MUMPS its entries (distributed assembled input, ICNTL(18) = 3): with
+// setSummedInput(true) the matrix is the sum of the ranks' A (each assembled its own cells,
+// README "Running in parallel"), otherwise every rank holds the whole A and gives a share of its
+// columns. MUMPS then factors and solves across the ranks, in the order rank 0 computes (METIS
+// by CHOLMOD, on the gathered pattern). Right-hand sides and solutions are centralised on rank
+// 0 and the solution is broadcast, so that every rank continues with the same numbers.
 //
 // The interface operator: MUMPS's Schur complement (ICNTL(19) = 1) on the jump unknowns of
-// the bordered matrix [A B; Bᵀ C], ordered last by MUMPS itself — the same "by-product of the
-// one factorisation" as the cholmod backend's, but distributed. Solves with A afterwards use
+// the bordered matrix [A B; Bᵀ C], ordered last — the same "by-product of the one
+// factorisation" as the cholmod backend's, but distributed. Solves with A afterwards use
 // ICNTL(26) = 0, which solves the interior problem A x = b with the same factor. (PETSc's
 // interface to MUMPS refuses Schur complements on more than one rank, which is why this calls
 // MUMPS directly.)
