@@ -14,8 +14,6 @@ set -u
 bin=$1 src=$2 work=$3 scenario=$4
 fail() { echo "FAIL [parallel.$scenario]: $*" >&2; exit 1; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-# No shared-memory transport surprises in a container: loopback TCP and self are enough here.
-export OMPI_MCA_btl=self,tcp OMPI_MCA_btl_tcp_if_include=lo OMPI_MCA_oob_tcp_if_include=lo
 command -v mpirun >/dev/null || fail "mpirun not found (openmpi-bin, etc/debian-packages)"
 "$bin/frictionSolver" -listModels | grep -q "linear solvers.*mumps" ||
   fail "this build has no mumps linear solver (FRICTION_MUMPS)"
