@@ -9,7 +9,9 @@
 # splitFractureNodes under mpirun.
 # Usage: parallelRanks.sh BIN_DIR SOURCE_DIR WORK_DIR CASE
 #   CASE: paperBenchmarkP2 (2D, P2), fractureNetwork (2D: junctions, layers, fields, 8 steps),
-#         strikeSlipFault (3D: gravity, in-situ stress, cohesion, 8 steps), refusals
+#         strikeSlipFault (3D: gravity, in-situ stress, cohesion, 8 steps), faultInCubeP2 (3D,
+#         P2: the consistent traction recovery), sneddonCrack (a crack that opens: contact
+#         unilateral), refusals
 set -u
 bin=$1 src=$2 work=$3 scenario=$4
 fail() { echo "FAIL [parallel.$scenario]: $*" >&2; exit 1; }
@@ -25,8 +27,11 @@ setSolver() {  # setSolver CASE_DIR NAME
     echo "linearSolver    $2;" >>"$1/system/frictionSolution"
 }
 prepare() {  # prepare NAME SOURCE_CASE: a split copy in NAME/case (VTK files are named after
-  # the case folder: one name for every run)
-  mkdir -p "$work/$1" && cp -r "$src/cases/$2" "$work/$1/case" || fail "cannot copy cases/$2"
+  # the case folder: one name for every run); SOURCE_CASE is under the source tree's cases/,
+  # or a path from the source tree
+  local from=$src/cases/$2
+  [[ -d $from ]] || from=$src/$2
+  mkdir -p "$work/$1" && cp -r "$from" "$work/$1/case" || fail "cannot copy $2"
   rm -rf "$work/$1/case"/log.* "$work/$1/case"/constant/splitMesh
   "$bin/splitFractureNodes" -case "$work/$1/case" >"$work/$1/case/log.splitFractureNodes" 2>&1 ||
     fail "splitFractureNodes failed on $2"
@@ -34,7 +39,8 @@ prepare() {  # prepare NAME SOURCE_CASE: a split copy in NAME/case (VTK files ar
 
 case $scenario in
   paperBenchmarkP2) base=paperBenchmark ;;
-  fractureNetwork | strikeSlipFault) base=$scenario ;;
+  faultInCubeP2) base=tests/regression/cases/faultInCube ;;
+  fractureNetwork | strikeSlipFault | sneddonCrack) base=$scenario ;;
   refusals)
     prepare refuse paperBenchmark
     out=$(mpirun -np 2 "$bin/frictionSolver" -parallel -case "$work/refuse/case" 2>&1)
@@ -63,7 +69,7 @@ runs=(serial mumps1 mumps2 mumps3)
 for run in "${runs[@]}"; do
   prepare "$run" "$base"
   dir=$work/$run/case
-  [[ $scenario == paperBenchmarkP2 ]] && sed -i 's/^elementOrder .*/elementOrder    2;/' "$dir/system/frictionSolution"
+  [[ $scenario == *P2 ]] && sed -i 's/^elementOrder .*/elementOrder    2;/' "$dir/system/frictionSolution"
   case $run in
     serial) setSolver "$dir" cholmod
       cmd=("$bin/frictionSolver" -case "$dir") ;;
