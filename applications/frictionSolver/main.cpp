@@ -40,18 +40,18 @@ namespace {
 // The largest resident set of the run so far [GB] (Linux reports ru_maxrss in KiB), with 3
 // digits: at 10⁶ unknowns in 3D the factor takes most of the machine, and the user should
 // see it.
-std::string peakMemoryGb() {
-  rusage usage{};
-  if (getrusage(RUSAGE_SELF, &usage) != 0) return "unknown";
-  std::ostringstream s;
-  s << std::setprecision(3) << static_cast<double>(usage.ru_maxrss) * 1024 / 1e9;
-  return s.str();
-}
-
-// The largest resident set of this process so far [bytes].
+// The largest resident set of this process so far [bytes]; 0 if unknown.
 double peakMemoryBytes() {
   rusage usage{};
   return getrusage(RUSAGE_SELF, &usage) == 0 ? static_cast<double>(usage.ru_maxrss) * 1024 : 0.0;
+}
+
+std::string peakMemoryGb() {
+  const double bytes = peakMemoryBytes();
+  if (bytes <= 0) return "unknown";
+  std::ostringstream s;
+  s << std::setprecision(3) << bytes / 1e9;
+  return s.str();
 }
 
 // A stream buffer that drops what it is given: the log of ranks other than 0.

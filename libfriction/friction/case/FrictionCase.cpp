@@ -167,12 +167,8 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
 
   const Dictionary sol = readCaseFile(caseDir, "system/frictionSolution");
   order_ = static_cast<int>(sol.getIntOr("elementOrder", 1, {1, 2}));
-  if (!parallel::available() && sol.found("linearSolver") && sol.getWord("linearSolver") == "mumps")
-    throw InputError(sol.location("linearSolver"),
-                     "linear solver 'mumps' is not in this build: configure with "
-                     "-DFRICTION_MUMPS=ON and MUMPS and MPI installed (libmumps-dev, "
-                     "mpi-default-dev); valid types are: " +
-                         joinWords(SparseFactor::backendNames()));
+  if (sol.found("linearSolver"))
+    SparseFactor::requireInBuild(sol.getWord("linearSolver"), sol.location("linearSolver"));
   linearSolver_ = sol.getChoiceOr("linearSolver", SparseFactor::backendNames(), "cholmod");
   // Several ranks share the factorisation: only the mumps solver can.
   if (parallel::size() > 1 && linearSolver_ != "mumps")

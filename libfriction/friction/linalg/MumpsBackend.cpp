@@ -17,7 +17,6 @@
 // Compiled only in builds with FRICTION_WITH_MUMPS (other builds skip the file).
 #ifdef FRICTION_WITH_MUMPS
 #include <dmumps_c.h>
-#include <suitesparse/cholmod.h>
 
 #include <algorithm>
 #include <chrono>
@@ -284,31 +283,11 @@ class MumpsBackend : public SparseFactor::Backend {
   }
 
   // perm[i] = position (1-based) of unknown i in the elimination order: METIS on A's pattern,
-  // then the m border unknowns in their order. False if CHOLMOD could not order.
+  // then the m border unknowns in their order. False if it could not order.
   static bool metisOrder(const SparseMatrix& A, MUMPS_INT m, std::vector<MUMPS_INT>& perm) {
-    using I = SuiteSparse_long;
-    const Eigen::SparseMatrix<double, Eigen::ColMajor, I> lower =
-        Eigen::SparseMatrix<double, Eigen::ColMajor, I>(A.triangularView<Eigen::Lower>());
-    cholmod_common cm;
-    cholmod_l_start(&cm);
-    cm.print = 0;
-    cholmod_sparse view{};
-    view.nrow = view.ncol = static_cast<std::size_t>(A.rows());
-    view.nzmax = static_cast<std::size_t>(lower.nonZeros());
-    view.p = const_cast<I*>(lower.outerIndexPtr());
-    view.i = const_cast<I*>(lower.innerIndexPtr());
-    view.x = const_cast<double*>(lower.valuePtr());
-    view.stype = -1;
-    view.itype = CHOLMOD_LONG;
-    view.xtype = CHOLMOD_REAL;
-    view.dtype = CHOLMOD_DOUBLE;
-    view.sorted = 1;
-    view.packed = 1;
+    std::vector<long> order;
+    if (!metisOrdering(A, order)) return false;
     const Eigen::Index n = A.rows();
-    std::vector<I> order(static_cast<std::size_t>(n));
-    const bool ok = n > 0 && cholmod_l_metis(&view, nullptr, 0, 1, order.data(), &cm) != 0;
-    cholmod_l_finish(&cm);
-    if (!ok) return false;
     perm.assign(static_cast<std::size_t>(n + m), 0);
     for (Eigen::Index k = 0; k < n; ++k) perm[order[k]] = static_cast<MUMPS_INT>(k + 1);
     for (MUMPS_INT a = 0; a < m; ++a) perm[n + a] = static_cast<MUMPS_INT>(n + a + 1);

@@ -476,6 +476,21 @@ class SingleBlasThread {
 
 }  // namespace
 
+bool metisOrdering(const SparseMatrix& A, std::vector<long>& order) {
+  if (A.rows() == 0) return false;
+  const CholmodMatrix lower = A.triangularView<Eigen::Lower>();
+  cholmod_sparse view = viewLower(lower);
+  view.xtype = CHOLMOD_PATTERN;
+  cholmod_common cm;
+  cholmod_l_start(&cm);
+  cm.print = 0;
+  std::vector<CholmodIndex> perm(static_cast<std::size_t>(A.rows()));
+  const bool ok = cholmod_l_metis(&view, nullptr, 0, 1, perm.data(), &cm) != 0;
+  cholmod_l_finish(&cm);
+  order.assign(perm.begin(), perm.end());
+  return ok;
+}
+
 const char* toString(FactorStatus status) {
   switch (status) {
     case FactorStatus::ok:
@@ -496,10 +511,7 @@ std::vector<std::string> SparseFactor::backendNames() {
   return names;
 }
 
-SparseFactor::SparseFactor(const std::string& backend, const SourceLocation& where)
-    : backend_(backend) {
-  for (const auto& entry : kBackends)
-    if (backend == entry.name) impl_ = entry.make();
+void SparseFactor::requireInBuild(const std::string& backend, const SourceLocation& where) {
 #ifndef FRICTION_WITH_MUMPS
   if (backend == "mumps")
     throw InputError(where,
@@ -507,7 +519,17 @@ SparseFactor::SparseFactor(const std::string& backend, const SourceLocation& whe
                      "-DFRICTION_MUMPS=ON and MUMPS and MPI installed (libmumps-dev, "
                      "mpi-default-dev); valid types are: " +
                          joinWords(backendNames()));
+#else
+  (void)backend;
+  (void)where;
 #endif
+}
+
+SparseFactor::SparseFactor(const std::string& backend, const SourceLocation& where)
+    : backend_(backend) {
+  for (const auto& entry : kBackends)
+    if (backend == entry.name) impl_ = entry.make();
+  requireInBuild(backend, where);
   if (!impl_)
     throw InputError(where, "unknown linear solver '" + backend + "'" +
                                 suggestionText(backend, backendNames()) +

@@ -71,6 +71,9 @@ class SparseFactor {
 
   /// Valid backend names, in the order of the table in SparseFactor.cpp.
   static std::vector<std::string> backendNames();
+  /// Throws InputError naming `where` if `backend` is a known solver this build lacks (mumps
+  /// without FRICTION_MUMPS), saying how to get it; anything else passes.
+  static void requireInBuild(const std::string& backend, const SourceLocation& where);
   const std::string& backend() const { return backend_; }
 
   /// Analyse and factor the symmetric matrix A (its lower triangle is read). Besides the

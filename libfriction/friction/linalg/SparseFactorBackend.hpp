@@ -6,6 +6,7 @@
 #include <Eigen/SparseCore>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "friction/linalg/SparseFactor.hpp"
 
@@ -41,6 +42,10 @@ class SparseFactor::Backend {
   /// The ordering and size of the last analysis, as far as the backend knows them.
   virtual FactorAnalysis analysis() const { return {}; }
 };
+
+/// METIS's nested-dissection order of the symmetric A (its lower triangle's pattern), by
+/// CHOLMOD: order[k] is the row eliminated k-th. False if CHOLMOD could not order (or A is empty).
+bool metisOrdering(const SparseMatrix& A, std::vector<long>& order);
 
 #ifdef FRICTION_WITH_MUMPS
 /// MUMPS (linalg/MumpsBackend.cpp): shared by the ranks of a run.
