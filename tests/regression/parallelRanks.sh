@@ -32,6 +32,10 @@ prepare() {  # prepare NAME SOURCE_CASE: a split copy in NAME/case (VTK files ar
   local from=$src/cases/$2
   [[ -d $from ]] || from=$src/$2
   mkdir -p "$work/$1" && cp -r "$from" "$work/$1/case" || fail "cannot copy $2"
+  # What a run of the case in the source tree left (./Allrun) goes: its Allclean knows what.
+  if [[ -x $work/$1/case/Allclean ]]; then
+    "$work/$1/case/Allclean" >/dev/null || fail "Allclean failed on the copy of $2"
+  fi
   rm -rf "$work/$1/case"/log.* "$work/$1/case"/constant/splitMesh
   "$bin/splitFractureNodes" -case "$work/$1/case" >"$work/$1/case/log.splitFractureNodes" 2>&1 ||
     fail "splitFractureNodes failed on $2"

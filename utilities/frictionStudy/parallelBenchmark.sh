@@ -32,6 +32,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 rm -rf "$work" && mkdir -p "$work/base"
 
 cp -r "$root/cases/pennyCrack" "$work/base/case"
+"$work/base/case/Allclean" >/dev/null  # what a run of the case in the source tree left
 rm -f "$work/base/case"/log.*
 echo "Meshing with gmsh (disc h = $h, growth $slope per unit distance up to $hfar) ..."
 (cd "$work/base/case/constant/mesh" &&
