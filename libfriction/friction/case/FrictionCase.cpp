@@ -41,6 +41,11 @@ Dictionary readCaseFile(const std::string& caseDir, const std::string& relative)
   return Dictionary::read(path);
 }
 
+// system/frictionSolution's elementOrder (1 or 2, default 1).
+int elementOrderOf(const Dictionary& solution) {
+  return static_cast<int>(solution.getIntOr("elementOrder", 1, {1, 2}));
+}
+
 /// The value of a time-folder name, if the whole name is a number ("0.5", "1e-05").
 bool timeOfName(const std::string& name, double& t) {
   if (name.empty() || name[0] == '.') return false;
@@ -166,7 +171,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   }
 
   const Dictionary sol = readCaseFile(caseDir, "system/frictionSolution");
-  order_ = static_cast<int>(sol.getIntOr("elementOrder", 1, {1, 2}));
+  order_ = elementOrderOf(sol);
   if (sol.found("linearSolver"))
     SparseFactor::requireInBuild(sol.getWord("linearSolver"), sol.location("linearSolver"));
   linearSolver_ = sol.getChoiceOr("linearSolver", SparseFactor::backendNames(), "cholmod");
@@ -1120,6 +1125,60 @@ std::string FrictionCase::nodeState(Eigen::Index k) const {
   return law == SlipState::open ? (effective >= 0 ? "open" : "slip") : toString(law);
 }
 
+std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f) const {
+  FRICTION_ASSERT(f < split_.fractures.size(), "a fracture of the case");
+  return fractureRows(f, lastBeta_, nullptr);
+}
+
+std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::VectorXd& beta,
+                                                    std::map<Index, Index>* rowOfPlus) const {
+  const FractureSystem& sys = *system_;
+  const auto& nodes = sys.controlNodes();
+  // k tangential components per node (k = d − 1), node-major in last_.tau, last_.D, slip_, beta.
+  const int kb = sys.blockSize();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<FractureRow> rows;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    if (nodes[k].fracture != static_cast<int>(f)) continue;
+    const bool tip = nodes[k].tip;
+    const Eigen::Index at = kb * static_cast<Eigen::Index>(k);
+    FractureRow row;
+    row.s = nodes[k].arclength;
+    row.position = nodes[k].position;
+    row.normal = nodes[k].normal;
+    row.tangent = nodes[k].tangent;
+    for (int c = 0; c < kb; ++c) {
+      row.slip[c] = slip_[at + c];
+      row.slipIncrement[c] = beta[at + c];
+      // At a tip (single node) the two sides are not told apart: no traction is recovered,
+      // and the table says so (nan, state tip) rather than show a zero that plots would draw.
+      row.tau[c] = tip ? nan : last_.tau[at + c];
+      row.residual[c] = tip ? nan : last_.D[at + c];
+    }
+    const double sn = last_.sigmaN[k];
+    row.sigmaN = tip ? nan : sn;
+    // Slip tendency |τ| / −σ'_n on the effective normal stress σ'_n = σ_n + p (p = 0 without
+    // fracturePressure); |τ| of k = 1 is |τ₁| exactly (blockNorm).
+    const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
+    const double tauNorm = blockNorm(last_.tau.segment(at, kb));
+    row.state = nodeState(static_cast<Eigen::Index>(k));
+    // Open faces (σ'_n = 0 up to round-off) have no slip tendency: 0, not round-off over
+    // round-off. Bilateral nodes are open only where σ'_n ≥ 0, where ST is 0 already.
+    row.ST = tip ? nan : row.state == "open" ? 0.0 : effective < 0 ? tauNorm / -effective : 0.0;
+    if (opening_) {
+      row.hasOpening = true;
+      row.opening = beta[kb * static_cast<Eigen::Index>(nodes.size()) + k];
+    }
+    if (rowOfPlus) (*rowOfPlus)[nodes[k].plus] = static_cast<Index>(rows.size());
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+int FrictionCase::elementOrder(const std::string& caseDir) {
+  return elementOrderOf(readCaseFile(caseDir, "system/frictionSolution"));
+}
+
 void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step) {
   if (!parallel::isMaster()) return;  // rank 0 writes every output file
   const int precision = time_->writePrecision();
@@ -1139,50 +1198,12 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   status << "status " << toString(r.report.status) << " iterations " << r.report.iterations
          << " backSubstitutions " << r.backSubstitutions << " J " << r.J << " relResidual "
          << r.relResidual << " maxExcessST " << r.maxExcessST << " equilibrium " << r.equilibrium;
-  const auto& nodes = sys.controlNodes();
-  // k tangential components per node (k = d − 1), node-major in last_.tau, last_.D, slip_, beta.
-  const int kb = sys.blockSize();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<VtkSeries::Fracture> vtkFractures;
   for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
     VtkSeries::Fracture out{split_.fractures[f].name, {}};
-    std::vector<FractureRow>& rows = out.rows;
     std::map<Index, Index> rowOfPlus;  // the Ω⁺ copy of a control node -> its row
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-      if (nodes[k].fracture != static_cast<int>(f)) continue;
-      const bool tip = nodes[k].tip;
-      const Eigen::Index at = kb * static_cast<Eigen::Index>(k);
-      FractureRow row;
-      row.s = nodes[k].arclength;
-      row.position = nodes[k].position;
-      row.normal = nodes[k].normal;
-      row.tangent = nodes[k].tangent;
-      for (int c = 0; c < kb; ++c) {
-        row.slip[c] = slip_[at + c];
-        row.slipIncrement[c] = beta[at + c];
-        // At a tip (single node) the two sides are not told apart: no traction is recovered,
-        // and the table says so (nan, state tip) rather than show a zero that plots would draw.
-        row.tau[c] = tip ? nan : last_.tau[at + c];
-        row.residual[c] = tip ? nan : last_.D[at + c];
-      }
-      const double sn = last_.sigmaN[k];
-      row.sigmaN = tip ? nan : sn;
-      // Slip tendency |τ| / −σ'_n on the effective normal stress σ'_n = σ_n + p (p = 0 without
-      // fracturePressure); |τ| of k = 1 is |τ₁| exactly (blockNorm).
-      const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
-      const double tauNorm = blockNorm(last_.tau.segment(at, kb));
-      row.state = nodeState(static_cast<Eigen::Index>(k));
-      // Open faces (σ'_n = 0 up to round-off) have no slip tendency: 0, not round-off over
-      // round-off. Bilateral nodes are open only where σ'_n ≥ 0, where ST is 0 already.
-      row.ST = tip ? nan : row.state == "open" ? 0.0 : effective < 0 ? tauNorm / -effective : 0.0;
-      if (opening_) {
-        row.hasOpening = true;
-        row.opening = beta[kb * static_cast<Eigen::Index>(nodes.size()) + k];
-      }
-      rowOfPlus[nodes[k].plus] = static_cast<Index>(rows.size());
-      rows.push_back(row);
-    }
-    writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), rows,
+    out.rows = fractureRows(f, beta, &rowOfPlus);
+    writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), out.rows,
                        status.str(), precision, dim,
                        dim == 2 ? junctionNotes(split_, f) : std::vector<std::string>{});
     // 3D: the fault triangles as row indices for the .vtp. A vertex's row is found by its Ω⁺

@@ -16,6 +16,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,7 @@
 #include "friction/fracture/FractureSystem.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/law/FrictionLaw.hpp"
+#include "friction/output/FieldWriter.hpp"
 #include "friction/output/VtkWriter.hpp"
 #include "friction/time/TimeControl.hpp"
 
@@ -65,6 +67,9 @@ class FrictionCase {
  public:
   /// Reads and validates every dictionary and the split mesh (InputError on any problem).
   explicit FrictionCase(const std::string& caseDir);
+  /// elementOrder of caseDir/system/frictionSolution (1 or 2; InputError as the constructor
+  /// gives it), before the case is read as a whole: the FreeFEM plug-in's frictionOrder.
+  static int elementOrder(const std::string& caseDir);
   ~FrictionCase();
 
   /// Before any work: time folders after startTime from an earlier run are refused
@@ -99,6 +104,10 @@ class FrictionCase {
   /// Accumulated slip [m], k components per control node (SlipResponse.hpp).
   const Eigen::VectorXd& slip() const { return slip_; }
   const ControlState& lastState() const { return last_; }
+  /// Fracture f's table for the last step computed: the rows <time>/fractures/<name>.dat
+  /// holds (FieldWriter.hpp), at full precision. For callers that keep the results in memory
+  /// (the FreeFEM plug-in).
+  std::vector<FractureRow> fractureRows(std::size_t f) const;
 
  private:
   struct FractureSettings {
@@ -108,6 +117,10 @@ class FrictionCase {
   };
 
   void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step);
+  /// Fracture f's rows for the control β (and the state of the last step); rowOfPlus, if
+  /// given, maps each row's Ω⁺ copy to its row.
+  std::vector<FractureRow> fractureRows(std::size_t f, const Eigen::VectorXd& beta,
+                                        std::map<Index, Index>* rowOfPlus) const;
   /// Control node k's state in the last step: stick, slip, open or tip.
   std::string nodeState(Eigen::Index k) const;
   /// Judge the state to be written (last_, the primal solve just done): non-finite values

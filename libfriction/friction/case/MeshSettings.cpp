@@ -18,7 +18,7 @@ namespace friction {
 
 namespace fs = std::filesystem;
 
-MeshSettings MeshSettings::read(const std::string& caseDir) {
+MeshSettings MeshSettings::read(const std::string& caseDir, bool meshMustExist) {
   MeshSettings s;
   s.caseDir = caseDir;
   s.dictPath = (fs::path(caseDir) / "system" / "meshDict").lexically_normal().string();
@@ -37,7 +37,11 @@ MeshSettings MeshSettings::read(const std::string& caseDir) {
   s.meshWhere = dict.location("mesh");
   s.meshEntry = mesh;
   s.meshFile = (fs::path(caseDir) / mesh).lexically_normal().string();
-  if (!fs::is_regular_file(s.meshFile))
+  if (fs::exists(s.meshFile) && !fs::is_regular_file(s.meshFile))
+    dict.fail("mesh", "key 'mesh': '" + s.meshFile +
+                          "' is not a file (expected the mesh file; the path is relative to "
+                          "the case folder)");
+  if (meshMustExist && !fs::is_regular_file(s.meshFile))
     dict.fail("mesh", "key 'mesh': the mesh file '" + s.meshFile +
                           "' does not exist (the path is relative to the case folder)");
 

@@ -45,8 +45,9 @@ struct MeshSettings {
   std::vector<FractureName> fractures;
 
   /// Read and validate caseDir/system/meshDict. Throws InputError (file:line:key) on any
-  /// problem, including a mesh file that does not exist.
-  static MeshSettings read(const std::string& caseDir);
+  /// problem, including a mesh file that does not exist (unless meshMustExist is false: the
+  /// FreeFEM plug-in writes it) or a 'mesh' entry that names a folder.
+  static MeshSettings read(const std::string& caseDir, bool meshMustExist = true);
 
   /// Give every label that occurs in the mesh a name: the 'patches' block first, then the
   /// names the mesh file carries (gmsh physical names), else "patch<label>". Errors: a

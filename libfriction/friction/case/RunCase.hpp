@@ -1,0 +1,34 @@
+// runCase: what frictionSolver does to a split case folder, for the command-line tool and the
+// FreeFEM plug-in alike: read and check the whole case, prepare the outputs, assemble and
+// factor once, run the time loop, print the summary, and turn every failure into a message
+// and frictionSolver's exit code.
+#pragma once
+
+#include <iosfwd>
+#include <memory>
+#include <string>
+
+namespace friction {
+
+class FrictionCase;
+
+struct RunCaseOptions {
+  /// Remove an earlier run's outputs first (frictionSolver -overwrite).
+  bool overwrite = false;
+  /// The program that names itself in the log's first line and in error messages.
+  std::string program = "frictionSolver";
+};
+
+/// Runs the case in caseDir; the log goes to `log`, errors to `err` as
+/// "<program>: error: <file:line or key>: <what was expected>". Returns frictionSolver's exit
+/// code: 0 every step converged; 1 bad input; 3 some step did not converge, was inaccurate or
+/// diverged; 4 the factorisation failed; 5 stopped by SIGINT/SIGTERM; 6 an output or system
+/// error. If `kept` is given and the case was read, the FrictionCase is handed back there
+/// (after its run, or after the failure), for the caller to read its results.
+int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostream& log,
+            std::ostream& err, std::unique_ptr<FrictionCase>* kept = nullptr);
+
+/// The largest resident set of this process so far [bytes]; 0 if unknown.
+double peakMemoryBytes();
+
+}  // namespace friction
