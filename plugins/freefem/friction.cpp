@@ -1,36 +1,34 @@
 // The FreeFEM plug-in (load "friction"): splitFractureNodes and frictionSolver called from an
-// .edp script, on a mesh the script made, with the results back in the script. README.md,
-// "FreeFEM users", shows a whole script; cases/paperBenchmark/frictionSolve.edp is one.
+// .edp script, on a mesh the script made, with the results back in the script, in 2D (mesh)
+// and 3D (mesh3). README.md, "FreeFEM users", shows a whole script;
+// cases/paperBenchmarkFreeFem/frictionSolve.edp is one.
 //
 //   int order = frictionOrder("case");
 //     elementOrder of the case's system/frictionSolution (1 or 2): which fespace (P1 or P2)
 //     the displacement needs.
-//   mesh Ths = frictionSplit(Th, "case" [, overwrite = true]);
+//   mesh Ths = frictionSplit(Th, "case" [, overwrite = true]);      (mesh3 in 3D)
 //     splitFractureNodes with Th as the mesh: writes Th to the file system/meshDict names
-//     (FreeFEM's .msh format, full precision), splits it as meshDict says, writes
-//     constant/splitMesh, and returns the split mesh: its vertices and triangles in the
+//     (FreeFEM's .msh format in 2D, Medit in 3D, full precision), splits it as meshDict says,
+//     writes constant/splitMesh, and returns the split mesh: its vertices and cells in the
 //     solver's numbering (the Ω⁺ copy of a fracture node keeps its number, the Ω⁻ copies come
-//     after the unsplit vertices), the regions kept, the boundary edges of the patches with
-//     their labels and both faces of each fracture with the fracture's label.
-//   int status = frictionSolve("case" [, Vh, ux[], uy[]] [, overwrite = true,
+//     after the unsplit vertices), the regions kept, the patches' boundary edges (triangles)
+//     with their labels and both faces of each fracture with the fracture's label.
+//   int status = frictionSolve("case" [, Vh, ux[], uy[] (, uz[])] [, overwrite = true,
 //                              fracture = "name", table = T, slip = s]);
 //     frictionSolver on the case: the same log, time folders, VTK files and restart. Returns
 //     frictionSolver's exit code when the run went through (0 converged, 3 a step did not, 5
 //     stopped by a signal); every other outcome (bad input, a failed factorisation, an output
 //     error) is a FreeFEM error with frictionSolver's message. With Vh (a P1 or P2 fespace on
-//     the mesh frictionSplit returned, of the case's elementOrder) ux[] and uy[] get the
-//     displacement [m] of the last step. table (real[int,int]) gets the fracture table of
-//     the last step, one row per control node, the columns of <time>/fractures/<name>.dat in
-//     2D (s x y slip slipIncrement sigmaN tau ST residual, then opening with fractures that
-//     open) followed by the state as a number (0 stick, 1 slip, 2 open, 3 tip, 4 junction),
-//     at full precision; slip (real[int]) its slip column. `fracture` names the fracture
-//     (needed when the case has several).
+//     the mesh frictionSplit returned, of the case's elementOrder: P1/P2, or P13d/P23d) the
+//     arrays get the displacement [m] of the last step. table (real[int,int]) gets the
+//     fracture table of the last step, one row per control node: the numeric columns of
+//     <time>/fractures/<name>.dat (FieldWriter.hpp) followed by the state as a number (0
+//     stick, 1 slip, 2 open, 3 tip, 4 junction), at full precision; slip (real[int]) the slip
+//     (3D: its magnitude). `fracture` names the fracture (needed when the case has several).
 //
 // `overwrite` is -overwrite of both tools: without it an existing constant/splitMesh, a mesh
-// file that holds another mesh, or time folders of an earlier run are refused.
-//
-// 2D only for now: a 3D case is refused by frictionSplit (it takes a 2D mesh) and, with Vh,
-// by frictionSolve; frictionSolve without Vh runs it.
+// file that holds another mesh, or time folders of an earlier run are refused. What a call
+// asks for is checked before anything is written, and a failed split puts the mesh file back.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -41,6 +39,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "friction/case/FrictionCase.hpp"
@@ -75,7 +74,7 @@ std::ostream& logStream() {
 // Th as FreeFEM's own .msh text ("nv nt nbe", then vertices "x y label", triangles "a b c
 // region", boundary edges "a b label", 1-based), the coordinates to 17 digits so that
 // reading it back gives Th's doubles.
-std::string freeFemMeshText(const Fem2D::Mesh& Th) {
+std::string meshText(const Fem2D::Mesh& Th) {
   std::ostringstream s;
   s.precision(17);
   s << Th.nv << " " << Th.nt << " " << Th.neb << "\n";
@@ -92,6 +91,30 @@ std::string freeFemMeshText(const Fem2D::Mesh& Th) {
   return s.str();
 }
 
+// Th as Medit text, as FreeFEM's savemesh writes a mesh3 and the solver reads it (Vertices
+// "x y z label", Tetrahedra "a b c d region", Triangles "a b c label", 1-based), the
+// coordinates to 17 digits.
+std::string meshText(const Fem2D::Mesh3& Th) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << Th.nv << "\n";
+  for (int i = 0; i < Th.nv; ++i) {
+    const Fem2D::Vertex3& v = Th.vertices[i];
+    s << v.x << " " << v.y << " " << v.z << " " << v.lab << "\n";
+  }
+  s << "\nTetrahedra\n" << Th.nt << "\n";
+  for (int k = 0; k < Th.nt; ++k)
+    s << Th(k, 0) + 1 << " " << Th(k, 1) + 1 << " " << Th(k, 2) + 1 << " " << Th(k, 3) + 1 << " "
+      << Th[k].lab << "\n";
+  s << "\nTriangles\n" << Th.nbe << "\n";
+  for (int e = 0; e < Th.nbe; ++e) {
+    const Fem2D::Triangle3& b = Th.be(e);
+    s << Th(b[0]) + 1 << " " << Th(b[1]) + 1 << " " << Th(b[2]) + 1 << " " << b.lab << "\n";
+  }
+  s << "\nEnd\n";
+  return s.str();
+}
+
 std::string readWhole(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
@@ -100,7 +123,7 @@ std::string readWhole(const std::string& path) {
 }
 
 // The split mesh as a FreeFEM mesh, in the solver's numbering.
-Fem2D::Mesh* toFreeFem(const friction::SplitMesh& split) {
+Fem2D::Mesh* toFreeFem(const friction::SplitMesh& split, const Fem2D::Mesh*) {
   const friction::Mesh& m = split.mesh;
   const int nv = static_cast<int>(m.numPoints()), nt = static_cast<int>(m.numCells());
   // Boundary edges: the patches (facetVertices holds the boundary patches only), then both
@@ -132,11 +155,56 @@ Fem2D::Mesh* toFreeFem(const friction::SplitMesh& split) {
   return Th;
 }
 
+// 3D: the boundary triangles are the patches' and both faces of every fault, the Ω⁻ face
+// through the minus copies of its nodes.
+Fem2D::Mesh3* toFreeFem(const friction::SplitMesh& split, const Fem2D::Mesh3*) {
+  const friction::Mesh& m = split.mesh;
+  const int nv = static_cast<int>(m.numPoints()), nt = static_cast<int>(m.numCells());
+  std::vector<std::array<int, 4>> faces;  // a, b, c, label
+  for (friction::Index e = 0; e < m.numFacets(); ++e)
+    faces.push_back({static_cast<int>(m.facetVertices[3 * e]),
+                     static_cast<int>(m.facetVertices[3 * e + 1]),
+                     static_cast<int>(m.facetVertices[3 * e + 2]), m.facetLabel[e]});
+  for (const friction::FractureGeometry& g : split.fractures) {
+    std::map<friction::Index, friction::Index> minusOf;
+    for (friction::Index i = 0; i < g.numNodes(); ++i) minusOf[g.node[i]] = g.minus[i];
+    for (const auto& tri : g.triangles) {
+      faces.push_back(
+          {static_cast<int>(tri[0]), static_cast<int>(tri[1]), static_cast<int>(tri[2]), g.label});
+      // the Ω⁻ face, the other way round (its outward normal is n_Γ)
+      faces.push_back({static_cast<int>(minusOf.at(tri[0])), static_cast<int>(minusOf.at(tri[2])),
+                       static_cast<int>(minusOf.at(tri[1])), g.label});
+    }
+  }
+  auto* v = new Fem2D::Vertex3[nv];
+  auto* t = new Fem2D::Tet[nt];
+  auto* b = new Fem2D::Triangle3[faces.size()];
+  for (int i = 0; i < nv; ++i) {
+    v[i].x = m.points[i].x();
+    v[i].y = m.points[i].y();
+    v[i].z = m.points[i].z();
+    v[i].lab = 0;
+  }
+  for (const auto& f : faces) v[f[0]].lab = v[f[1]].lab = v[f[2]].lab = f[3];
+  for (int k = 0; k < nt; ++k) {
+    int iv[4];
+    for (int j = 0; j < 4; ++j) iv[j] = static_cast<int>(m.cellVertices[4 * k + j]);
+    t[k].set(v, iv, m.cellRegion[k]);
+  }
+  for (std::size_t e = 0; e < faces.size(); ++e) {
+    int iv[3] = {faces[e][0], faces[e][1], faces[e][2]};
+    b[e].set(v, iv, faces[e][3]);
+  }
+  return new Fem2D::Mesh3(nv, nt, static_cast<int>(faces.size()), v, t, b);
+}
+
 // ---- frictionSplit(Th, "case", overwrite = bool) -------------------------------------------
 
+// M: Fem2D::Mesh (mesh) or Fem2D::Mesh3 (mesh3).
+template <class M>
 class FrictionSplit : public E_F0mps {
  public:
-  typedef pmesh Result;
+  typedef const M* Result;
   static const int n_name_param = 1;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
@@ -144,19 +212,22 @@ class FrictionSplit : public E_F0mps {
 
   explicit FrictionSplit(const basicAC_F0& args) {
     args.SetNameParam(n_name_param, name_param, nargs);
-    mesh = to<pmesh>(args[0]);
+    mesh = to<const M*>(args[0]);
     caseDir = to<string*>(args[1]);
   }
-  static ArrayOfaType typeargs() { return ArrayOfaType(atype<pmesh>(), atype<string*>()); }
+  static ArrayOfaType typeargs() { return ArrayOfaType(atype<const M*>(), atype<string*>()); }
   static E_F0* f(const basicAC_F0& args) { return new FrictionSplit(args); }
   AnyType operator()(Stack stack) const override;
 };
 
-basicAC_F0::name_and_type FrictionSplit::name_param[] = {{"overwrite", &typeid(bool)}};
+template <class M>
+basicAC_F0::name_and_type FrictionSplit<M>::name_param[] = {{"overwrite", &typeid(bool)}};
 
-AnyType FrictionSplit::operator()(Stack stack) const {
+template <class M>
+AnyType FrictionSplit<M>::operator()(Stack stack) const {
   const std::string program = "frictionSplit";
-  const pmesh Th = GetAny<pmesh>((*mesh)(stack));
+  constexpr int dimension = std::is_same<M, Fem2D::Mesh3>::value ? 3 : 2;
+  const M* Th = GetAny<const M*>((*mesh)(stack));
   const std::string dir = *GetAny<string*>((*caseDir)(stack));
   const bool overwrite = nargs[0] ? GetAny<bool>((*nargs[0])(stack)) : false;
   if (!Th) fail(program, "the mesh is empty (a mesh variable that was never given a mesh)");
@@ -177,7 +248,7 @@ AnyType FrictionSplit::operator()(Stack stack) const {
     const friction::MeshSettings settings = friction::MeshSettings::read(dir, false);
     // The mesh file system/meshDict names gets Th; another mesh there is not replaced
     // silently.
-    const std::string text = freeFemMeshText(*Th);
+    const std::string text = meshText(*Th);
     const bool exists = fs::exists(settings.meshFile);
     const std::string before = exists ? readWhole(settings.meshFile) : "";
     if (!exists || before != text) {
@@ -199,8 +270,9 @@ AnyType FrictionSplit::operator()(Stack stack) const {
       };
     }
     log << program << "\nCase: " << dir << "\nMesh: " << Th->nv << " vertices, " << Th->nt
-        << " triangles, " << Th->neb << " boundary edges, written to " << settings.meshFile
-        << "\n\n";
+        << (dimension == 2 ? " triangles, " : " tetrahedra, ") << Th->nbBrdElmts()
+        << (dimension == 2 ? " boundary edges" : " boundary triangles") << ", written to "
+        << settings.meshFile << "\n\n";
     friction::SplitCaseOptions how;
     how.overwrite = overwrite;
     how.program = program;
@@ -216,10 +288,12 @@ AnyType FrictionSplit::operator()(Stack stack) const {
   } catch (const std::exception& e) {
     failed(std::string("internal error: ") + e.what());
   }
-  if (split.mesh.dim != 2) fail(program, "a 3D case: frictionSplit takes 2D meshes only");
-  Fem2D::Mesh* out = toFreeFem(split);
+  if (split.mesh.dim != dimension)
+    fail(program, "the case's mesh is " + std::to_string(split.mesh.dim) + "D, the mesh given " +
+                      std::to_string(dimension) + "D");
+  M* out = toFreeFem(split, static_cast<const M*>(nullptr));
   Add2StackOfPtr2FreeRC(stack, out);
-  return SetAny<pmesh>(out);
+  return SetAny<const M*>(out);
 }
 
 // ---- frictionSolve("case" [, Vh, ux[], uy[]], overwrite =, fracture =, table =, slip =) ----
@@ -232,35 +306,66 @@ double stateNumber(const std::string& state) {
   return -1;
 }
 
-template <bool withField>
+// FreeFEM's types and its element numbering per dimension.
+template <int d>
+struct FreeFem;
+template <>
+struct FreeFem<2> {
+  using Space = FESpace;
+  using SpaceVariable = pfes;
+  static constexpr int vertices = 3;
+  static constexpr const char* cell = "triangle";
+  // P2's edge node e of a triangle: between these vertices (edge e is opposite vertex e).
+  static int edgeVertex(int e, int j) { return (e + 1 + j) % 3; }
+  static double vertex(const Fem2D::Mesh& Th, int i, int c) {
+    return c == 0 ? Th.vertices[i].x : Th.vertices[i].y;
+  }
+};
+template <>
+struct FreeFem<3> {
+  using Space = FESpace3;
+  using SpaceVariable = pfes3;
+  static constexpr int vertices = 4;
+  static constexpr const char* cell = "tetrahedron";
+  static int edgeVertex(int e, int j) { return Fem2D::Tet::nvedge[e][j]; }
+  static double vertex(const Fem2D::Mesh3& Th, int i, int c) {
+    return c == 0 ? Th.vertices[i].x : c == 1 ? Th.vertices[i].y : Th.vertices[i].z;
+  }
+};
+
+// frictionSolve("case" [, Vh, ux[], uy[] (, uz[] in 3D)], named ...): d the dimension of Vh.
+template <int d, bool withField>
 class FrictionSolve : public E_F0mps {
  public:
   typedef long Result;
   static const int n_name_param = 4;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
-  Expression caseDir, space = nullptr, ux = nullptr, uy = nullptr;
+  Expression caseDir, space = nullptr;
+  Expression u[3] = {nullptr, nullptr, nullptr};
 
   explicit FrictionSolve(const basicAC_F0& args) {
     args.SetNameParam(n_name_param, name_param, nargs);
     caseDir = to<string*>(args[0]);
     if (withField) {
-      space = to<pfes*>(args[1]);
-      ux = to<KN<double>*>(args[2]);
-      uy = to<KN<double>*>(args[3]);
+      space = to<typename FreeFem<d>::SpaceVariable*>(args[1]);
+      for (int c = 0; c < d; ++c) u[c] = to<KN<double>*>(args[2 + c]);
     }
   }
   static ArrayOfaType typeargs() {
-    return withField ? ArrayOfaType(atype<string*>(), atype<pfes*>(), atype<KN<double>*>(),
-                                    atype<KN<double>*>())
-                     : ArrayOfaType(atype<string*>());
+    if (!withField) return ArrayOfaType(atype<string*>());
+    if (d == 2)
+      return ArrayOfaType(atype<string*>(), atype<typename FreeFem<d>::SpaceVariable*>(),
+                          atype<KN<double>*>(), atype<KN<double>*>());
+    return ArrayOfaType(atype<string*>(), atype<typename FreeFem<d>::SpaceVariable*>(),
+                        atype<KN<double>*>(), atype<KN<double>*>(), atype<KN<double>*>());
   }
   static E_F0* f(const basicAC_F0& args) { return new FrictionSolve(args); }
   AnyType operator()(Stack stack) const override;
 };
 
-template <bool withField>
-basicAC_F0::name_and_type FrictionSolve<withField>::name_param[] = {
+template <int d, bool withField>
+basicAC_F0::name_and_type FrictionSolve<d, withField>::name_param[] = {
     {"overwrite", &typeid(bool)},
     {"fracture", &typeid(string*)},
     {"table", &typeid(KNM<double>*)},
@@ -268,54 +373,58 @@ basicAC_F0::name_and_type FrictionSolve<withField>::name_param[] = {
 
 // The displacement of the last step into the FreeFEM space Vh: its mesh must be the split
 // mesh (same vertices in the same order), its element the case's (P1: a node per vertex; P2:
-// vertices then edges, edge i opposite vertex i, as FreeFEM numbers a triangle's nodes).
+// the vertices, then the edges in FreeFEM's order of a cell's edges).
+template <int d>
 void fillDisplacement(const std::string& program, const friction::FrictionCase& c,
-                      const FESpace& Vh, KN<double>& ux, KN<double>& uy) {
+                      const typename FreeFem<d>::Space& Vh, KN<double>* u[d]) {
+  using F = FreeFem<d>;
   const friction::FractureSystem& sys = const_cast<friction::FrictionCase&>(c).system();
   const friction::LagrangeSpace& space = sys.splitSpace();
   const friction::Mesh& m = c.splitMesh().mesh;
-  if (m.dim != 2) fail(program, "a 3D case: the displacement into a 2D fespace is not supported");
-  const Fem2D::Mesh& Th = Vh.Th;
+  if (m.dim != d)
+    fail(program,
+         "Vh: a " + std::to_string(d) + "D fespace for a " + std::to_string(m.dim) + "D case");
+  const auto& Th = Vh.Th;
+  const int nodes = space.degree() == 1 ? F::vertices : F::vertices * (F::vertices + 1) / 2;
   std::ostringstream what;
   if (Th.nv != m.numPoints() || Th.nt != m.numCells())
-    what << "the fespace's mesh has " << Th.nv << " vertices and " << Th.nt
-         << " triangles, the split mesh " << m.numPoints() << " and " << m.numCells();
-  const int nodes = space.degree() == 1 ? 3 : 6;
-  if (what.str().empty() && (Vh.N != 1 || Vh.MaxNbNodePerElement != nodes ||
-                             Vh.NbOfDF != static_cast<int>(space.numNodes())))
-    what << "the fespace has " << Vh.NbOfDF << " degrees of freedom, " << Vh.MaxNbNodePerElement
-         << " nodes per triangle and " << Vh.N << " component(s); elementOrder " << space.degree()
-         << " needs a scalar P" << space.degree() << " space (" << space.numNodes() << " nodes)";
+    what << "the fespace's mesh has " << Th.nv << " vertices and " << Th.nt << " cells, the "
+         << "split mesh " << m.numPoints() << " and " << m.numCells();
+  else if (Vh.N != 1 || Vh.MaxNbNodePerElement != nodes ||
+           Vh.NbOfDF != static_cast<int>(space.numNodes()))
+    what << "the fespace has " << Vh.NbOfDF << " degrees of freedom and " << Vh.MaxNbNodePerElement
+         << " nodes per " << F::cell << "; elementOrder " << space.degree() << " needs "
+         << space.numNodes() << " and " << nodes;
   // The same vertices at the same places (to round-off of the mesh's size).
   double worst = 0, size = 0;
-  for (int i = 0; what.str().empty() && i < Th.nv; ++i) {
-    worst = std::max(
-        worst, std::hypot(Th.vertices[i].x - m.points[i].x(), Th.vertices[i].y - m.points[i].y()));
-    size = std::max(size, m.points[i].head<2>().norm());
-  }
+  for (int i = 0; what.str().empty() && i < Th.nv; ++i)
+    for (int k = 0; k < d; ++k) {
+      worst = std::max(worst, std::abs(F::vertex(Th, i, k) - m.points[i][k]));
+      size = std::max(size, std::abs(m.points[i][k]));
+    }
   if (what.str().empty() && worst > 1e-12 * std::max(size, 1e-300))
     what << "the fespace's mesh is not the split mesh (a vertex " << worst << " away)";
   if (!what.str().empty())
     fail(program, "Vh: expected a P" + std::to_string(space.degree()) +
                       " fespace on the mesh frictionSplit returned: " + what.str());
-  const Eigen::VectorXd u = sys.lastSplitDisplacement();
-  ux.resize(Vh.NbOfDF);
-  uy.resize(Vh.NbOfDF);
+  const Eigen::VectorXd values = sys.lastSplitDisplacement();
+  for (int k = 0; k < d; ++k) u[k]->resize(Vh.NbOfDF);
   for (int k = 0; k < Th.nt; ++k) {
-    const friction::Index v[3] = {m.cellVertices[3 * k], m.cellVertices[3 * k + 1],
-                                  m.cellVertices[3 * k + 2]};
+    const friction::Index* v = &m.cellVertices[static_cast<std::size_t>(F::vertices) * k];
     for (int i = 0; i < nodes; ++i) {
+      const int e = i - F::vertices;
       const friction::Index node =
-          i < 3 ? v[i] : space.midpointNode(v[(i - 3 + 1) % 3], v[(i - 3 + 2) % 3]);
+          i < F::vertices ? v[i]
+                          : space.midpointNode(v[F::edgeVertex(e, 0)], v[F::edgeVertex(e, 1)]);
       const int dof = Vh(k, i);
-      ux[dof] = u[space.dof(node, 0)];
-      uy[dof] = u[space.dof(node, 1)];
+      for (int comp = 0; comp < d; ++comp) (*u[comp])[dof] = values[space.dof(node, comp)];
     }
   }
 }
 
-template <bool withField>
-AnyType FrictionSolve<withField>::operator()(Stack stack) const {
+template <int d, bool withField>
+AnyType FrictionSolve<d, withField>::operator()(Stack stack) const {
+  using F = FreeFem<d>;
   const std::string program = "frictionSolve";
   const std::string dir = *GetAny<string*>((*caseDir)(stack));
   friction::RunCaseOptions how;
@@ -327,22 +436,23 @@ AnyType FrictionSolve<withField>::operator()(Stack stack) const {
 
   // What the call asks for is checked before the run, so that a bad call writes nothing: the
   // fespace against the case's elementOrder, the fracture against system/meshDict.
-  FESpace* Vh = nullptr;
+  const typename F::Space* Vh = nullptr;
   if (withField) {
-    pfes* pVh = GetAny<pfes*>((*space)(stack));
-    Vh = pVh ? static_cast<FESpace*>(**pVh) : nullptr;
+    auto* pVh = GetAny<typename F::SpaceVariable*>((*space)(stack));
+    Vh = pVh ? static_cast<typename F::Space*>(**pVh) : nullptr;
     if (!Vh) fail(program, "Vh: the fespace is not built");
   }
   std::vector<std::string> names;
   try {
     if (withField) {
       const int order = friction::FrictionCase::elementOrder(dir);
-      if (Vh->N != 1 || Vh->MaxNbNodePerElement != (order == 1 ? 3 : 6))
+      const int nodes = order == 1 ? F::vertices : F::vertices * (F::vertices + 1) / 2;
+      if (Vh->N != 1 || Vh->MaxNbNodePerElement != nodes)
         fail(program, "Vh: expected a P" + std::to_string(order) +
                           " fespace on the mesh frictionSplit returned (elementOrder " +
                           std::to_string(order) + " in system/frictionSolution), got " +
                           std::to_string(Vh->N) + " component(s) and " +
-                          std::to_string(Vh->MaxNbNodePerElement) + " nodes per triangle");
+                          std::to_string(Vh->MaxNbNodePerElement) + " nodes per " + F::cell);
     }
     if (table || slip)
       for (const auto& g : friction::MeshSettings::read(dir).fractures) names.push_back(g.name);
@@ -376,12 +486,12 @@ AnyType FrictionSolve<withField>::operator()(Stack stack) const {
   }
   if (!c) return SetAny<long>(status);
 
-  if (withField)
-    fillDisplacement(program, *c, *Vh, *GetAny<KN<double>*>((*ux)(stack)),
-                     *GetAny<KN<double>*>((*uy)(stack)));
+  if (withField) {
+    KN<double>* fields[d];
+    for (int k = 0; k < d; ++k) fields[k] = GetAny<KN<double>*>((*u[k])(stack));
+    fillDisplacement<d>(program, *c, *Vh, fields);
+  }
   if (table || slip) {
-    if (c->splitMesh().mesh.dim != 2)
-      fail(program, "table/slip: 3D fracture tables are not supported by the plug-in yet");
     // The fracture by name in the split mesh (its order need not be meshDict's).
     const auto& fractures = c->splitMesh().fractures;
     std::size_t at = 0;
@@ -389,30 +499,27 @@ AnyType FrictionSolve<withField>::operator()(Stack stack) const {
     if (at == fractures.size())
       fail(program, "constant/splitMesh has no fracture '" + names[f] +
                         "', which system/meshDict lists: split the case again");
+    const int dim = c->splitMesh().mesh.dim;
     const std::vector<friction::FractureRow> rows = c->fractureRows(at);
-    const bool opening = !rows.empty() && rows.front().hasOpening;
-    const long columns = opening ? 11 : 10;
+    // The file's columns, then the state as a number.
+    const long columns =
+        rows.empty() ? 0
+                     : static_cast<long>(friction::fractureTableValues(rows[0], dim).size()) + 1;
     if (table) {
       table->resize(static_cast<long>(rows.size()), columns);
       for (std::size_t i = 0; i < rows.size(); ++i) {
-        const friction::FractureRow& r = rows[i];
-        const double values[11] = {r.s,
-                                   r.position.x(),
-                                   r.position.y(),
-                                   r.slip[0],
-                                   r.slipIncrement[0],
-                                   r.sigmaN,
-                                   r.tau[0],
-                                   r.ST,
-                                   r.residual[0],
-                                   opening ? r.opening : stateNumber(r.state),
-                                   stateNumber(r.state)};
-        for (long j = 0; j < columns; ++j) (*table)(static_cast<long>(i), j) = values[j];
+        const std::vector<double> values = friction::fractureTableValues(rows[i], dim);
+        for (std::size_t j = 0; j < values.size(); ++j)
+          (*table)(static_cast<long>(i), static_cast<long>(j)) = values[j];
+        (*table)(static_cast<long>(i), columns - 1) = stateNumber(rows[i].state);
       }
     }
     if (slip) {
+      // 2D: the slip; 3D: its magnitude (the table has both components).
       slip->resize(static_cast<long>(rows.size()));
-      for (std::size_t i = 0; i < rows.size(); ++i) (*slip)[static_cast<long>(i)] = rows[i].slip[0];
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        (*slip)[static_cast<long>(i)] =
+            dim == 2 ? rows[i].slip[0] : std::hypot(rows[i].slip[0], rows[i].slip[1]);
     }
   }
   return SetAny<long>(status);
@@ -430,9 +537,11 @@ long frictionOrder(string* const& caseDir) {
 
 void init() {
   Global.Add("frictionOrder", "(", new OneOperator1_<long, string*>(frictionOrder));
-  Global.Add("frictionSplit", "(", new OneOperatorCode<FrictionSplit>());
-  Global.Add("frictionSolve", "(", new OneOperatorCode<FrictionSolve<false>>());
-  Global.Add("frictionSolve", "(", new OneOperatorCode<FrictionSolve<true>>());
+  Global.Add("frictionSplit", "(", new OneOperatorCode<FrictionSplit<Fem2D::Mesh>>());
+  Global.Add("frictionSplit", "(", new OneOperatorCode<FrictionSplit<Fem2D::Mesh3>>());
+  Global.Add("frictionSolve", "(", new OneOperatorCode<FrictionSolve<2, false>>());
+  Global.Add("frictionSolve", "(", new OneOperatorCode<FrictionSolve<2, true>>());
+  Global.Add("frictionSolve", "(", new OneOperatorCode<FrictionSolve<3, true>>());
 }
 
 }  // namespace

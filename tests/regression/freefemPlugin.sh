@@ -11,10 +11,16 @@
 #     effect of that rounding with a margin (measured: below 1e-11);
 #  3. the loads the script checks at the fespace's nodes (top and bottom sides) hold to
 #     round-off, for P1 and for P2 (the P2 check fails if the plug-in put a value on the
-#     wrong node of FreeFEM's numbering).
+#     wrong node of FreeFEM's numbering);
+#  4. 3D: cases/strikeSlipFault on a coarse mesh3 made in FreeFEM (its block.edp, the mesh
+#     handed to the plug-in instead of saved: freefemPlugin3d.edp), P1 and P2, eight steps:
+#     every time folder, the fault's table and the displacement against the command line on
+#     the same folder (to the bit), and the Dirichlet components at every node of the
+#     P13d/P23d fespace (freefemPlugin3d.py).
 # Usage: freefemPlugin.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$(cd "$1" && pwd) src=$(cd "$2" && pwd) work=$3
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 rm -rf "$work" && mkdir -p "$work"
 [[ -f $bin/friction.so ]] || { echo "FAIL: $bin/friction.so is missing" >&2; exit 1; }
 
@@ -87,7 +93,7 @@ text = open(cli + "/1/D").read()
 body = text[text.index("internalField"):]
 n = int(re.search(r"List<vector>\s+(\d+)", body).group(1))
 opener = body.index("(", body.index(str(n)))  # the list's own parenthesis
-vals = re.findall(r"\(\s*(\S+)\s+(\S+)\s+\S+\s*\)", body[opener + 1:])
+vals = re.findall(r"\(\s*([^\s()]+)\s+([^\s()]+)\s+[^\s()]+\s*\)", body[opener + 1:])
 D = np.array(vals[:n], dtype=float)
 assert u.shape[0] == n and n > 0, "vertex counts differ: %d and %d" % (u.shape[0], n)
 du = np.max(np.abs(u[:, 2:4] - D)) / np.max(np.abs(D))
@@ -103,5 +109,36 @@ print("P%s: loads at the fespace's nodes: top %.1e, bottom %.1e (integrals of |e
       % (order, top, bottom))
 assert top <= 1e-14 and bottom <= 1e-14, "the displacement misses the Dirichlet values"
 EOF
+done
+
+# 4. 3D.
+for order in 1 2; do
+  ff=$work/fault3dP$order
+  fresh "fault3dP$order" strikeSlipFault
+  sed -i "s/^elementOrder .*/elementOrder    $order;/" "$ff/system/frictionSolution"
+  sed -n '/^savemesh(Th, out);/q;p' "$ff/constant/mesh/block.edp" >"$ff/solve3d.edp"
+  cat "$here/freefemPlugin3d.edp" >>"$ff/solve3d.edp"
+  (cd "$ff" && FF_LOADPATH="$bin;/usr/lib/freefem++;./" FF_INCLUDEPATH=/usr/include/freefem++/idp \
+    FreeFem++ -nw -ns solve3d.edp -nFault 6 -nSide 6 -nLayers 3 >log.FreeFem++ 2>&1) || {
+    echo "FAIL: 3D P$order: FreeFem++ failed:" >&2
+    tail -n 20 "$ff/log.FreeFem++" >&2
+    exit 1
+  }
+  grep -q "^frictionSolve: exit status 0," "$ff/log.FreeFem++" || {
+    echo "FAIL: 3D P$order: frictionSolve did not return 0:" >&2
+    tail -n 20 "$ff/log.FreeFem++" >&2
+    exit 1
+  }
+  c=$work/fault3dCliP$order
+  cp -r "$ff" "$c"
+  rm -rf "$c"/[1-9]* "$c/postProcessing" "$c/VTK" "$c/constant/splitMesh" "$c"/log.*
+  cli "$c"
+  for d in "$ff"/[1-9]*; do
+    diff -r "$d" "$c/${d##*/}" >/dev/null || {
+      echo "FAIL: 3D P$order: time folder ${d##*/} differs between the plug-in and frictionSolver" >&2
+      exit 1
+    }
+  done
+  /usr/bin/python3 "$here/freefemPlugin3d.py" "$ff" "$c" "$order" 8 fault
 done
 echo "PASS"

@@ -48,6 +48,38 @@ bool turnedFrame(const std::vector<FractureRow>& rows) {
 
 }  // namespace
 
+std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
+  std::vector<double> v;
+  if (dim != 3) {
+    v = {r.s,      r.position.x(), r.position.y(), r.slip[0],    r.slipIncrement[0],
+         r.sigmaN, r.tau[0],       r.ST,           r.residual[0]};
+  } else {
+    const Eigen::Vector3d slip = r.slip[0] * r.tangent[0] + r.slip[1] * r.tangent[1];
+    v = {r.position.x(),
+         r.position.y(),
+         r.position.z(),
+         r.normal.x(),
+         r.normal.y(),
+         r.normal.z(),
+         r.slip[0],
+         r.slip[1],
+         slip.x(),
+         slip.y(),
+         slip.z(),
+         std::hypot(r.slip[0], r.slip[1]),
+         r.slipIncrement[0],
+         r.slipIncrement[1],
+         r.sigmaN,
+         r.tau[0],
+         r.tau[1],
+         std::hypot(r.tau[0], r.tau[1]),
+         r.ST,
+         std::hypot(r.residual[0], r.residual[1])};
+  }
+  if (r.hasOpening) v.push_back(r.opening);
+  return v;
+}
+
 void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,
                         const std::string& statusLine, int precision, int dim,
                         const std::vector<std::string>& notes) {
@@ -59,22 +91,13 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   };
   // Fractures that open: the opening g before the state.
   const bool opening = !rows.empty() && rows.front().hasOpening;
-  const auto openingValue = [&](const FractureRow& r) -> std::ostream& {
-    if (opening) out << r.opening << " ";
-    return out;
-  };
   if (dim != 3) {
     out << "# s x y slip slipIncrement sigmaN tau ST residual " << (opening ? "opening " : "")
         << "state\n# " << statusLine << "\n";
     for (const std::string& note : notes) out << "# " << note << "\n";
     for (const FractureRow& r : rows) {
-      out << r.s << " " << r.position.x() << " " << r.position.y() << " " << r.slip[0] << " "
-          << r.slipIncrement[0] << " ";
-      value(r.sigmaN) << " ";
-      value(r.tau[0]) << " ";
-      value(r.ST) << " ";
-      value(r.residual[0]) << " ";
-      openingValue(r) << r.state << "\n";
+      for (const double v : fractureTableValues(r, dim)) value(v) << " ";
+      out << r.state << "\n";
     }
     writeTextAtomic(path, out.str());
     return;
@@ -102,18 +125,8 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
         << "\n";
   }
   for (const FractureRow& r : rows) {
-    const Eigen::Vector3d slip = r.slip[0] * r.tangent[0] + r.slip[1] * r.tangent[1];
-    out << r.position.x() << " " << r.position.y() << " " << r.position.z() << " " << r.normal.x()
-        << " " << r.normal.y() << " " << r.normal.z() << " " << r.slip[0] << " " << r.slip[1] << " "
-        << slip.x() << " " << slip.y() << " " << slip.z() << " " << std::hypot(r.slip[0], r.slip[1])
-        << " " << r.slipIncrement[0] << " " << r.slipIncrement[1] << " ";
-    value(r.sigmaN) << " ";
-    value(r.tau[0]) << " ";
-    value(r.tau[1]) << " ";
-    value(std::hypot(r.tau[0], r.tau[1])) << " ";
-    value(r.ST) << " ";
-    value(std::hypot(r.residual[0], r.residual[1])) << " ";
-    openingValue(r) << r.state << "\n";
+    for (const double v : fractureTableValues(r, dim)) value(v) << " ";
+    out << r.state << "\n";
   }
   writeTextAtomic(path, out.str());
 }

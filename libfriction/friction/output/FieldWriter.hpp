@@ -49,6 +49,12 @@ struct FractureRow {
   std::string state;
 };
 
+/// The numbers of a fracture table's row, in the file's order (the header comment above),
+/// without the state: 2D s x y slip slipIncrement sigmaN tau ST residual; 3D x y z nx ny nz
+/// slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1 slipIncrement2 sigmaN tau1
+/// tau2 tauMagnitude ST residual; then opening if the row has one. NaN at tips.
+std::vector<double> fractureTableValues(const FractureRow& row, int dim);
+
 /// dim: 2 or 3, the layout of the file comment (2D: components [0]; 3D: both, the magnitudes
 /// and slipX.. = slip[0] t₁ + slip[1] t₂ derived here). NaN values are written "nan".
 /// `notes`: more comment lines after the status line (2D: the fracture's junctions), each
