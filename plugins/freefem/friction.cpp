@@ -16,9 +16,10 @@
 //   int status = frictionSolve("case" [, Vh, ux[], uy[] (, uz[])] [, overwrite = true,
 //                              fracture = "name", table = T, slip = s]);
 //     frictionSolver on the case: the same log, time folders, VTK files and restart. Returns
-//     frictionSolver's exit code when the run went through (0 converged, 3 a step did not, 5
-//     stopped by a signal); every other outcome (bad input, a failed factorisation, an output
-//     error) is a FreeFEM error with frictionSolver's message. With Vh (a P1 or P2 fespace on
+//     frictionSolver's exit code when the run went through (0 converged, 3 a step did not);
+//     every other outcome (bad input, a failed factorisation, an output error, a stop by
+//     SIGINT/SIGTERM after the step was written) is a FreeFEM error with frictionSolver's
+//     message. With Vh (a P1 or P2 fespace on
 //     the mesh frictionSplit returned, of the case's elementOrder: P1/P2, or P13d/P23d) the
 //     arrays get the displacement [m] of the last step. table (real[int,int]) gets the
 //     fracture table of the last step, one row per control node: the numeric columns of
@@ -458,6 +459,8 @@ AnyType FrictionSolve<d, withField>::operator()(Stack stack) const {
       for (const auto& g : friction::MeshSettings::read(dir).fractures) names.push_back(g.name);
   } catch (const friction::InputError& e) {
     fail(program, e.what());
+  } catch (const std::exception& e) {
+    fail(program, e.what());
   }
   std::size_t f = 0;
   if (table || slip) {
@@ -478,49 +481,63 @@ AnyType FrictionSolve<d, withField>::operator()(Stack stack) const {
   std::ostringstream err;
   std::unique_ptr<friction::FrictionCase> c;
   const int status = friction::runCase(dir, how, logStream(), err, &c);
-  if (status != 0 && status != 3 && status != 5) {
+  if (status == 5 && c)
+    // Stopped by SIGINT or SIGTERM (the step written, as frictionSolver does): the user wants
+    // the script to stop too.
+    fail(program, "stopped by " + c->stoppedEarly() +
+                      " after writing the current step; continue with startFrom latestTime");
+  if (status != 0 && status != 3) {
     std::string message = err.str();
     while (!message.empty() && message.front() == '\n') message.erase(0, 1);
     while (!message.empty() && message.back() == '\n') message.pop_back();
+    if (message.empty())
+      message = program + ": error: the run ended with exit status " + std::to_string(status) +
+                " (see the log)";
     ExecError(message);
   }
   if (!c) return SetAny<long>(status);
 
-  if (withField) {
-    KN<double>* fields[d];
-    for (int k = 0; k < d; ++k) fields[k] = GetAny<KN<double>*>((*u[k])(stack));
-    fillDisplacement<d>(program, *c, *Vh, fields);
-  }
-  if (table || slip) {
-    // The fracture by name in the split mesh (its order need not be meshDict's).
-    const auto& fractures = c->splitMesh().fractures;
-    std::size_t at = 0;
-    while (at < fractures.size() && fractures[at].name != names[f]) ++at;
-    if (at == fractures.size())
-      fail(program, "constant/splitMesh has no fracture '" + names[f] +
-                        "', which system/meshDict lists: split the case again");
-    const int dim = c->splitMesh().mesh.dim;
-    const std::vector<friction::FractureRow> rows = c->fractureRows(at);
-    // The file's columns, then the state as a number.
-    const long columns =
-        rows.empty() ? 0
-                     : static_cast<long>(friction::fractureTableValues(rows[0], dim).size()) + 1;
-    if (table) {
-      table->resize(static_cast<long>(rows.size()), columns);
-      for (std::size_t i = 0; i < rows.size(); ++i) {
-        const std::vector<double> values = friction::fractureTableValues(rows[i], dim);
-        for (std::size_t j = 0; j < values.size(); ++j)
-          (*table)(static_cast<long>(i), static_cast<long>(j)) = values[j];
-        (*table)(static_cast<long>(i), columns - 1) = stateNumber(rows[i].state);
+  try {
+    if (withField) {
+      KN<double>* fields[d];
+      for (int k = 0; k < d; ++k) fields[k] = GetAny<KN<double>*>((*u[k])(stack));
+      fillDisplacement<d>(program, *c, *Vh, fields);
+    }
+    if (table || slip) {
+      // The fracture by name in the split mesh (its order need not be meshDict's).
+      const auto& fractures = c->splitMesh().fractures;
+      std::size_t at = 0;
+      while (at < fractures.size() && fractures[at].name != names[f]) ++at;
+      if (at == fractures.size())
+        fail(program, "constant/splitMesh has no fracture '" + names[f] +
+                          "', which system/meshDict lists: split the case again");
+      const int dim = c->splitMesh().mesh.dim;
+      const std::vector<friction::FractureRow> rows = c->fractureRows(at);
+      // The file's columns, then the state as a number.
+      const long columns =
+          rows.empty() ? 0
+                       : static_cast<long>(friction::fractureTableValues(rows[0], dim).size()) + 1;
+      if (table) {
+        table->resize(static_cast<long>(rows.size()), columns);
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+          const std::vector<double> values = friction::fractureTableValues(rows[i], dim);
+          for (std::size_t j = 0; j < values.size(); ++j)
+            (*table)(static_cast<long>(i), static_cast<long>(j)) = values[j];
+          (*table)(static_cast<long>(i), columns - 1) = stateNumber(rows[i].state);
+        }
+      }
+      if (slip) {
+        // 2D: the slip; 3D: its magnitude (the table has both components).
+        slip->resize(static_cast<long>(rows.size()));
+        for (std::size_t i = 0; i < rows.size(); ++i)
+          (*slip)[static_cast<long>(i)] =
+              dim == 2 ? rows[i].slip[0] : std::hypot(rows[i].slip[0], rows[i].slip[1]);
       }
     }
-    if (slip) {
-      // 2D: the slip; 3D: its magnitude (the table has both components).
-      slip->resize(static_cast<long>(rows.size()));
-      for (std::size_t i = 0; i < rows.size(); ++i)
-        (*slip)[static_cast<long>(i)] =
-            dim == 2 ? rows[i].slip[0] : std::hypot(rows[i].slip[0], rows[i].slip[1]);
-    }
+  } catch (const Error&) {
+    throw;  // FreeFEM's own errors (fail) go through as they are
+  } catch (const std::exception& e) {
+    fail(program, std::string("internal error: ") + e.what());
   }
   return SetAny<long>(status);
 }
@@ -531,6 +548,8 @@ long frictionOrder(string* const& caseDir) {
   try {
     return friction::FrictionCase::elementOrder(*caseDir);
   } catch (const friction::InputError& e) {
+    fail("frictionOrder", e.what());
+  } catch (const std::exception& e) {
     fail("frictionOrder", e.what());
   }
 }

@@ -824,7 +824,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   auto controlStamp = fs::last_write_time(controlDict);
   bool controlDictGone = false;
   const auto start = std::chrono::steady_clock::now();
-  installStopHandlers();
+  const StopHandlerScope stopHandlers;  // for the time loop only
 
   Eigen::VectorXd lastLoad, lastDirichlet, lastPressure;
   for (long k = first; k <= time_->numSteps(); ++k) {

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <signal.h>
+
 #include <csignal>
 
 namespace friction {
@@ -25,9 +27,24 @@ extern "C" void onStopSignal(int sig) {
 }
 }  // namespace
 
-void installStopHandlers() {
-  std::signal(SIGINT, onStopSignal);
-  std::signal(SIGTERM, onStopSignal);
+struct StopHandlerScope::Saved {
+  struct sigaction interrupt, terminate;
+};
+
+StopHandlerScope::StopHandlerScope() : saved_(new Saved) {
+  first = 0;
+  second = 0;
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, &saved_->interrupt);
+  sigaction(SIGTERM, &action, &saved_->terminate);
+}
+
+StopHandlerScope::~StopHandlerScope() {
+  sigaction(SIGINT, &saved_->interrupt, nullptr);
+  sigaction(SIGTERM, &saved_->terminate, nullptr);
+  delete saved_;
 }
 
 int stopRequested() { return first; }

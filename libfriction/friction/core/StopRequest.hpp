@@ -8,8 +8,21 @@
 
 namespace friction {
 
-/// Install handlers for SIGINT and SIGTERM that only set a flag (and say so on stderr).
-void installStopHandlers();
+/// For its lifetime, SIGINT and SIGTERM only set a flag (and say so on stderr): the flags start
+/// clear, and the handlers that were there before come back at the end. So a process that
+/// runs several cases (the FreeFEM plug-in, the fuzz harness) starts each with no stop
+/// request, and is interrupted as usual between them.
+class StopHandlerScope {
+ public:
+  StopHandlerScope();
+  ~StopHandlerScope();
+  StopHandlerScope(const StopHandlerScope&) = delete;
+  StopHandlerScope& operator=(const StopHandlerScope&) = delete;
+
+ private:
+  struct Saved;
+  Saved* saved_;
+};
 /// The first signal that asked to stop, or 0.
 int stopRequested();
 /// The signal that asked to stop at once (the second one), or 0.
