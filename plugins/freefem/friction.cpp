@@ -484,8 +484,12 @@ AnyType FrictionSolve<d, withField>::operator()(Stack stack) const {
   if (status == 5 && c)
     // Stopped by SIGINT or SIGTERM (the step written, as frictionSolver does): the user wants
     // the script to stop too.
+    // (stoppedEarly says which signal, and whether a second one abandoned the step)
     fail(program, "stopped by " + c->stoppedEarly() +
-                      " after writing the current step; continue with startFrom latestTime");
+                      (c->stoppedEarly().find("abandoned") == std::string::npos
+                           ? " after writing the current step"
+                           : "") +
+                      "; continue with startFrom latestTime");
   if (status != 0 && status != 3) {
     std::string message = err.str();
     while (!message.empty() && message.front() == '\n') message.erase(0, 1);
