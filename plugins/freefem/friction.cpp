@@ -457,6 +457,8 @@ AnyType FrictionSolve<d, withField>::operator()(Stack stack) const {
     }
     if (table || slip)
       for (const auto& g : friction::MeshSettings::read(dir).fractures) names.push_back(g.name);
+  } catch (const Error&) {
+    throw;  // FreeFEM's own errors (fail above) go through as they are
   } catch (const friction::InputError& e) {
     fail(program, e.what());
   } catch (const std::exception& e) {

@@ -34,6 +34,8 @@ scenario() {
     why="no FreeFEM 'Exec error' in the log"
   elif ! grep -qF -- "$expected" "$d/log.bad"; then
     why="the message lacks: $expected"
+  elif grep -q "error: Exec error" "$d/log.bad"; then
+    why="the message is wrapped twice (a FreeFEM error caught and reported again)"
   elif [[ $before != "$after" ]]; then
     why="the case folder changed: $(diff <(echo "$before") <(echo "$after") | head -5 || true)"
   fi
