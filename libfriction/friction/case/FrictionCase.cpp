@@ -313,6 +313,17 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     if (!law.mu().isConstant() && !on.empty()) range("frictionCoefficient", mu, "");
     if (!law.cohesion().isConstant() && !on.empty()) range(law.cohesionKey().c_str(), c, " Pa");
   }
+  // Effects that vary along the fractures (faultPressure's fields) are evaluated at the
+  // control nodes once, here, and checked node by node.
+  {
+    std::vector<std::string> fractureNames;
+    for (const auto& g : split_.fractures) fractureNames.push_back(g.name);
+    const EffectContext context{split_, nodes, fractureNames, log};
+    for (const auto& e : effects_) {
+      e->bind(context);
+      hasPressure_ |= e->givesFracturePressure();
+    }
+  }
   // γ has units of stress/length; its scale-free default is E over the mean fracture edge
   // length h (docs/method.md §4): then γβ and τ are of the same size for slips of order h·τ/E.
   const double h = meanFractureEdge();
@@ -1168,6 +1179,13 @@ std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::
     if (opening_) {
       row.hasOpening = true;
       row.opening = beta[kb * static_cast<Eigen::Index>(nodes.size()) + k];
+    }
+    if (hasPressure_) {
+      // The fluid's pressure and the effective normal stress σ'_n = σ_n + p (NaN at tips, as
+      // σ_n): the stress the friction law and ST use.
+      row.hasPressure = true;
+      row.pressure = pressure_.size() ? pressure_[k] : 0.0;
+      row.sigmaNEffective = tip ? nan : effective;
     }
     if (rowOfPlus) (*rowOfPlus)[nodes[k].plus] = static_cast<Index>(rows.size());
     rows.push_back(row);

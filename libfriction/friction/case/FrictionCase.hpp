@@ -167,6 +167,8 @@ class FrictionCase {
   Eigen::VectorXd mu_, cohesion_, slip_;
   ControlState last_;
   Eigen::VectorXd pressure_;  ///< p of the last step, per control node
+  /// Some effect gives a fluid pressure on the fractures: tables and VTK carry p and σ'_n.
+  bool hasPressure_ = false;
   /// Control of the last step (warm start, restart): the slip increment, then with openings
   /// the opening g per node [m] (a state: the faces' separation at the end of that step).
   Eigen::VectorXd lastBeta_;

@@ -7,6 +7,7 @@
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/NumberRows.hpp"
+#include "friction/effect/FaultPressure.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fracture/FractureSystem.hpp"
 
@@ -183,6 +184,7 @@ class FracturePressure : public Effect {
     }
   }
   std::string type() const override { return "fracturePressure"; }
+  bool givesFracturePressure() const override { return true; }
   std::string describe() const override {
     return "on fracture " + fracture_ + (file_.empty() ? "" : ", values from " + file_);
   }
@@ -232,6 +234,7 @@ const EffectEntry effectTable[] = {
         const std::string& c, int dim) -> std::unique_ptr<Effect> {
        return std::make_unique<FracturePressure>(n, d, f, c, dim);
      }},
+    {"faultPressure", makeFaultPressure},
 };
 
 }  // namespace

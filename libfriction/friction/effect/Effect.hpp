@@ -8,6 +8,9 @@
 //                                     [Pa/m]
 //   pore     { type fracturePressure; fracture crack; pressure 1e6; }     // p [Pa], or a table,
 //                                     // or values "constant/p.dat" (s p per line, interpolated)
+//   fluid    { type faultPressure; fractures (fault);                      // p_f(x, t) [Pa]
+//              initial { type depth; value 0; gradient -9810; } change table (...); }
+//              (FaultPressure.hpp: the initial state as a field, wells, diffusion, data)
 // Any entry may say `active no;` to be switched off without deleting it.
 //
 // The dimension comes from the mesh. On a 3D mesh: g (gx gy gz); stress
@@ -26,6 +29,7 @@
 //    ρ = c − μ(σ_n + p) (the paper's poroelastic remark).
 #pragma once
 
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +44,16 @@ namespace friction {
 class Dictionary;
 class ElasticityAssembler;
 struct ControlNode;
+struct SplitMesh;
+
+/// What an effect may look at once the fracture system exists (FrictionCase::setup): the
+/// control nodes (their positions, fractures and frames) and the split mesh they come from.
+struct EffectContext {
+  const SplitMesh& split;
+  const std::vector<ControlNode>& nodes;
+  const std::vector<std::string>& fractureNames;
+  std::ostream& log;
+};
 
 class Effect {
  public:
@@ -57,6 +71,14 @@ class Effect {
   virtual std::string type() const = 0;
   /// One line for the log: what the effect does with which values.
   virtual std::string describe() const = 0;
+
+  /// Called once, after the fracture system is built and before the first step: an effect
+  /// that varies along the fractures evaluates its fields at the control nodes here (and
+  /// checks them: InputError naming the key and the node). `nodes` of later calls are these.
+  virtual void bind(const EffectContext& /*context*/) {}
+  /// True if the effect gives a fluid pressure on the fractures: the tables and the fault's
+  /// VTK then carry p and σ'_n.
+  virtual bool givesFracturePressure() const { return false; }
 
   /// Add this effect's nodal forces at time t (split space) [N per m in 2D, N in 3D].
   virtual void addLoad(const ElasticityAssembler& /*split*/, double /*t*/,

@@ -77,6 +77,10 @@ std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
          std::hypot(r.residual[0], r.residual[1])};
   }
   if (r.hasOpening) v.push_back(r.opening);
+  if (r.hasPressure) {
+    v.push_back(r.pressure);
+    v.push_back(r.sigmaNEffective);
+  }
   return v;
 }
 
@@ -91,9 +95,11 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   };
   // Fractures that open: the opening g before the state.
   const bool opening = !rows.empty() && rows.front().hasOpening;
+  const char* pressure =
+      !rows.empty() && rows.front().hasPressure ? "pressure sigmaNEffective " : "";
   if (dim != 3) {
     out << "# s x y slip slipIncrement sigmaN tau ST residual " << (opening ? "opening " : "")
-        << "state\n# " << statusLine << "\n";
+        << pressure << "state\n# " << statusLine << "\n";
     for (const std::string& note : notes) out << "# " << note << "\n";
     for (const FractureRow& r : rows) {
       for (const double v : fractureTableValues(r, dim)) value(v) << " ";
@@ -104,7 +110,7 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   }
   out << "# x y z nx ny nz slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1 "
          "slipIncrement2 sigmaN tau1 tau2 tauMagnitude ST residual "
-      << (opening ? "opening " : "") << "state\n# " << statusLine << "\n";
+      << (opening ? "opening " : "") << pressure << "state\n# " << statusLine << "\n";
   const auto vector = [&out](const Eigen::Vector3d& v) {
     out << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
   };

@@ -15,7 +15,8 @@
 //    t1 (..) t2 (..)" when every node has the same one (a flat fault), else "# frame per
 //    node: ...". Rows in the control-node order of FractureSystem.
 //    With fractures that open (contact unilateral), a column "opening" (g = −[[u]]·n_Γ [m])
-//    comes before "state", in 2D and 3D.
+//    comes before "state", in 2D and 3D; with a fluid pressure (fracturePressure,
+//    faultPressure), "pressure sigmaNEffective" (p and σ'_n = σ_n + p [Pa]) come after it.
 #pragma once
 
 #include <array>
@@ -46,13 +47,19 @@ struct FractureRow {
   double ST = 0;            ///< slip tendency |τ| / −σ'_n [-]
   bool hasOpening = false;  ///< the case has fractures that open: the opening column is written
   double opening = 0;       ///< g = −[[u]]·n_Γ [m], 0 where the faces touch
+  /// The case has a fluid pressure on its fractures: the columns pressure and sigmaNEffective
+  /// are written (after opening, before state).
+  bool hasPressure = false;
+  double pressure = 0;         ///< p [Pa] (fluid, positive)
+  double sigmaNEffective = 0;  ///< σ'_n = σ_n + p [Pa], NaN at tips
   std::string state;
 };
 
 /// The numbers of a fracture table's row, in the file's order (the header comment above),
 /// without the state: 2D s x y slip slipIncrement sigmaN tau ST residual; 3D x y z nx ny nz
 /// slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1 slipIncrement2 sigmaN tau1
-/// tau2 tauMagnitude ST residual; then opening if the row has one. NaN at tips.
+/// tau2 tauMagnitude ST residual; then opening if the row has one, then pressure and
+/// sigmaNEffective if it has them. NaN at tips.
 std::vector<double> fractureTableValues(const FractureRow& row, int dim);
 
 /// dim: 2 or 3, the layout of the file comment (2D: components [0]; 3D: both, the magnitudes

@@ -282,6 +282,10 @@ void writeFracturePolyline(const std::string& path, const std::vector<FractureRo
   rowArray(s, "residual", rows, [](const FractureRow& r) { return r.residual[0]; });
   if (!rows.empty() && rows.front().hasOpening)
     rowArray(s, "opening", rows, [](const FractureRow& r) { return r.opening; });
+  if (!rows.empty() && rows.front().hasPressure) {
+    rowArray(s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
+    rowArray(s, "sigmaNEffective", rows, [](const FractureRow& r) { return r.sigmaNEffective; });
+  }
   stateArray(s, rows);
   s << "      </PointData>\n";
 
@@ -360,6 +364,10 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
            [](const FractureRow& r) { return std::hypot(r.residual[0], r.residual[1]); });
   if (!rows.empty() && rows.front().hasOpening)
     rowArray(s, "opening", rows, [](const FractureRow& r) { return r.opening; });
+  if (!rows.empty() && rows.front().hasPressure) {
+    rowArray(s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
+    rowArray(s, "sigmaNEffective", rows, [](const FractureRow& r) { return r.sigmaNEffective; });
+  }
   stateArray(s, rows);
   s << "      </PointData>\n";
 
