@@ -178,7 +178,8 @@ def latestTime(case, fracture):
 
 def readTable(path, columns=COLUMNS3D):
     """A 3D fracture table with the given columns (a unilateral fracture's have 'opening'
-    before 'state'): its columns by name, the status line and the frame line."""
+    before 'state', a fluid pressure's 'pressure sigmaNEffective'): its columns by name, the
+    status line and the frame line."""
     try:
         lines = open(path).read().splitlines()
     except OSError as e:
@@ -186,7 +187,11 @@ def readTable(path, columns=COLUMNS3D):
     if not lines or not lines[0].startswith("#"):
         raise InputError(f"{path}:1: expected the column header")
     header = lines[0][1:].split()
-    if header != columns:
+    # A fluid pressure adds 'pressure sigmaNEffective' before the state (README, "Fluid
+    # pressure"): the same table with two more columns.
+    if header == list(columns[:-1]) + ["pressure", "sigmaNEffective", "state"]:
+        columns = header
+    if header != list(columns):
         if header[:3] == ["s", "x", "y"]:
             raise InputError(f"{path}: a 2D fracture table (columns {' '.join(header)}); "
                              "pennyError.py compares 3D results (columns x y z nx ny nz ...)")

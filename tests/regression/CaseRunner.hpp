@@ -194,11 +194,14 @@ class Case {
     while (std::getline(in, line)) {
       if (line.empty() || line[0] == '#') continue;
       // strtod, not >>: a tip's "nan" is a value, which operator>> refuses.
+      // The state is the last item: columns such as opening, pressure and sigmaNEffective
+      // come between the residual and it (README, "Fracture tables").
       std::istringstream s(line);
       std::string item[10];
       for (auto& i : item) s >> i;
       INFO(line);
       REQUIRE(!s.fail());
+      for (std::string more; s >> more;) item[9] = more;
       double v[9];
       for (int i = 0; i < 9; ++i) {
         char* end = nullptr;

@@ -42,20 +42,31 @@ int countState(const Table& t, const std::string& state) {
   return static_cast<int>(std::count(t.state.begin(), t.state.end(), state));
 }
 
-/// The table's text without its `opening` column (the column before the state).
+/// The table's text without its `opening` column (found by the header's names: a fluid
+/// pressure's columns may follow it).
 std::string withoutOpening(const std::string& text) {
   std::istringstream in(text);
   std::ostringstream out;
+  long column = -1;
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("# s ", 0) == 0) {
-      const auto at = line.find(" opening state");
-      REQUIRE(at != std::string::npos);
-      line = line.substr(0, at) + " state";
-    } else if (!line.empty() && line[0] != '#') {
-      const auto last = line.rfind(' ');
-      const auto before = line.rfind(' ', last - 1);
-      REQUIRE(before != std::string::npos);
-      line = line.substr(0, before) + line.substr(last);
+    const bool header = line.rfind("# s ", 0) == 0;
+    if (header || (!line.empty() && line[0] != '#')) {
+      std::istringstream s(line);
+      std::vector<std::string> items;
+      for (std::string i; s >> i;) items.push_back(i);
+      if (header) {
+        const auto it = std::find(items.begin(), items.end(), "opening");
+        REQUIRE(it != items.end());
+        column = it - items.begin();
+        items.erase(it);
+      } else {
+        REQUIRE(column > 0);
+        REQUIRE(static_cast<long>(items.size()) > column - 1);
+        items.erase(items.begin() + (column - 1));  // rows have no '#'
+      }
+      // One space between items, as the writer puts them.
+      line.clear();
+      for (std::size_t i = 0; i < items.size(); ++i) line += (i ? " " : "") + items[i];
     }
     out << line << "\n";
   }

@@ -452,7 +452,7 @@ TEST_CASE("ParaView files read by VTK hold the solver's own table values", "[reg
   const std::string outOpen = readText(open.dir() / "log.vtk");
   INFO(outOpen);
   CHECK(rcOpen == 0);
-  CHECK_THAT(outOpen, Catch::Contains(", 2 tips, opening)"));
+  CHECK_THAT(outOpen, Catch::Contains(", 2 tips, opening, pressure)"));
 }
 
 TEST_CASE("condensed Newton: S from the factorisation, no back-substitution per fracture node",
