@@ -22,7 +22,8 @@
 //     (SM + θΔt A) p^{n+1} = (SM − (1−θ)Δt A) p^n + V_n,  V_n = ∫_{t_n}^{t_{n+1}} q φ dA dt,
 //   θ = 1 backward Euler, θ = ½ Crank–Nicolson. Each well's volume is integrated exactly over
 //   the substep, so injected volume = ∫ S p dA to round-off with no-flow edges, and a rate
-//   change inside a substep costs O(Δt²) away from the well.
+//   change inside a substep costs O(Δt²) away from the well (the volume is right, only its
+//   timing within the substep is not; measured CN order 1.86 for a shut-in inside substeps).
 // * Crank–Nicolson damps nothing at high frequencies: a held pressure switched on or changed
 //   (a jump in the data) leaves slowly decaying oscillations near it, and the error falls
 //   only as Δt (measured: 2D erfc case, 1.6e-2 → 2.0e-3 for Δt/8). A few backward Euler
@@ -37,8 +38,9 @@
 //   solver's times). A held node is held at all times (Δp = 0 before its first time).
 // * Factorisation: SM + θΔt A changes only with Δt and θ, so its SimplicialLDLT is cached,
 //   keyed by (Δt, θ) (a few entries: CN with damping uses two). Δt is rounded to 40 bits of
-//   mantissa (relative 1e-12) before use, so that substeps of one solver step whose lengths
-//   differ by round-off share one factor and a restarted run uses bitwise the same matrix.
+//   mantissa (relative 1e-12) before use, so that steps whose lengths differ by round-off
+//   (times accumulated as t += Δt) share one factor, and the matrix depends on the step's
+//   times only, not on the history: a restarted run uses bitwise the same one.
 // * State: the nodal p. state()/setState() are all a restart needs: advancing 0→1→2 and
 //   advancing 0→1, setState, 1→2 give the same bits.
 #pragma once
