@@ -42,6 +42,7 @@
 namespace friction {
 
 class Dictionary;
+class DictionaryWriter;
 class ElasticityAssembler;
 struct ControlNode;
 struct SplitMesh;
@@ -79,6 +80,19 @@ class Effect {
   /// True if the effect gives a fluid pressure on the fractures: the tables and the fault's
   /// VTK then carry p and σ'_n.
   virtual bool givesFracturePressure() const { return false; }
+
+  /// Effects with a state of their own (faultPressure's computed diffusion): advance it to
+  /// time t [s], once per step before the step's loads and pressures are asked for (t grows
+  /// from step to step; the first call after bind() or readState() starts from their time).
+  virtual void advance(double /*t*/) {}
+  /// Whether the effect has a state that a restart needs (written in uniform/frictionState,
+  /// sub-dictionary effects/<name>).
+  virtual bool hasState() const { return false; }
+  /// Write the state, at full precision, into the writer's open sub-dictionary.
+  virtual void writeState(DictionaryWriter& /*out*/) const {}
+  /// Read it back (a restart from a time folder of time t): InputError naming the key when it
+  /// does not fit (another mesh, another effect).
+  virtual void readState(const Dictionary& /*in*/, double /*t*/) {}
 
   /// Add this effect's nodal forces at time t (split space) [N per m in 2D, N in 3D].
   virtual void addLoad(const ElasticityAssembler& /*split*/, double /*t*/,
