@@ -2,6 +2,8 @@
 //   startFrom   startTime | latestTime;   startTime 0;
 //   stopAt      endTime | writeNow | noWriteNow | nextWrite;   (re-read while running)
 //   endTime     1;                        deltaT    0.1;
+//   deltaTGrowth 1.2;  maxDeltaT 10;      // steps growing geometrically (default 1: uniform)
+//   times (0.1 1 10 100);                 // or the step ends listed (instead of deltaT)
 //   writeControl timeStep | runTime;      writeInterval 1;
 //   writePrecision 8;                     timePrecision 6;
 //   writeVTK    yes;                      // also VTK/ files for ParaView (default yes)
@@ -10,9 +12,16 @@
 // Steps are counted in 64 bits and limited to maxSteps; time-folder names get as many
 // significant digits as it takes for every time of the run to have its own name that reads
 // back as that time (OpenFOAM raises timePrecision the same way, and says so).
+//
+// The steps: uniform (deltaT, the last one ending exactly at endTime); geometric (step j is
+// deltaT·g^(j−1) long, at most maxDeltaT, so the step ends from startTime form a geometric
+// sequence: the √t growth of an injection's rupture is followed with as many steps per
+// decade of time from milliseconds to years); or listed (the step ends given as such).
 #pragma once
 
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "friction/core/InputError.hpp"
 #include "friction/dict/Dictionary.hpp"
@@ -32,7 +41,14 @@ class TimeControl {
 
   double startTime() const { return startTime_; }
   double endTime() const { return endTime_; }
+  /// The first step's length (with `times`: the first listed time − startTime).
   double deltaT() const { return deltaT_; }
+  enum class Steps { uniform, geometric, listed };
+  /// uniform: deltaTGrowth 1 (the default); geometric: deltaTGrowth > 1; listed: `times`.
+  Steps steps() const { return mode_; }
+  double deltaTGrowth() const { return growth_; }
+  /// The cap on a geometric step (infinity when maxDeltaT is not given).
+  double maxDeltaT() const { return maxDeltaT_; }
   bool startFromLatest() const { return startFromLatest_; }
 
   enum class StopAt { endTime, writeNow, noWriteNow, nextWrite };
@@ -45,10 +61,14 @@ class TimeControl {
 
   /// Continue a run whose state was saved at `time` as step `step` (a restart). Returns the
   /// first step to compute; numSteps() + 1 when `time` is already endTime. When `time` is a
-  /// step end of this controlDict (startTime + k deltaT) the steps continue on that grid, so
-  /// the times are the very numbers an uninterrupted run computes; otherwise (deltaT or
-  /// startTime changed) they run from `time` in steps of deltaT, numbered on from `step`,
-  /// the last one ending exactly at endTime. Throws InputError (deltaT) past maxSteps.
+  /// step end of this controlDict (startTime + k deltaT; with deltaTGrowth or times, the k-th
+  /// end of that sequence) the steps continue on it, so the times are the very numbers an
+  /// uninterrupted run computes. Otherwise (deltaT, deltaTGrowth, times, endTime or startTime
+  /// changed) the steps are numbered on from `step` and, uniform, run from `time` in steps
+  /// of deltaT, the last one ending exactly at endTime; geometric or listed, they end at the
+  /// ends of this controlDict's sequence that lie after `time` (the first step may be
+  /// shorter; steps do not start growing again from deltaT). Throws InputError (deltaT)
+  /// past maxSteps.
   long continueAfter(double time, long step);
 
   /// Number of the last step (it ends exactly at endTime; it may be shorter than deltaT).
@@ -66,10 +86,31 @@ class TimeControl {
   int timePrecision() const { return timePrecision_; }
   /// "timePrecision raised to N ..." when it was raised, else "".
   std::string precisionNote() const;
+  /// One line for the log: "steps: 40, deltaT 1 growing by 1.2 per step to 1.47e3 (last)".
+  std::string describe() const;
 
  private:
   /// Count the steps from origin_ and choose timePrecision_ (InputError on deltaT).
   void plan();
+  /// plan() of the geometric and listed steps: timePrecision_ from every step of the run.
+  void planSequence();
+  /// Geometric: the step after which steps are maxDeltaT long, and the sequence's last end.
+  void setUpSequence();
+  /// The j-th step end of the sequence from startTime (end(0) = startTime), not clamped to
+  /// endTime; geometric or listed only.
+  double end(long j) const;
+  /// end(j), endTime from the last end on.
+  double endClamped(long j) const { return j >= lastEnd_ ? endTime_ : end(j); }
+  /// Length of step j of the sequence, j ≥ 1 (not clamped): the scale of round-off there.
+  double stepLength(long j) const { return end(j) - end(j - 1); }
+  /// Where time t falls in the sequence, as a real index (geometric: the inverse of end()).
+  double index(double t) const;
+  /// The smallest j in [0, lastEnd_] with endClamped(j) ≥ t (lastEnd_ if none).
+  long firstEndFrom(double t) const;
+  /// "key 'deltaT'" or "key 'times'": the key an error about the steps names.
+  std::string stepsKey() const;
+
+  static constexpr double never = std::numeric_limits<double>::infinity();
 
   double startTime_ = 0, endTime_ = 1, deltaT_ = 1;
   double origin_ = 0;    ///< time at the end of step originStep_ (startTime, or a restart time)
@@ -82,6 +123,15 @@ class TimeControl {
   int writePrecision_ = 8, timePrecisionAsked_ = 6, timePrecision_ = 6;
   bool writeVTK_ = true;
   SourceLocation deltaTWhere_;  ///< for errors found after reading (a restart)
+
+  Steps mode_ = Steps::uniform;
+  double growth_ = 1, maxDeltaT_ = never;
+  double lnGrowth_ = 0;        ///< log(deltaTGrowth), computed once
+  std::vector<double> times_;  ///< listed: the step ends
+  long capStep_ = 0;           ///< geometric: steps after this one are maxDeltaT long
+  long lastEnd_ = 1;           ///< geometric or listed: the index of endTime in the sequence
+  long offset_ = 0;            ///< geometric or listed: step k ends at end(k + offset_)
+  double noteGap_ = 0, noteTime_ = 0;  ///< the step that raised timePrecision the most
 };
 
 }  // namespace friction
