@@ -785,6 +785,17 @@ long FrictionCase::restart(std::ostream& log) {
                              " values, expected one per fracture node (" +
                              std::to_string(system_->size()) + ")");
   }
+  // The effects' states (faultPressure's computed diffusion), as writeTimeFolder() wrote them.
+  const Dictionary* effectStates = st.findDict("effects");
+  for (const auto& e : effects_) {
+    if (!e->hasState()) continue;
+    if (!effectStates || !effectStates->isDict(e->name()))
+      throw InputError(st.location(),
+                       "no state of effect '" + e->name() + "' (effects/" + e->name() +
+                           "): this folder was written by a run without it; start again "
+                           "(frictionSolver -overwrite)");
+    e->readState(effectStates->subDict(e->name()), t0);
+  }
   st.checkAllRead();
   slip_ = Eigen::Map<const Eigen::VectorXd>(slip.data(), expected);
   lastBeta_.resize(expected + static_cast<Eigen::Index>(opening.size()));
@@ -830,6 +841,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   else
     trimOutputs([](const std::string&) { return false; }, true);
   if (!time_->precisionNote().empty()) log << time_->precisionNote() << "\n\n";
+  if (time_->steps() != TimeControl::Steps::uniform) log << "Time: " << time_->describe() << "\n\n";
   Eigen::VectorXd& lastBeta = lastBeta_;
   const std::string controlDict = (fs::path(caseDir_) / "system" / "controlDict").string();
   auto controlStamp = fs::last_write_time(controlDict);
@@ -844,6 +856,9 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     const long solves0 = sys.factorization().numSolves();
 
     bcs_->setValues(sys.dirichlet(), r.time);
+    // Effects with a state of their own (the fault's computed diffusion) advance to the step's
+    // time first: the loads and pressures below are those of that time.
+    for (const auto& e : effects_) e->advance(r.time);
     const Eigen::VectorXd load = loadVector(r.time);
     const Eigen::VectorXd pressure = fracturePressure(r.time);
     // Only what changed is recomputed: a step whose loads equal the previous step's has the
@@ -1274,6 +1289,17 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   if (opening_)
     state.entry("opening",
                 std::vector<double>(beta.data() + slip_.size(), beta.data() + beta.size()));
+  // Effects with a state (faultPressure's computed diffusion), one sub-dictionary each.
+  if (std::any_of(effects_.begin(), effects_.end(), [](const auto& e) { return e->hasState(); })) {
+    state.beginDict("effects");
+    for (const auto& e : effects_) {
+      if (!e->hasState()) continue;
+      state.beginDict(e->name());
+      e->writeState(state);
+      state.endDict();
+    }
+    state.endDict();
+  }
   state.writeAtomic(folder.file("uniform/frictionState"));
 
   // The VTK files first: the rename of the time folder commits the time. A run killed before
