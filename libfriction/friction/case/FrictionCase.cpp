@@ -313,6 +313,25 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     if (!law.mu().isConstant() && !on.empty()) range("frictionCoefficient", mu, "");
     if (!law.cohesion().isConstant() && !on.empty()) range(law.cohesionKey().c_str(), c, " Pa");
   }
+  // The rock's shear modulus G at each fracture (the seismic moment's): the mean over the
+  // cells that touch it (the material's G when it is uniform).
+  shearModulus_.assign(split_.fractures.size(), 0.0);
+  for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
+    const FractureGeometry& g = split_.fractures[f];
+    std::vector<char> on(split_.mesh.points.size(), 0);
+    for (Index v : g.plus) on[static_cast<std::size_t>(v)] = 1;
+    for (Index v : g.minus) on[static_cast<std::size_t>(v)] = 1;
+    double sum = 0;
+    long count = 0;
+    for (Index c = 0; c < split_.mesh.numCells(); ++c)
+      for (Index v : split_.mesh.cell(c))
+        if (on[static_cast<std::size_t>(v)]) {
+          sum += materials_->ofCell(c).mu();
+          ++count;
+          break;
+        }
+    shearModulus_[f] = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  }
   // Effects that vary along the fractures (faultPressure's fields) are evaluated at the
   // control nodes once, here, and checked node by node.
   {
@@ -737,6 +756,60 @@ void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& ke
   }
   writeTextAtomic(path, text);
   history_ = std::make_unique<AppendFile>(path, false);
+
+  // Per fracture, the rupture's history (history_<name>.dat): trimmed by the same rule.
+  fractureHistories_.clear();
+  for (const auto& g : split_.fractures) {
+    const std::string file = (post / ("history_" + g.name + ".dat")).string();
+    std::string kept;
+    if (!fresh) {
+      std::ifstream in(file);
+      for (std::string line; std::getline(in, line);) {
+        const std::string first = line.substr(0, line.find(' '));
+        if (!line.empty() && line[0] != '#' && keep(first)) kept += line + "\n";
+      }
+    }
+    writeTextAtomic(file, historyHeader() + kept);
+    fractureHistories_.push_back(std::make_unique<AppendFile>(file, false));
+  }
+}
+
+std::string FrictionCase::historyHeader() const {
+  return split_.mesh.dim == 3
+             ? "# time slippingArea maxSlip moment magnitude\n"
+               "# per step: slippingArea [m2] of the nodes in state slip, maxSlip [m] the largest "
+               "|slip|, moment M0 = G * integral of |slip| dA [N m], magnitude Mw = (2/3) "
+               "(log10 M0 - 9.1) (nan while M0 = 0)\n"
+             : "# time slippingLength maxSlip moment\n"
+               "# per step: slippingLength [m] of the nodes in state slip, maxSlip [m] the "
+               "largest |slip|, moment M0 = G * integral of |slip| ds [N m per m out of the "
+               "plane]\n";
+}
+
+std::string FrictionCase::historyLine(std::size_t f, double t) const {
+  const auto& nodes = system_->controlNodes();
+  const int kb = system_->blockSize();
+  double slipping = 0, maxSlip = 0, moment = 0;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    if (nodes[k].fracture != static_cast<int>(f)) continue;
+    const double w = system_->weights()[static_cast<Eigen::Index>(k)];
+    const double slip = blockNorm(slip_.segment(kb * static_cast<Eigen::Index>(k), kb));
+    if (nodeState(static_cast<Eigen::Index>(k)) == "slip") slipping += w;
+    maxSlip = std::max(maxSlip, slip);
+    moment += shearModulus_[f] * slip * w;
+  }
+  std::ostringstream line;
+  line.precision(time_->writePrecision());
+  line << time_->timeName(t) << " " << slipping << " " << maxSlip << " " << moment;
+  if (split_.mesh.dim == 3) {
+    // Hanks & Kanamori (1979): Mw = (2/3)(log10 M0 − 9.1), M0 in N m.
+    if (moment > 0)
+      line << " " << 2.0 / 3.0 * (std::log10(moment) - 9.1);
+    else
+      line << " nan";
+  }
+  line << "\n";
+  return line.str();
 }
 
 long FrictionCase::restart(std::ostream& log) {
@@ -949,6 +1022,8 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       lines << time_->timeName(r.time) << " " << h.iteration << " " << h.J << " " << h.relResidual
             << " " << std::max(h.stepNorm, 0.0) << "\n";
     if (history_) history_->append(lines.str());  // rank 0's only
+    for (std::size_t f = 0; f < fractureHistories_.size(); ++f)
+      fractureHistories_[f]->append(historyLine(f, r.time));
 
     // Stop requests: the user edited stopAt in controlDict, or sent SIGINT/SIGTERM.
     std::error_code stampError;
@@ -1320,6 +1395,7 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
                 vtkFractures, precision, sigma0);
   }
   if (history_) history_->sync();
+  for (const auto& h : fractureHistories_) h->sync();
   folder.commit();
 }
 

@@ -177,6 +177,13 @@ class FrictionCase {
   double diameter_ = 0;                  ///< diagonal of the mesh's bounding box [m]
   std::unique_ptr<VtkSeries> vtk_;       ///< ParaView files, when controlDict's writeVTK is on
   std::unique_ptr<AppendFile> history_;  ///< postProcessing/convergence.dat
+  /// postProcessing/history_<name>.dat per fracture: the rupture's size, slip and moment per
+  /// step (historyLine()).
+  std::vector<std::unique_ptr<AppendFile>> fractureHistories_;
+  std::vector<double> shearModulus_;  ///< per fracture: G of the rock around it [Pa]
+  std::string historyHeader() const;
+  /// Fracture f's line of its history file for the step just solved (time t).
+  std::string historyLine(std::size_t f, double t) const;
   bool outputPrepared_ = false;
   /// Restart: read the state of the newest complete time folder, trim the outputs after it;
   /// returns the first step to compute.
