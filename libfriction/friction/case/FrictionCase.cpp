@@ -1004,6 +1004,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
                 -effective);
     }
     if (!r.reused) judgeStep(r);
+    if (!r.reused) sanityNotes(log);
     if (r.nonFinite) {
       // Nothing non-finite reaches the disk, and later steps would start from it: stop here.
       log << "Time = " << time_->timeName(r.time) << "  iterations " << r.report.iterations << "  "
@@ -1103,6 +1104,46 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     }
   }
   return results;
+}
+
+void FrictionCase::sanityNotes(std::ostream& log) {
+  // Once per run each: answers that are most likely a case typed wrong (a pressure above
+  // every confining stress, a gradient of the wrong sign), said before the step's line.
+  const FractureSystem& sys = *system_;
+  const auto& nodes = sys.controlNodes();
+  for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
+    if (allOpenNoted_.size() <= f) allOpenNoted_.resize(split_.fractures.size(), 0);
+    if (allOpenNoted_[f]) continue;
+    long inner = 0, open = 0;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (nodes[k].fracture != static_cast<int>(f) || nodes[k].tip) continue;
+      ++inner;
+      if (nodeState(static_cast<Eigen::Index>(k)) == "open") ++open;
+    }
+    if (inner > 0 && open == inner) {
+      allOpenNoted_[f] = 1;
+      log << "Note: every node of fracture " << split_.fractures[f].name
+          << " is open (sigma'_n = sigma_n + p >= 0 everywhere on it): the fluid pressure "
+             "exceeds the confinement on the whole fracture, or the stresses pull it apart; "
+             "check the pressure and the stresses' signs and units\n";
+    }
+  }
+  if (largeDisplacementNoted_ || diameter_ <= 0) return;
+  const Eigen::VectorXd u = sys.lastSplitDisplacement();
+  const LagrangeSpace& space = sys.splitSpace();
+  double largest = 0;
+  for (Index i = 0; i < space.numNodes(); ++i) {
+    double norm2 = 0;
+    for (int c = 0; c < sys.dimension(); ++c) norm2 += std::pow(u[space.dof(i, c)], 2);
+    largest = std::max(largest, std::sqrt(norm2));
+  }
+  if (largest > diameter_) {
+    largeDisplacementNoted_ = true;
+    log << std::setprecision(3) << "Note: the displacement reaches " << largest
+        << " m, more than the body's size (" << diameter_
+        << " m): check the loads' signs and units (e.g. a stress gradient of the wrong sign, "
+           "a pressure in the wrong unit)\n";
+  }
 }
 
 void FrictionCase::judgeStep(StepResult& r) const {

@@ -128,6 +128,11 @@ class FrictionCase {
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.
   void judgeStep(StepResult& r) const;
   void findFloatingParts();
+  /// Log, once per run each, a note where the answer is most likely a case typed wrong: every
+  /// node of a fracture open, a displacement beyond the body's size.
+  void sanityNotes(std::ostream& log);
+  std::vector<char> allOpenNoted_;
+  bool largeDisplacementNoted_ = false;
   /// Mean length of the fracture edges [m] (0 without fractures): the h of γ's default.
   double meanFractureEdge() const;
   Eigen::VectorXd loadVector(double t) const;
