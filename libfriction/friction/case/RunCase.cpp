@@ -56,7 +56,7 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     Keep keep{kept, owned};
     // An earlier run's time folders are refused, continued (startFrom latestTime) or, with
     // -overwrite, removed: before any work.
-    c.prepareOutput(options.overwrite, log);
+    c.prepareOutput(options.overwrite, log, options.overwriteHint);
     parallel::barrier();  // rank 0 has removed what -overwrite removes
 
     // 3. Assemble and factor once.

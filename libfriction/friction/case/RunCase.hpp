@@ -17,6 +17,8 @@ struct RunCaseOptions {
   bool overwrite = false;
   /// The program that names itself in the log's first line and in error messages.
   std::string program = "frictionSolver";
+  /// How the caller asks for `overwrite`, for the messages that suggest it.
+  std::string overwriteHint = "frictionSolver -overwrite";
 };
 
 /// Runs the case in caseDir; the log goes to `log`, errors to `err` as
