@@ -88,10 +88,12 @@ sameOutputs() {
 
 # snapshot [CASE]: every folder, and every file with its size, modification time and checksum
 # (the logs aside): equal before and after a run that must change nothing, rewrites included.
+# datedBack [CASE]: the files dated back to 2001 first, so that a rewrite shows in its time.
 snapshot() {
   (cd "${1:-$c}" && find . ! -name 'log.*' \( -type d -printf '%p/\n' -o -printf '%p %s %T@\n' \) | sort &&
     find . -type f ! -name 'log.*' -exec md5sum {} + | sort)
 }
+datedBack() { find "${1:-$c}" -type f ! -name 'log.*' -exec touch -d @1000000000 {} +; }
 
 # reference STEPS [WRITE_INTERVAL]: an uninterrupted run in $work/reference/case
 reference() {
@@ -419,8 +421,8 @@ foreignFolders)
   # After the newest complete time: the next time's name with notes, and an empty folder.
   mkdir "$c/0.625" "$c/0.75"
   echo notes >"$c/0.625/notes.txt"
+  datedBack
   before=$(snapshot)
-  sleep 1.1  # a rewrite within the same second would keep the mtimes
   solve "$c" "$c/log.2"
   ((rc == 1)) || fail "a user's folder after the restart time: exit $rc, expected 1: $(tail -2 "$c/log.2")"
   for e in "$c/0.625" "0.625, 0.75" "notes.txt" "no uniform/frictionState" "move them out"; do
@@ -437,6 +439,7 @@ foreignFolders)
   mv "$c/0.625/notes.txt" "$c/0.25/notes.txt"
   rmdir "$c/0.625"
   # A user's file in a solver's time folder: -overwrite refuses, naming the file.
+  datedBack
   before=$(snapshot)
   solve "$c" "$c/log.4" -overwrite
   ((rc == 1)) || fail "-overwrite over a user's file: exit $rc, expected 1: $(tail -2 "$c/log.4")"
@@ -470,6 +473,7 @@ restartMismatch)
   # 1. An earlier time copied to a later name (cp -r 0.25 0.75), and the newest folder's state
   # edited to an earlier time: both refused, naming the folder, the time recorded and the way out.
   cp -r "$c/0.25" "$c/0.75"
+  datedBack "$c"
   before=$(snapshot "$c")
   solve "$c" "$c/log.2"
   ((rc == 1)) || fail "a copied time folder: exit $rc, expected 1: $(tail -2 "$c/log.2")"
@@ -488,8 +492,8 @@ restartMismatch)
   # 2. endTime before the saved time, or at it: nothing to compute, said why, nothing rewritten.
   for end in 0.375 0.5; do
     setKey "$c" endTime $end
+    datedBack "$c"
     before=$(snapshot "$c")
-    sleep 1.1  # a rewrite within the same second would keep the mtimes
     solve "$c" "$c/log.4"
     ((rc == 0)) || fail "endTime $end below the saved time: exit $rc, expected 0: $(tail -2 "$c/log.4")"
     grep -qF "nothing is left to compute: endTime $end (system/controlDict) is at or before the saved time 0.5; raise endTime" "$c/log.4" ||
@@ -527,8 +531,8 @@ caseLock)
   trap 'kill $holder 2>/dev/null' EXIT
   for owner in "$holder $(hostname) frictionSolver" "4242 elsewhere.example frictionSolver"; do
     echo "$owner" >"$c/.frictionSolver.lock"
+    datedBack
     before=$(snapshot)
-    sleep 1.1
     solve "$c" "$c/log.2" -overwrite
     ((rc == 1)) || fail "[$owner] a locked case: exit $rc, expected 1: $(tail -2 "$c/log.2")"
     grep -qF "$c/.frictionSolver.lock" "$c/log.2" && grep -qF "process ${owner%% *} on host" "$c/log.2" ||
