@@ -9,7 +9,8 @@
 // |D|/|Sigma|, max(ST − μ_f, 0), status) and End; writes time folders <t>/D,
 // <t>/fractures/<name>.dat, <t>/solverStatus and postProcessing/convergence.dat.
 //
-// Exit codes: 0 every step converged; 1 bad input (file:line and what was expected);
+// Exit codes: 0 every step converged; 1 bad input (file:line and what was expected), or a
+// case it refuses to touch (locked by another run, folders it did not write; nothing written);
 // 2 bad command line; 3 some step did not converge, was inaccurate or diverged (see the log);
 // 4 the factorisation failed (the log says why); 5 stopped by SIGINT/SIGTERM (after writing
 // the current step, or at once on a second signal, without writing it); 6 an output or system

@@ -431,6 +431,7 @@ AnyType FrictionSolve<d, withField>::operator()(Stack stack) const {
   friction::RunCaseOptions how;
   how.overwrite = nargs[0] ? GetAny<bool>((*nargs[0])(stack)) : false;
   how.program = program;
+  how.overwriteHint = "frictionSolve(\"" + dir + "\", overwrite = true)";
   const std::string fracture = nargs[1] ? *GetAny<string*>((*nargs[1])(stack)) : "";
   KNM<double>* table = nargs[2] ? GetAny<KNM<double>*>((*nargs[2])(stack)) : nullptr;
   KN<double>* slip = nargs[3] ? GetAny<KN<double>*>((*nargs[3])(stack)) : nullptr;

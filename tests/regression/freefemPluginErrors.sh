@@ -85,5 +85,25 @@ scenario otherMesh "holds another mesh than the one given to frictionSplit" \
   "mkdir -p constant/mesh && cp \"\$src/cases/paperBenchmark/constant/mesh/square.msh\" constant/mesh/" \
   'mesh Ths = frictionSplit(Th, ".");'
 
+# A second run over the time folders of a first, without overwrite = true: refused, and the
+# message names the plug-in's way to start again, not the command line's.
+scenario secondSolve 'frictionSolve(".", overwrite = true)' \
+  "mkdir -p constant/mesh && cp \"\$src/cases/paperBenchmark/constant/mesh/square.msh\" constant/mesh/ &&
+   \"\$bin/splitFractureNodes\" -case . >/dev/null && \"\$bin/frictionSolver\" -case . >/dev/null" \
+  'int s = frictionSolve(".");'
+if grep -q "frictionSolver -overwrite" "$work/secondSolve/log.bad"; then
+  echo "FAIL: secondSolve: the message tells a script user to run frictionSolver -overwrite" >&2
+  failures=$((failures + 1))
+fi
+# A case locked by a living run (here a sleeping process named in the lock file): frictionSolve
+# takes the lock as frictionSolver does, and is refused before anything is written.
+sleep 300 >/dev/null 2>&1 &
+holder=$!
+trap 'kill $holder 2>/dev/null' EXIT
+scenario locked "the case is in use: frictionSolver (process $holder on host" \
+  "mkdir -p constant/mesh && cp \"\$src/cases/paperBenchmark/constant/mesh/square.msh\" constant/mesh/ &&
+   \"\$bin/splitFractureNodes\" -case . >/dev/null && echo \"$holder \$(hostname) frictionSolver\" >.frictionSolver.lock" \
+  'int s = frictionSolve(".", overwrite = true);'
+
 ((failures == 0)) || { echo "$failures scenario(s) failed" >&2; exit 1; }
 echo "PASS"

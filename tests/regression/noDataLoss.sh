@@ -86,6 +86,15 @@ sameOutputs() {
   [[ -z $(cd "$c" && find . -name '.?*') ]] || fail "leftovers: $(cd "$c" && find . -name '.?*')"
 }
 
+# snapshot [CASE]: every folder, and every file with its size, modification time and checksum
+# (the logs aside): equal before and after a run that must change nothing, rewrites included.
+# datedBack [CASE]: the files dated back to 2001 first, so that a rewrite shows in its time.
+snapshot() {
+  (cd "${1:-$c}" && find . ! -name 'log.*' \( -type d -printf '%p/\n' -o -printf '%p %s %T@\n' \) | sort &&
+    find . -type f ! -name 'log.*' -exec md5sum {} + | sort)
+}
+datedBack() { find "${1:-$c}" -type f ! -name 'log.*' -exec touch -d @1000000000 {} +; }
+
 # reference STEPS [WRITE_INTERVAL]: an uninterrupted run in $work/reference/case
 reference() {
   makeCase "$work/reference" "$1"
@@ -394,6 +403,209 @@ timeArithmetic)
     echo "[$keys] $steps steps, $steps folders: $(echo $folders | cut -c1-60)..."
     rm -rf "$work/names"
   done
+  ;;
+foreignFolders)
+  # Nothing the solver did not write is removed or replaced (issue 26, 7): a user's folder
+  # under a time's name after the newest complete time (a restart would write over it), a
+  # user's file in a solver's time folder (-overwrite would remove it). Both are refused, named,
+  # and the case is left as it was; a user's folder before the restart time, and a file in the
+  # folder the restart starts from, stay where they are while the run goes on.
+  makeCase "$work/user" 8
+  c=$work/user/case
+  setKey "$c" writeInterval 1
+  setKey "$c" endTime 0.5
+  solve "$c" "$c/log.1"
+  ((rc == 0)) || fail "first half failed: $(tail -3 "$c/log.1")"
+  setKey "$c" endTime 1
+  setKey "$c" startFrom latestTime
+  # After the newest complete time: the next time's name with notes, and an empty folder.
+  mkdir "$c/0.625" "$c/0.75"
+  echo notes >"$c/0.625/notes.txt"
+  datedBack
+  before=$(snapshot)
+  solve "$c" "$c/log.2"
+  ((rc == 1)) || fail "a user's folder after the restart time: exit $rc, expected 1: $(tail -2 "$c/log.2")"
+  for e in "$c/0.625" "0.625, 0.75" "notes.txt" "no uniform/frictionState" "move them out"; do
+    grep -qF -- "$e" "$c/log.2" || fail "the refusal does not say '$e': $(tail -2 "$c/log.2")"
+  done
+  [[ $(snapshot) == "$before" ]] || fail "the refused restart changed the case"
+  # -overwrite does not remove them either (one error names the folder and its file).
+  solve "$c" "$c/log.3" -overwrite
+  ((rc == 1)) || fail "-overwrite over a user's folder: exit $rc, expected 1: $(tail -2 "$c/log.3")"
+  grep -qF "$c/0.625: not removed by frictionSolver -overwrite" "$c/log.3" &&
+    grep -qF "notes.txt" "$c/log.3" || fail "-overwrite's refusal does not name the folder and file: $(tail -2 "$c/log.3")"
+  [[ $(snapshot) == "$before" ]] || fail "the refused -overwrite changed the case"
+  rmdir "$c/0.75"
+  mv "$c/0.625/notes.txt" "$c/0.25/notes.txt"
+  rmdir "$c/0.625"
+  # A user's file in a solver's time folder: -overwrite refuses, naming the file.
+  datedBack
+  before=$(snapshot)
+  solve "$c" "$c/log.4" -overwrite
+  ((rc == 1)) || fail "-overwrite over a user's file: exit $rc, expected 1: $(tail -2 "$c/log.4")"
+  grep -qF "$c/0.25: not removed" "$c/log.4" && grep -qF "'notes.txt'" "$c/log.4" ||
+    fail "-overwrite's refusal does not name 0.25 and notes.txt: $(tail -2 "$c/log.4")"
+  [[ $(snapshot) == "$before" ]] || fail "the refused -overwrite changed the case"
+  # Before the restart time: a user's folder (0.3) and a file in the folder restarted from.
+  mkdir "$c/0.3"
+  echo notes >"$c/0.3/notes.txt"
+  echo notes >"$c/0.5/notes.txt"
+  solve "$c" "$c/log.5"
+  ((rc == 0)) || fail "a restart with a user's folder before it: exit $rc: $(tail -2 "$c/log.5")"
+  [[ -f $c/1/uniform/frictionState ]] || fail "the restart did not reach time 1"
+  for f in 0.3 0.25 0.5; do
+    [[ $(cat "$c/$f/notes.txt") == notes ]] || fail "$f/notes.txt is gone"
+  done
+  ;;
+restartMismatch)
+  # A restart from a folder whose name is not the time of its state is refused (issue 26, 5);
+  # an endTime at or before the saved time computes and rewrites nothing; a case continued in a
+  # copy under another folder name keeps one ParaView series.
+  reference 8 1
+  makeCase "$work/copied" 8
+  c=$work/copied/case
+  setKey "$c" writeInterval 1
+  setKey "$c" endTime 0.5
+  solve "$c" "$c/log.1"
+  ((rc == 0)) || fail "first half failed: $(tail -3 "$c/log.1")"
+  setKey "$c" endTime 1
+  setKey "$c" startFrom latestTime
+  # 1. An earlier time copied to a later name (cp -r 0.25 0.75), and the newest folder's state
+  # edited to an earlier time: both refused, naming the folder, the time recorded and the way out.
+  cp -r "$c/0.25" "$c/0.75"
+  datedBack "$c"
+  before=$(snapshot "$c")
+  solve "$c" "$c/log.2"
+  ((rc == 1)) || fail "a copied time folder: exit $rc, expected 1: $(tail -2 "$c/log.2")"
+  for e in "$c/0.75/uniform/frictionState" "time 0.25 (step 2)" "folder's time 0.75" "Remove the folder 0.75"; do
+    grep -qF -- "$e" "$c/log.2" || fail "the refusal does not say '$e': $(tail -2 "$c/log.2")"
+  done
+  [[ $(snapshot "$c") == "$before" ]] || fail "the refused restart changed the case"
+  rm -rf "$c/0.75"
+  cp "$c/0.5/uniform/frictionState" "$work/state"
+  sed -i 's/^time .*/time 0.375;/' "$c/0.5/uniform/frictionState"
+  solve "$c" "$c/log.3"
+  ((rc == 1)) || fail "a state of another time: exit $rc, expected 1: $(tail -2 "$c/log.3")"
+  grep -qF "$c/0.5/uniform/frictionState" "$c/log.3" && grep -qF "time 0.375" "$c/log.3" ||
+    fail "the refusal does not name 0.5 and time 0.375: $(tail -2 "$c/log.3")"
+  cp "$work/state" "$c/0.5/uniform/frictionState"
+  # 2. endTime before the saved time, or at it: nothing to compute, said why, nothing rewritten.
+  for end in 0.375 0.5; do
+    setKey "$c" endTime $end
+    datedBack "$c"
+    before=$(snapshot "$c")
+    solve "$c" "$c/log.4"
+    ((rc == 0)) || fail "endTime $end below the saved time: exit $rc, expected 0: $(tail -2 "$c/log.4")"
+    grep -qF "nothing is left to compute: endTime $end (system/controlDict) is at or before the saved time 0.5; raise endTime" "$c/log.4" ||
+      fail "endTime $end: the log does not say why nothing is computed: $(grep Restarting "$c/log.4")"
+    ! grep -q "^Time = " "$c/log.4" || fail "endTime $end: steps were computed"
+    [[ $(snapshot "$c") == "$before" ]] || fail "endTime $end: files were rewritten"
+  done
+  setKey "$c" endTime 1
+  # 3. Continued in a copy named otherwise: the series goes on under its first name (the log
+  # says so), and the outputs are the uninterrupted run's, one .pvd with every time.
+  mkdir -p "$work/renamed"
+  cp -r "$c" "$work/renamed/copy"
+  rm "$work/renamed/copy"/log.*
+  solve "$work/renamed/copy" "$work/renamed/copy/log.frictionSolver"
+  ((rc == 0)) || fail "the renamed copy's restart failed: $(tail -2 "$work/renamed/copy/log.frictionSolver")"
+  grep -qF "VTK: the earlier times are in VTK/case.pvd" "$work/renamed/copy/log.frictionSolver" ||
+    fail "the log does not say under which name the VTK series goes on"
+  [[ -z $(ls "$work/renamed/copy/VTK" | grep copy) ]] || fail "VTK files under the copy's name: $(ls "$work/renamed/copy/VTK")"
+  sameOutputs "$work/reference/case" "$work/renamed/copy"
+  ;;
+caseLock)
+  # One run at a time in a case (issue 26, 6): a lock held by a living process refuses the
+  # run before anything is written or removed (-overwrite included), naming the owner; one
+  # left by a process that is gone is taken over; it is removed at the end, on SIGTERM before
+  # the time loop and within it. Two real runs: the second is refused while the first lives.
+  reference 20
+  makeCase "$work/locked" 20
+  c=$work/locked/case
+  solve "$c" "$c/log.1"
+  ((rc == 0)) || fail "first run failed"
+  [[ ! -e $c/.frictionSolver.lock ]] || fail "the lock outlived the run"
+  # 1. Held by a living process of this host (a sleeping one), or a process of another host.
+  sleep 300 >/dev/null 2>&1 &
+  holder=$!
+  trap 'kill $holder 2>/dev/null' EXIT
+  for owner in "$holder $(hostname) frictionSolver" "4242 elsewhere.example frictionSolver"; do
+    echo "$owner" >"$c/.frictionSolver.lock"
+    datedBack
+    before=$(snapshot)
+    solve "$c" "$c/log.2" -overwrite
+    ((rc == 1)) || fail "[$owner] a locked case: exit $rc, expected 1: $(tail -2 "$c/log.2")"
+    grep -qF "$c/.frictionSolver.lock" "$c/log.2" && grep -qF "process ${owner%% *} on host" "$c/log.2" ||
+      fail "[$owner] the refusal does not name the lock and its owner: $(tail -2 "$c/log.2")"
+    [[ $(snapshot) == "$before" ]] || fail "[$owner] the refused run changed the case (-overwrite removed files?)"
+  done
+  # 2. The holder is gone: taken over, and the run goes on.
+  kill $holder
+  wait $holder 2>/dev/null
+  echo "$holder $(hostname) frictionSolver" >"$c/.frictionSolver.lock"
+  solve "$c" "$c/log.3" -overwrite
+  ((rc == 0)) || fail "a stale lock: exit $rc, expected 0: $(tail -2 "$c/log.3")"
+  grep -qF "was left by frictionSolver (process $holder" "$c/log.3" && grep -qF "taken over" "$c/log.3" ||
+    fail "the log does not say the stale lock was taken over"
+  [[ ! -e $c/.frictionSolver.lock ]] || fail "the lock outlived the run"
+  sameOutputs "$work/reference/case" "$c"
+  # 3. Two real runs: the second starts while the first (stopped by SIGSTOP once it holds the
+  # lock, so that it cannot end first) lives; it is refused, and the first ends as a clean run.
+  "$bin/frictionSolver" -case "$c" -overwrite >"$c/log.4" 2>&1 &
+  first=$!
+  for _ in $(seq 1000); do grep -q "^$first " "$c/.frictionSolver.lock" 2>/dev/null && break; sleep 0.005; done
+  kill -STOP $first
+  grep -q "^$first " "$c/.frictionSolver.lock" || { kill -KILL $first; fail "the first run never held the lock"; }
+  solve "$c" "$c/log.5" -overwrite
+  rcSecond=$rc
+  kill -CONT $first
+  wait $first
+  rcFirst=$?
+  ((rcSecond == 1)) || fail "the second run: exit $rcSecond, expected 1: $(tail -2 "$c/log.5")"
+  grep -qF "is running in it" "$c/log.5" && grep -qF "process $first on host" "$c/log.5" ||
+    fail "the second run's refusal does not name the first: $(tail -2 "$c/log.5")"
+  ((rcFirst == 0)) || fail "the first run: exit $rcFirst: $(tail -2 "$c/log.4")"
+  sameOutputs "$work/reference/case" "$c"
+  # 4. SIGTERM as soon as the lock is taken (before the time loop, or within it) and SIGKILL:
+  # the lock goes with the run, or is taken over by the next.
+  for sig in TERM KILL; do
+    "$bin/frictionSolver" -case "$c" -overwrite >"$c/log.6" 2>&1 &
+    pid=$!
+    for _ in $(seq 1000); do grep -q "^$pid " "$c/.frictionSolver.lock" 2>/dev/null && break; sleep 0.001; done
+    kill -$sig $pid
+    wait $pid
+    rc=$?
+    ((rc != 0)) || fail "SIG$sig: the run ended before the signal: nothing was tested"
+    if [[ $sig == TERM ]]; then
+      [[ ! -e $c/.frictionSolver.lock ]] || fail "SIGTERM (exit $rc): the lock outlived the run"
+    else
+      [[ -e $c/.frictionSolver.lock ]] || fail "SIGKILL: no lock left: nothing was tested"
+    fi
+  done
+  solve "$c" "$c/log.7" -overwrite
+  ((rc == 0)) || fail "after SIGKILL: exit $rc: $(tail -2 "$c/log.7")"
+  grep -qF "taken over" "$c/log.7" || fail "after SIGKILL: the lock was not taken over"
+  sameOutputs "$work/reference/case" "$c"
+  ;;
+parallelLock)
+  # On 2 ranks rank 0 holds the lock; a locked case ends both ranks with exit 1 and one
+  # message, at once (no rank waits for the other).
+  makeCase "$work/locked" 10
+  c=$work/locked/case
+  sleep 300 >/dev/null 2>&1 &
+  holder=$!
+  trap 'kill $holder 2>/dev/null' EXIT
+  echo "$holder $(hostname) frictionSolver" >"$c/.frictionSolver.lock"
+  timeout 60 "${launcher[@]}" "$bin/frictionSolver" -parallel -case "$c" >"$c/log.1" 2>&1
+  rc=$?
+  kill $holder
+  ((rc == 1)) || fail "a locked case on 2 ranks: exit $rc, expected 1: $(tail -3 "$c/log.1")"
+  (($(grep -c "is running in it" "$c/log.1") == 1)) || fail "expected one refusal: $(cat "$c/log.1")"
+  [[ -z $(timeFolders "$c") ]] || fail "time folders written"
+  rm "$c/.frictionSolver.lock"
+  solve "$c" "$c/log.2"
+  ((rc == 0)) || fail "the unlocked case on 2 ranks: exit $rc: $(tail -3 "$c/log.2")"
+  [[ ! -e $c/.frictionSolver.lock ]] || fail "the lock outlived the run"
   ;;
 *) fail "unknown scenario" ;;
 esac

@@ -54,6 +54,23 @@ bool timeOfName(const std::string& name, double& t) {
   return end != name.c_str() && *end == '\0';
 }
 
+/// Whether a time folder's name is the time t: as TimeControl::timeName writes t with some
+/// number of digits (the run that wrote it may have had another timePrecision), or, for a name
+/// typed by hand ("2.0"), within half a unit of the precision-th digit of t.
+bool nameReadsAs(const std::string& name, double t, int precision) {
+  for (int p = 1; p <= 17; ++p) {
+    std::ostringstream s;
+    s.precision(p);
+    s << t;
+    if (s.str() == name) return true;
+  }
+  double named = 0;
+  if (!timeOfName(name, named)) return false;
+  const double unit =
+      t == 0 ? 0.0 : std::pow(10.0, std::floor(std::log10(std::abs(t))) - precision + 1);
+  return std::abs(named - t) <= 0.5 * unit;
+}
+
 /// The time folders of a case (folders named as a number), by time.
 std::vector<std::pair<double, std::string>> timeFolders(const std::string& caseDir) {
   std::vector<std::pair<double, std::string>> folders;
@@ -693,22 +710,44 @@ Eigen::VectorXd FrictionCase::fracturePressure(double t) const {
   return p;
 }
 
-void FrictionCase::prepareOutput(bool overwrite, std::ostream& log) {
+void FrictionCase::prepareOutput(bool overwrite, std::ostream& log,
+                                 const std::string& overwriteHint) {
   outputPrepared_ = true;
+  overwriteHint_ = overwriteHint;
   std::vector<std::string> earlier;
   for (const auto& [t, name] : timeFolders(caseDir_))
     if (t > time_->startTime()) earlier.push_back(name);
   if (overwrite) {
+    // Only what the solver wrote is removed: every folder is checked before any is (on every
+    // rank, which all see the same folders, so that all refuse together).
+    for (const std::string& name : earlier) {
+      const std::string foreign =
+          TimeFolder::notWrittenBySolver((fs::path(caseDir_) / name).string());
+      if (!foreign.empty())
+        throw InputError((fs::path(caseDir_) / name).string(),
+                         "not removed by " + overwriteHint_ +
+                             ": this folder under a time's name was not written by "
+                             "frictionSolver (" +
+                             foreign +
+                             "), and what the solver did not write is never removed; move it "
+                             "out of the case, then run again");
+    }
     // Several ranks: rank 0 alone touches the files (the others wait at a barrier in main).
     if (!parallel::isMaster()) return;
     for (const std::string& name : earlier) {
+      // Out of sight first (one rename), then removed: a run killed in between leaves a
+      // hidden leftover that the next run removes, never a time folder half removed, which
+      // would look like a folder the solver did not write.
       std::error_code ec;
-      fs::remove_all(fs::path(caseDir_) / name, ec);
+      const fs::path doomed = fs::path(caseDir_) / ("." + name + ".old");
+      fs::remove_all(doomed, ec);
+      if (!ec) fs::rename(fs::path(caseDir_) / name, doomed, ec);
+      if (!ec) fs::remove_all(doomed, ec);
       if (ec)
         throw OutputError((fs::path(caseDir_) / name).string(),
                           "-overwrite cannot remove this time folder (" + ec.message() + ")");
     }
-    trimOutputs([](const std::string&) { return false; }, true);
+    trimOutputs([](const std::string&) { return false; }, true, log);
     log << "-overwrite: removed the earlier run's outputs ("
         << (earlier.empty() ? std::string("no time folder") : "time folders " + listNames(earlier))
         << ", VTK files, postProcessing/convergence.dat)\n";
@@ -719,17 +758,45 @@ void FrictionCase::prepareOutput(bool overwrite, std::ostream& log) {
                    "time folders of an earlier run exist after startTime " +
                        formatNumber(time_->startTime()) + ": " + listNames(earlier) +
                        "; frictionSolver does not overwrite them. Either continue that run with "
-                       "'startFrom latestTime;' in system/controlDict, or start again with "
-                       "'frictionSolver -overwrite', which first removes them, VTK/ and "
+                       "'startFrom latestTime;' in system/controlDict, or start again with '" +
+                       overwriteHint_ +
+                       "', which first removes them, VTK/ and "
                        "postProcessing/convergence.dat");
 }
 
-void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh) {
+void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh,
+                               std::ostream& log) {
   if (!parallel::isMaster()) return;  // rank 0 writes every output file
   TimeFolder::removeLeftovers(caseDir_);
   std::vector<std::string> fractureNames;
   for (const auto& g : split_.fractures) fractureNames.push_back(g.name);
-  auto vtk = std::make_unique<VtkSeries>(caseDir_);
+  // The VTK files carry the case folder's name. A case continued in a copy under another name
+  // (cp -r a b) has its earlier times' files named after 'a': a restart goes on under that
+  // name, so that ParaView's series (one .pvd) stays whole.
+  std::string seriesName;
+  {
+    const VtkSeries own(caseDir_);
+    std::error_code ec;
+    std::vector<std::string> others;
+    if (!fs::exists(own.pvdPath(), ec))
+      for (const auto& e : fs::directory_iterator(fs::path(caseDir_) / "VTK", ec))
+        if (e.path().extension() == ".pvd" && e.is_regular_file(ec))
+          others.push_back(e.path().stem().string());
+    std::sort(others.begin(), others.end());
+    if (!fresh && others.size() == 1) {
+      seriesName = others[0];
+      log << "VTK: the earlier times are in VTK/" << seriesName << ".pvd, named after the folder '"
+          << seriesName << "' this case was run in (this one is '" << own.caseName()
+          << "'): the series goes on under that name, so ParaView shows one series\n";
+    } else if (!others.empty()) {
+      std::vector<std::string> files;
+      for (const std::string& o : others) files.push_back("VTK/" + o + ".pvd");
+      log << "Note: VTK/ holds " << joinWords(files) << " of a folder of another name, left as "
+          << (others.size() == 1 ? "it is" : "they are") << "; this run's series is VTK/"
+          << own.caseName() << ".pvd\n";
+    }
+  }
+  auto vtk = std::make_unique<VtkSeries>(caseDir_, seriesName);
   vtk->resume(keep, fractureNames, time_->writePrecision());
   if (time_->writeVTK()) vtk_ = std::move(vtk);
 
@@ -815,16 +882,45 @@ std::string FrictionCase::historyLine(std::size_t f, double t) const {
 long FrictionCase::restart(std::ostream& log) {
   // The newest time folder that is complete: it has a state file (a folder appears only
   // whole, TimeFolder.hpp; a half-written one is still named .<time>.partial).
+  const auto folders = timeFolders(caseDir_);
   std::string folder;
-  for (const auto& [t, name] : timeFolders(caseDir_))
-    if (fs::exists(fs::path(caseDir_) / name / "uniform" / "frictionState")) folder = name;
+  double folderTime = time_->startTime();
+  for (const auto& [t, name] : folders)
+    if (fs::exists(fs::path(caseDir_) / name / "uniform" / "frictionState")) {
+      folder = name;
+      folderTime = std::max(folderTime, t);
+    }
+  // The run writes after that time: a folder there that the solver did not write (a user's,
+  // under a time's name) would be replaced. Nothing of the user's is removed: refused.
+  std::vector<std::string> foreign, why;
+  for (const auto& [t, name] : folders)
+    if (t > folderTime) {
+      const std::string reason =
+          TimeFolder::notWrittenBySolver((fs::path(caseDir_) / name).string());
+      if (reason.empty()) continue;
+      foreign.push_back(name);
+      why.push_back(name + ": " + reason);
+    }
+  if (!foreign.empty())
+    throw InputError(
+        (fs::path(caseDir_) / foreign[0]).string(),
+        "startFrom latestTime: time folder" + std::string(foreign.size() > 1 ? "s " : " ") +
+            listNames(foreign) + " after " +
+            (folder.empty() ? "startTime " + formatNumber(time_->startTime())
+                            : "the newest complete time folder " + folder) +
+            (foreign.size() > 1 ? " were" : " was") + " not written by frictionSolver (" +
+            joinWords(why) + "); the run would write its times over " +
+            (foreign.size() > 1 ? "them" : "it") +
+            ", and what the solver did not write is never removed or replaced: move " +
+            (foreign.size() > 1 ? "them" : "it") + " out of the case, then run again");
   if (folder.empty()) {
     log << "startFrom latestTime: no complete time folder yet, starting at startTime\n";
-    trimOutputs([](const std::string&) { return false; }, true);
+    trimOutputs([](const std::string&) { return false; }, true, log);
     return 1;
   }
-  const Dictionary st =
-      Dictionary::read((fs::path(caseDir_) / folder / "uniform" / "frictionState").string());
+  const std::string statePath =
+      (fs::path(caseDir_) / folder / "uniform" / "frictionState").string();
+  const Dictionary st = Dictionary::read(statePath);
   // k values per fracture node (k = 1 in 2D), node-major as writeTimeFolder() writes them.
   const std::vector<double> slip = st.getScalarList("slip");
   const std::vector<double> beta = st.getScalarList("lastIncrement");
@@ -845,7 +941,8 @@ long FrictionCase::restart(std::ostream& log) {
     st.fail("opening",
             "key 'opening': this folder was written by a run whose fractures could open "
             "(contact unilateral), and none may now: restore contact unilateral in "
-            "constant/fractureProperties, or start again (frictionSolver -overwrite)");
+            "constant/fractureProperties, or start again (" +
+                overwriteHint_ + ")");
   if (opening_) {
     if (!st.found("opening"))
       throw InputError(st.location(),
@@ -870,6 +967,17 @@ long FrictionCase::restart(std::ostream& log) {
     e->readState(effectStates->subDict(e->name()), t0);
   }
   st.checkAllRead();
+  // The folder's name must be the time its state records (to the digits of the name): a
+  // folder copied or renamed to a later name would restart an earlier state there, compute
+  // the times in between again and write over their folders.
+  if (!nameReadsAs(folder, t0, time_->timePrecision()))
+    throw InputError(statePath,
+                     "startFrom latestTime: this state is of time " + formatNumber(t0) + " (step " +
+                         std::to_string(step) + "), not of its folder's time " + folder +
+                         ": the folder was copied or renamed, and a restart from it would "
+                         "compute again the times after " +
+                         formatNumber(t0) + " and write over their folders. Remove the folder " +
+                         folder + " or move it out of the case, then run again");
   slip_ = Eigen::Map<const Eigen::VectorXd>(slip.data(), expected);
   lastBeta_.resize(expected + static_cast<Eigen::Index>(opening.size()));
   lastBeta_.head(expected) = Eigen::Map<const Eigen::VectorXd>(beta.data(), expected);
@@ -881,20 +989,23 @@ long FrictionCase::restart(std::ostream& log) {
   double named = t0;
   timeOfName(folder, named);
   const double limit = std::max(t0, named);
+  const long first = time_->continueAfter(t0, step);
+  log << "Restarting from time " << folder << " (step " << step << ")";
+  if (first > time_->numSteps()) {
+    // Nothing to do, and nothing is touched: the outputs stay as they are.
+    log << ": nothing is left to compute: endTime " << formatNumber(time_->endTime())
+        << " (system/controlDict) is at or before the saved time " << folder
+        << "; raise endTime to continue. Nothing written\n\n";
+    return first;
+  }
+  log << ", next time " << time_->timeName(time_->time(first)) << " (step " << first << " of "
+      << time_->numSteps() << ")\n\n";
   trimOutputs(
       [limit](const std::string& name) {
         double t = 0;
         return timeOfName(name, t) && t <= limit;
       },
-      false);
-  const long first = time_->continueAfter(t0, step);
-  log << "Restarting from time " << folder << " (step " << step << ")";
-  if (first > time_->numSteps())
-    log << ": it is endTime, nothing to compute";
-  else
-    log << ", next time " << time_->timeName(time_->time(first)) << " (step " << first << " of "
-        << time_->numSteps() << ")";
-  log << "\n\n";
+      false, log);
   return first;
 }
 
@@ -912,7 +1023,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   if (time_->startFromLatest())
     first = restart(log);
   else
-    trimOutputs([](const std::string&) { return false; }, true);
+    trimOutputs([](const std::string&) { return false; }, true, log);
   if (!time_->precisionNote().empty()) log << time_->precisionNote() << "\n\n";
   if (time_->steps() != TimeControl::Steps::uniform) log << "Time: " << time_->describe() << "\n\n";
   Eigen::VectorXd& lastBeta = lastBeta_;

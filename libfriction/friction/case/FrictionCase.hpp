@@ -75,15 +75,20 @@ class FrictionCase {
   /// Before any work: time folders after startTime from an earlier run are refused
   /// (InputError naming them and both ways out) unless startFrom is latestTime, or
   /// `overwrite` (frictionSolver -overwrite), which removes the earlier run's outputs first:
-  /// time folders after startTime, its VTK files and postProcessing/convergence.dat. run()
-  /// calls it (without overwrite) if the caller did not.
-  void prepareOutput(bool overwrite, std::ostream& log);
+  /// time folders after startTime, its VTK files and postProcessing/convergence.dat. A folder
+  /// the solver did not write (TimeFolder::notWrittenBySolver) is never removed: `overwrite`
+  /// refuses it (InputError naming it and the file). `overwriteHint`: how the caller asks for
+  /// `overwrite`, for the messages. run() calls it (without overwrite) if the caller did not.
+  void prepareOutput(bool overwrite, std::ostream& log,
+                     const std::string& overwriteHint = "frictionSolver -overwrite");
   /// Build the spaces, fix the Dirichlet dofs, assemble and factor once. Returns the status.
   FactorStatus setup(std::ostream& log);
   /// The time loop. Returns the step results (also logged). With startFrom latestTime it
   /// continues from the newest complete time folder (its uniform/frictionState) at its time,
   /// after dropping what a killed run wrote beyond it, so that the outputs end as an
-  /// uninterrupted run's.
+  /// uninterrupted run's. Refused (InputError): a restart folder whose name is not the time
+  /// its state records (a copied or renamed folder), and folders after it that the solver did
+  /// not write. With endTime at or before the saved time nothing is computed or rewritten.
   std::vector<StepResult> run(std::ostream& log);
   /// Why run() stopped before endTime ("" if it reached it): stopAt or a signal.
   const std::string& stoppedEarly() const { return stoppedEarly_; }
@@ -190,13 +195,17 @@ class FrictionCase {
   /// Fracture f's line of its history file for the step just solved (time t).
   std::string historyLine(std::size_t f, double t) const;
   bool outputPrepared_ = false;
+  std::string overwriteHint_ = "frictionSolver -overwrite";  ///< for the messages
   /// Restart: read the state of the newest complete time folder, trim the outputs after it;
   /// returns the first step to compute.
   long restart(std::ostream& log);
   /// Keep of the outputs around the time folders (VTK files and .pvd entries, convergence.dat
   /// lines) only the times whose name `keep` accepts; remove temporary files and folders of
-  /// killed writes. `fresh`: start convergence.dat anew.
-  void trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh);
+  /// killed writes. `fresh`: start convergence.dat anew. Not fresh (a restart), the VTK series
+  /// goes on under the name of the earlier times' files when the case folder was renamed (the
+  /// log says so).
+  void trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh,
+                   std::ostream& log);
 };
 
 }  // namespace friction

@@ -4,12 +4,14 @@
 
 #include <sys/resource.h>
 
+#include <exception>
 #include <filesystem>
 #include <iomanip>
 #include <new>
 #include <ostream>
 #include <sstream>
 
+#include "friction/case/CaseLock.hpp"
 #include "friction/case/FrictionCase.hpp"
 #include "friction/core/OutputError.hpp"
 #include "friction/core/Parallel.hpp"
@@ -54,9 +56,26 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     auto owned = std::make_unique<FrictionCase>(caseDir);
     FrictionCase& c = *owned;
     Keep keep{kept, owned};
+    // One run at a time writes a case: the lock before anything is written or removed. Rank 0
+    // writes every file, so it holds it; the others hear whether it got it.
+    std::unique_ptr<CaseLock> lock;
+    std::exception_ptr lockError;
+    int lockStatus = 0;
+    if (parallel::isMaster()) try {
+        lock = std::make_unique<CaseLock>(caseDir, options.program, log);
+      } catch (const OutputError&) {
+        lockStatus = 6;
+        lockError = std::current_exception();
+      } catch (const InputError&) {
+        lockStatus = 1;
+        lockError = std::current_exception();
+      }
+    parallel::broadcast(&lockStatus, 1);
+    if (lockError) std::rethrow_exception(lockError);
+    if (lockStatus != 0) return lockStatus;  // rank 0 said why
     // An earlier run's time folders are refused, continued (startFrom latestTime) or, with
     // -overwrite, removed: before any work.
-    c.prepareOutput(options.overwrite, log);
+    c.prepareOutput(options.overwrite, log, options.overwriteHint);
     parallel::barrier();  // rank 0 has removed what -overwrite removes
 
     // 3. Assemble and factor once.

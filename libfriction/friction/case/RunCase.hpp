@@ -17,12 +17,17 @@ struct RunCaseOptions {
   bool overwrite = false;
   /// The program that names itself in the log's first line and in error messages.
   std::string program = "frictionSolver";
+  /// How the caller asks for `overwrite`, for the messages that suggest it.
+  std::string overwriteHint = "frictionSolver -overwrite";
 };
 
 /// Runs the case in caseDir; the log goes to `log`, errors to `err` as
-/// "<program>: error: <file:line or key>: <what was expected>". Returns frictionSolver's exit
-/// code: 0 every step converged; 1 bad input; 3 some step did not converge, was inaccurate or
-/// diverged; 4 the factorisation failed; 5 stopped by SIGINT/SIGTERM; 6 an output or system
+/// "<program>: error: <file:line or key>: <what was expected>". The run holds the case's lock
+/// (CaseLock.hpp; rank 0 does for all ranks) from after the case is read to its end, so
+/// nothing is written or removed without it. Returns frictionSolver's exit code: 0 every step
+/// converged; 1 bad input, or a case the run refuses to touch (locked by another run, time
+/// folders of an earlier run or not the solver's); 3 some step did not converge, was inaccurate
+/// or diverged; 4 the factorisation failed; 5 stopped by SIGINT/SIGTERM; 6 an output or system
 /// error. If `kept` is given and the case was read, the FrictionCase is handed back there
 /// (after its run, or after the failure), for the caller to read its results.
 int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostream& log,

@@ -2,6 +2,7 @@
 #include "friction/output/TimeFolder.hpp"
 
 #include <filesystem>
+#include <set>
 #include <system_error>
 #include <vector>
 
@@ -48,6 +49,13 @@ void TimeFolder::commit() {
       (finalPath.parent_path() / ("." + finalPath.filename().string() + ".old")).string();
   fs::remove_all(old, ec);
   if (fs::exists(final_)) {
+    // What the user put under a time's name is theirs (issue 26: a folder of notes replaced).
+    const std::string foreign = notWrittenBySolver(final_);
+    if (!foreign.empty())
+      throw OutputError(final_, "a folder of this time's name that frictionSolver did not write (" +
+                                    foreign +
+                                    "): not replaced; move it out of the case, then continue "
+                                    "with startFrom latestTime");
     fs::rename(final_, old, ec);
     if (ec)
       throw OutputError(final_, "cannot replace the existing time folder (" + ec.message() + ")");
@@ -72,6 +80,29 @@ int TimeFolder::removeLeftovers(const std::string& caseDir) {
   }
   for (const auto& p : leftovers) fs::remove_all(p, ec);
   return static_cast<int>(leftovers.size());
+}
+
+std::string TimeFolder::notWrittenBySolver(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_directory(path, ec)) return "it is not a folder";
+  // The files of a time folder (FrictionCase::writeTimeFolder), and the folders they sit in.
+  static const std::set<std::string> files = {"D", "solverStatus", "uniform/frictionState"};
+  static const std::set<std::string> folders = {"uniform", "fractures"};
+  const fs::path root(path);
+  for (auto it = fs::recursive_directory_iterator(root, ec); !ec && it != fs::end(it);
+       it.increment(ec)) {
+    const fs::path rel = it->path().lexically_relative(root);
+    const std::string name = rel.generic_string();
+    const bool isFolder = it->is_directory(ec) && !it->is_symlink(ec);
+    const bool isFile = it->is_regular_file(ec) && !it->is_symlink(ec);
+    const bool table = isFile && rel.parent_path() == "fractures" && rel.extension() == ".dat";
+    if ((isFolder && folders.count(name)) || (isFile && (files.count(name) || table))) continue;
+    return "it holds '" + name + "', which frictionSolver does not write";
+  }
+  if (ec) return "it cannot be read (" + ec.message() + ")";
+  if (!fs::is_regular_file(root / "uniform" / "frictionState", ec))
+    return "it has no uniform/frictionState";
+  return "";
 }
 
 }  // namespace friction
