@@ -333,8 +333,11 @@ void FrictionCase::printSettings(std::ostream& log) const {
 
 FactorStatus FrictionCase::setup(std::ostream& log) {
   system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
-  // Absolute γ and γ_n against their range around E/h, before the factorisation's work.
-  if (const double h = meanFractureEdge(); h > 0) {
+  // Absolute γ and γ_n against their range around E/h, before the factorisation's work. Where
+  // 1e8 E/h overflows, the case's units do (E near 1e300 Pa): the overflow diagnoses of the
+  // factorisation and of the step say so, and name the cure.
+  if (const double h = meanFractureEdge();
+      h > 0 && std::isfinite(gammaRelativeMax * youngScale_ / h)) {
     const double scale = youngScale_ / h;
     const auto checkAbsolute = [scale](const char* key, double value, const SourceLocation& at) {
       if (!(value >= gammaRelativeMin * scale && value <= gammaRelativeMax * scale))
