@@ -282,3 +282,136 @@ TEST_CASE("a partly open penny: the same answer for gamma_n over ten orders of m
     CHECK(dTraction <= 1e-8 * p);
   }
 }
+
+namespace {
+
+/// One run of the γ test below: the case solved with `keys` in place of `gammaRelative 1;`.
+/// Either refused (exit 1 naming the key and the accepted range, nothing written) or solved
+/// with exit 0 and the reference's states; the last time's table is returned (empty if
+/// refused).
+Table gammaRun(Case& c, const std::string& keys, const std::string& key, const Table* ref,
+               const std::string& time) {
+  c.edit("system/frictionSolution", "gammaRelative +1;", keys);
+  const int rc = c.solve();
+  const std::string log = c.log();
+  INFO(keys << "\n" << log);
+  if (rc == 1) {
+    CHECK_THAT(log, Catch::Contains("key '" + key + "'"));
+    CHECK_THAT(log, Catch::Contains("accepted"));
+    CHECK(!fs::exists(c.dir() / time));
+    return {};
+  }
+  REQUIRE(rc == 0);
+  Table t = c.namedTable(time, "fault");
+  if (ref) {
+    REQUIRE(t.rows.size() == ref->rows.size());
+    CHECK(t.state == ref->state);
+  }
+  return t;
+}
+
+/// Largest |a − b| of a column over the rows (NaN at tips on both sides skipped).
+double columnDifference(const Table& a, const Table& b, const std::string& col) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.rows.size(); ++i) {
+    const double x = a.at(i, col), y = b.at(i, col);
+    if (std::isnan(x) && std::isnan(y)) continue;
+    d = std::max(d, std::abs(x - y));
+  }
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("gamma_n and gamma out of range are refused and in range give the open penny's states",
+          "[regression][3d][opening]") {
+  // The pressurised penny (15 MPa over a remote -10 MPa): every node open.
+  // A γ_n far below E/h made γ_n g underflow against the round-off of σ'_n: open faces (g up
+  // to 0.39 mm) were classed closed and written as slip with ST up to 0.43 and maxExcessST
+  // 3.2, status converged, exit 0 (gammaNormalRelative 1e-15). A tiny γ classes slipping
+  // nodes stick the same way (γβ under the round-off of |τ| − ρ), a huge one overflows or
+  // stalls. Every value is either accepted and gives the default's states, ST within 1e-6
+  // (ST of closed nodes: the solver tolerance 1e-10 of ‖Σ‖ over σ'_n; of open ones 0) and
+  // maxExcessST ≤ 1e-6, or refused naming the key and the range (README: [1e-8, 1e8] × E/h).
+  const std::string effects = std::string(kRemote) + pressure("15e6");
+  Case ref("pennyCrack", "gamma-open-reference");
+  solve(ref, "0.125", 1, kUnilateral, effects);
+  CHECK_THAT(ref.log(), Catch::Contains("nodes stick 0 slip 0 open 222 tip 51"));
+  const Table r = ref.namedTable("1", "fault");
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"gammaNormalRelative", "1e-15"}, {"gammaNormalRelative", "1e-30"},
+      {"gammaNormal", "1e-300"},        {"gammaRelative", "1e-300"},
+      {"gammaNormalRelative", "1e15"},  {"gammaNormalRelative", "1e300"},
+      {"gammaNormal", "1e300"},         {"gammaRelative", "1e15"},
+      {"gammaRelative", "1e300"},       {"gammaNormalRelative", "1e-8"},
+      {"gammaNormalRelative", "1e8"},   {"gammaRelative", "1e-8"},
+      {"gammaRelative", "1e8"}};
+  int accepted = 0;
+  for (const auto& [key, value] : runs) {
+    Case c("pennyCrack", "gamma-open-" + key + value);
+    writeText(c.dir() / "constant/fractureProperties", kUnilateral);
+    writeText(c.dir() / "constant/effects", effects);
+    const std::string keys = key == "gammaRelative" ? key + " " + value + ";"
+                                                    : "gammaRelative 1; " + key + " " + value + ";";
+    const Table t = gammaRun(c, keys, key, &r, "1");
+    if (t.rows.empty()) continue;
+    ++accepted;
+    INFO(key << " " << value);
+    CHECK(columnDifference(t, r, "ST") <= 1e-6);
+    CHECK_THAT(c.log(), Catch::Contains("maxExcessST 0 "));
+  }
+  CHECK(accepted == 4);  // the range's ends are accepted, and give the same states
+}
+
+TEST_CASE("gamma out of range is refused and in range gives the slipping penny's states",
+          "[regression][3d][opening]") {
+  // The penny under remote shear, bilateral: every node slips.
+  Case ref("pennyCrack", "gamma-slip-reference");
+  REQUIRE(ref.solve() == 0);
+  const Table r = ref.namedTable("1", "fault");
+  double slipMax = 0;
+  for (std::size_t i = 0; i < r.rows.size(); ++i)
+    slipMax = std::max(slipMax, r.at(i, "slipMagnitude"));
+  REQUIRE(slipMax > 0);
+  int accepted = 0;
+  for (const std::string value : {"1e-300", "1e-16", "1e-8", "1e8", "1e16", "1e300"}) {
+    Case c("pennyCrack", "gamma-slip-" + value);
+    const Table t = gammaRun(c, "gammaRelative " + value + ";", "gammaRelative", &r, "1");
+    if (t.rows.empty()) continue;
+    ++accepted;
+    INFO("gammaRelative " << value);
+    CHECK(columnDifference(t, r, "ST") <= 1e-6);
+    CHECK(columnDifference(t, r, "slipMagnitude") <= 1e-8 * slipMax);
+  }
+  CHECK(accepted == 2);
+}
+
+TEST_CASE("gamma far above the interface stiffness: Newton iterates with the stiffness",
+          "[regression][3d][opening]") {
+  // A partly open penny, warm-started: gamma at the range's upper end.
+  // The tilted penny of the test above at t = 2 (stick 162, slip 4, open 55). With γ far
+  // above the interface stiffness Newton classed nodes that must stick as slip by the
+  // round-off of their β: gammaRelative 1e3 reached maxIterations with 101 states wrong.
+  // It iterates with the stiffness there, and judges the stop rule with the case's γ.
+  Case mesh("pennyCrack", "gamma-tilt-mesh");
+  mesh.remesh("-rx 45");
+  std::vector<Table> tables;
+  for (const std::string value : {"1", "1e3", "1e8"}) {
+    Case c("pennyCrack", "gamma-tilt-" + value);
+    fs::copy_file(mesh.dir() / "constant/mesh/pennyCrack.msh",
+                  c.dir() / "constant/mesh/pennyCrack.msh", fs::copy_options::overwrite_existing);
+    c.edit("system/controlDict", "endTime +1;", "endTime 2;");
+    c.edit("system/frictionSolution", "warmStart +no;", "warmStart yes;");
+    writeText(c.dir() / "constant/fractureProperties",
+              "fault { contact unilateral; law coulomb; frictionCoefficient 0.6; }\n");
+    writeText(c.dir() / "constant/effects",
+              "remote { type initialStress; stress (-10e6 -11e6 -9e6 0 0 0); "
+              "gradient (8e6 8e6 8e6 0 0 0); }\n" +
+                  pressure("table ((0 0) (1 10e6) (2 8e6))"));
+    tables.push_back(gammaRun(c, "gammaRelative " + value + "; gammaNormalRelative 1;",
+                              "gammaRelative", tables.empty() ? nullptr : &tables[0], "2"));
+    REQUIRE(!tables.back().rows.empty());
+    CHECK_THAT(c.log(), Catch::Contains("nodes stick 162 slip 4 open 55 tip 51"));
+    if (value != "1") CHECK_THAT(c.log(), Catch::Contains("the case's is > 10 x the interface"));
+  }
+}

@@ -84,6 +84,44 @@ std::vector<std::pair<double, std::string>> timeFolders(const std::string& caseD
 }
 
 /// "0.1, 0.2, 0.3" or "0.1, 0.2, ..., 1 (40 folders)".
+// γ and γ_n are accepted within [1e-8, 1e8] of their scale-free default E/h: D = 0 does not
+// depend on them, but a node's state is read off augmented quantities (N = τ − γβ against ρ;
+// σ'_n + γ_n g against 0), and the stop rule weighs β and g by them (D = γβ where a node
+// sticks, −γ_n g where faces touch). Far below E/h, γβ and γ_n g fall under the round-off of
+// τ and σ'_n: slipping nodes are classed stick, open ones closed (with exit 0), and errors of
+// β and g become invisible to the stop rule; far above, γβ and γ_n g swamp the tractions,
+// overflow, or the iteration stalls. Measured on cases/pennyCrack (P1, a/8; README.md, "γ's
+// range"): wrong states with status converged at gammaNormalRelative 1e-13 and gammaRelative
+// 1e-16, a wrong slip with status converged at gammaRelative 1e300, stalls at 1e-14 and 1e16;
+// the default's states and columns from 1e-12 to 1e12. The bound keeps at least four decades
+// from the first failure on each side.
+constexpr double gammaRelativeMin = 1e-8, gammaRelativeMax = 1e8;
+
+/// The refusal of a γ or γ_n (key, as given) outside the accepted range; `scale` is E/h [Pa/m]
+/// for an absolute key (0 for a relative one).
+std::string gammaRangeMessage(const std::string& key, double value, double scale) {
+  const bool normal = key.rfind("gammaNormal", 0) == 0;
+  std::ostringstream s;
+  s << std::setprecision(6) << "key '" << key << "': " << value;
+  if (scale > 0)
+    s << " Pa/m is " << value / scale << " x E/h (E/h = " << scale << " Pa/m); accepted from "
+      << gammaRelativeMin * scale << " to " << gammaRelativeMax * scale << " Pa/m ("
+      << gammaRelativeMin << " to " << gammaRelativeMax << " x E/h)";
+  else
+    s << " is outside the accepted range [" << gammaRelativeMin << ", " << gammaRelativeMax
+      << "] (x E/h)";
+  s << ". "
+    << (normal ? "gamma_n weighs the opening g against the normal stress (sigma'_n + gamma_n g "
+                 "decides whether faces touch)"
+               : "gamma weighs the slip increment against the shear traction (tau - gamma "
+                 "beta decides whether a node sticks)")
+    << "; further from E/h than that, " << (normal ? "gamma_n g" : "gamma beta")
+    << " falls below the round-off of the tractions or swamps them, and the states written "
+       "would depend on it. The answer does not depend on "
+    << (normal ? "gamma_n" : "gamma") << " within the range: use the default";
+  return s.str();
+}
+
 std::string listNames(const std::vector<std::string>& names) {
   if (names.size() <= 4) return joinWords(names);
   return names[0] + ", " + names[1] + ", ..., " + names.back() + " (" +
@@ -199,21 +237,31 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
                          " ranks (frictionSolver -parallel) but linear solver '" + linearSolver_ +
                          "' runs on one: set 'linearSolver mumps;'");
   const Dictionary& control = sol.subDict("control");
+  // Relative values are checked against their range here, absolute ones in setup() (they need
+  // h).
+  const auto checkRelative = [&control](const char* key, double value) {
+    if (value < gammaRelativeMin || value > gammaRelativeMax)
+      control.fail(key, gammaRangeMessage(key, value, 0));
+  };
   if (control.alternative({{"gamma"}, {"gammaRelative"}}, 1) == 0) {
     gammaAbsolute_ = true;
     gamma_ = control.getScalar("gamma", Bounds::positive());
+    gammaLocation_ = control.location("gamma");
   } else {
     gammaRelative_ = control.getScalarOr("gammaRelative", 1.0, Bounds::positive());
+    checkRelative("gammaRelative", gammaRelative_);
   }
   // γ_n: by default γ's own value (both weigh a traction against a jump).
   switch (control.alternative({{"gammaNormal"}, {"gammaNormalRelative"}}, 2)) {
     case 0:
       gammaNGiven_ = GammaNGiven::absolute;
       gammaN_ = control.getScalar("gammaNormal", Bounds::positive());
+      gammaNLocation_ = control.location("gammaNormal");
       break;
     case 1:
       gammaNGiven_ = GammaNGiven::relative;
       gammaNRelative_ = control.getScalar("gammaNormalRelative", Bounds::positive());
+      checkRelative("gammaNormalRelative", gammaNRelative_);
       break;
     default:
       break;
@@ -302,6 +350,20 @@ void FrictionCase::printSettings(std::ostream& log) const {
 
 FactorStatus FrictionCase::setup(std::ostream& log) {
   system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
+  // Absolute γ and γ_n against their range around E/h, before the factorisation's work. Where
+  // 1e8 E/h overflows, the case's units do (E near 1e300 Pa): the overflow diagnoses of the
+  // factorisation and of the step say so, and name the cure.
+  if (const double h = meanFractureEdge();
+      h > 0 && std::isfinite(gammaRelativeMax * youngScale_ / h)) {
+    const double scale = youngScale_ / h;
+    const auto checkAbsolute = [scale](const char* key, double value, const SourceLocation& at) {
+      if (!(value >= gammaRelativeMin * scale && value <= gammaRelativeMax * scale))
+        throw InputError(at, gammaRangeMessage(key, value, scale));
+    };
+    if (gammaAbsolute_) checkAbsolute("gamma", gamma_, gammaLocation_);
+    if (gammaNGiven_ == GammaNGiven::absolute)
+      checkAbsolute("gammaNormal", gammaN_, gammaNLocation_);
+  }
   bcs_->fix(system_->dirichlet());
   findFloatingParts();
   const FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());

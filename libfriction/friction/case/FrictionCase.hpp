@@ -160,6 +160,9 @@ class FrictionCase {
   std::string linearSolver_ = "cholmod";
   double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
   bool gammaAbsolute_ = false, warmStart_ = false;
+  /// Where gamma and gammaNormal were given (absolute values are checked against E/h once h is
+  /// known, in setup()).
+  SourceLocation gammaLocation_, gammaNLocation_;
   /// Fractures that open (docs/method.md §4, "Fractures that open"): any fracture with contact
   /// unilateral; γ_n and how it was given (gammaNormal, gammaNormalRelative, or γ's own value).
   bool opening_ = false;

@@ -58,8 +58,8 @@ Eigen::VectorXd sampledDiagonal(SlipResponse& resp,
 
 /// The γ semismoothNewton iterates with, given S_tt's diagonal (k·n, the tangential
 /// components; entries ≤ 0 are not known and left out): in 3D (k ≥ 2) the mean of the
-/// diagonal over the unknown components where the case's γ is below 1e-2 × that mean, else
-/// the case's γ (see SemismoothNewton::minimize for why).
+/// diagonal over the unknown components where the case's γ is below 1e-2 × that mean or above
+/// 10 × it, else the case's γ (see SemismoothNewton::minimize for why).
 double newtonGamma(const ControlProblem& p, const Eigen::VectorXd& diagonalStt);
 
 /// The right preconditioner: the sparse Jacobian with the probed S on the active components.

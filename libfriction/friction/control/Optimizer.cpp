@@ -418,10 +418,10 @@ struct RestoreGamma {
   ~RestoreGamma() { p.setGamma(gamma); }
 };
 
-std::string newtonGammaNote(double gammaNewton) {
+std::string newtonGammaNote(double gammaNewton, double gammaCase) {
   std::ostringstream note;
-  note << std::setprecision(3) << "Newton's gamma " << gammaNewton
-       << " Pa/m: the case's is < 1e-2 x the interface stiffness";
+  note << std::setprecision(3) << "Newton's gamma " << gammaNewton << " Pa/m: the case's is "
+       << (gammaCase < gammaNewton ? "< 1e-2" : "> 10") << " x the interface stiffness";
   return note.str();
 }
 
@@ -532,7 +532,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   } restore{p, gammaCase, gammaNCase, opening};
   p.setGamma(gammaNewton);
   if (opening) p.setGammaNormal(gammaNNewton);
-  if (gammaNewton != gammaCase) r.note = newtonGammaNote(gammaNewton);
+  if (gammaNewton != gammaCase) r.note = newtonGammaNote(gammaNewton, gammaCase);
   if (gammaNNewton != gammaNCase) {
     std::ostringstream note;
     note << std::setprecision(3) << "Newton's gammaNormal " << gammaNNewton
@@ -667,7 +667,7 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   const double gammaCase = p.gamma(), gammaNewton = newtonGamma(p, diagonal_);
   RestoreGamma restore{p, gammaCase};
   p.setGamma(gammaNewton);
-  if (gammaNewton != gammaCase) r.note = newtonGammaNote(gammaNewton);
+  if (gammaNewton != gammaCase) r.note = newtonGammaNote(gammaNewton, gammaCase);
   // States at another γ without a solve: D from the tractions already known.
   const auto atGamma = [&p](const ControlState& s) { return p.stateFrom(s.beta, s.tau, s.sigmaN); };
   ControlState s = p.evaluate(beta);
