@@ -392,3 +392,141 @@ TEST_CASE("layered rock 3D: two regions of tetrahedra, equal constants and a con
   CHECK(std::regex_search(readText(contrast.dir() / "1" / "solverStatus"),
                           std::regex("\\nstatus +converged;")));
 }
+
+namespace {
+
+const char* kEffectsHeader =
+    "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object "
+    "effects;\n}\n";
+
+}  // namespace
+
+TEST_CASE("layered rock: a depleting reservoir layer, the pore pressure's change on it only",
+          "[regression][porePressure]") {
+  // The column of the test above (rollers on the left, right and bottom, p = 10 MPa on the top
+  // at t = 1), and porePressure with a change Δp_b = −5 MPa on 'reservoir' only, α_B = 0.9.
+  // Each layer stays uniform: σ_yy = −p in both (the top's load is fixed); in the reservoir
+  // (λ₁ + 2μ₁) ε_yy − α_B Δp_b = −p, σ_xx = σ_zz = λ₁ ε_yy − α_B Δp_b (total stresses, plane
+  // strain); the caprock as without pressure. P1 and P2 hold it (u_y linear in each layer).
+  const double p = 1e7, E1 = 10e9, nu1 = 0.25, E2 = 30e9, nu2 = 0.3, alpha = 0.9, dp = -5e6;
+  const double e1 = (-p + alpha * dp) / constrained(E1, nu1), e2 = -p / constrained(E2, nu2);
+  const auto exactUy = [&](double y) { return y <= 0.5 ? e1 * y : e1 * 0.5 + e2 * (y - 0.5); };
+  for (int order : {1, 2}) {
+    DYNAMIC_SECTION("P" << order) {
+      Case c("tests:layeredRock", "layered-depletion-P" + std::to_string(order) + "/layeredRock");
+      makeMesh(c, 0);
+      c.edit("system/meshDict", "fractures +\\(crack\\);", "fractures ();");
+      c.edit("constant/fractureProperties", "crack\\s*\\{[^}]*\\}", "");
+      c.edit("0/D", "right +\\{ type free; \\}",
+             "right   { type fixedDisplacement; components (x); value (0 0); }");
+      if (order == 2) c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+      writeText(c.dir() / "constant" / "effects",
+                std::string(kEffectsHeader) +
+                    "rock { type porePressure; biotCoefficient 0.9;\n"
+                    "       regions { reservoir { change table ((0 0) (1 -5e6)); } } }\n");
+      const int rc = c.solve();
+      INFO(c.log());
+      REQUIRE(rc == 0);
+      CHECK_THAT(c.log(), Catch::Contains("Effect rock: porePressure, biotCoefficient 0.9, "
+                                          "initial p_b 0 Pa, in region reservoir a change in "
+                                          "time (table); one way"));
+
+      auto vtu = readVtu(vtuOf(c));
+      const auto& x = vtu[""];
+      const auto& u = vtu["displacement"];
+      REQUIRE(x.size() >= 3 * 20);
+      REQUIRE(u.size() == x.size());
+      // Round-off and the 12 digits written, as in the column test: 1e-10 of the top's
+      // displacement, 1e-8 p for the stresses; a change loading the caprock too, or with the
+      // wrong sign, is off by α_B Δp_b/(λ + 2μ) in ε_yy (a third of it) and α_B Δp_b in σ.
+      const double scale = std::abs(exactUy(1.0));
+      double worst = 0;
+      for (std::size_t k = 0; 3 * k < x.size(); ++k)
+        worst =
+            std::max({worst, std::abs(u[3 * k]), std::abs(u[3 * k + 1] - exactUy(x[3 * k + 1]))});
+      CHECK(worst <= 1e-10 * scale);
+      const auto& stress = vtu["stress"];
+      const auto& region = vtu["region"];
+      REQUIRE(stress.size() == 6 * region.size());
+      int cells[3] = {0, 0, 0};
+      for (std::size_t k = 0; k < region.size(); ++k) {
+        const int r = static_cast<int>(region[k]);
+        REQUIRE((r == 1 || r == 2));
+        ++cells[r];
+        const double sxx = r == 1 ? lame(E1, nu1) * e1 - alpha * dp : lame(E2, nu2) * e2;
+        CHECK(std::abs(stress[6 * k + 0] - sxx) <= 1e-8 * p);
+        CHECK(std::abs(stress[6 * k + 1] + p) <= 1e-8 * p);
+        CHECK(std::abs(stress[6 * k + 2] - sxx) <= 1e-8 * p);
+        CHECK(std::abs(stress[6 * k + 3]) <= 1e-8 * p);
+      }
+      CHECK(cells[1] > 10);
+      CHECK(cells[2] > 10);
+    }
+  }
+}
+
+TEST_CASE("layered rock: a fault in a depleting layer takes the rock's pore pressure",
+          "[regression][porePressure]") {
+  // The inclined crack (60°, μ_f 2: it sticks) in one material (E 10 GPa, ν 1/4 in both
+  // layers), rollers on the left, right and bottom, p = 10 MPa on the top; porePressure with
+  // α_B = 1, p_b0 = 3e6 − 1e4 y [Pa] and Δp_b = −2 MPa everywhere at t = 1. The stress is
+  // uniform: σ_yy = −p, σ_xx = λ/(λ + 2μ) (−p + α_B Δp_b) − α_B Δp_b = −2 MPa (total), so on
+  // the crack (t = (cos 60°, sin 60°), n = (t_y, −t_x)) σ_n = σ_xx n_x² + σ_yy n_y² and
+  // τ = σ_xx n_x t_x + σ_yy n_y t_y are the total tractions recovered from the residual; the
+  // crack has no pressure of its own, so p = p_b0 + Δp_b and σ'_n = σ_n + p. With a
+  // faultPressure of its own (5e5 Pa) the crack keeps that one instead, and the tractions stay.
+  const double p = 1e7, alpha = 1, dp = -2e6, lambdaOverM = 1.0 / 3;
+  const double sxx = lambdaOverM * (-p + alpha * dp) - alpha * dp, syy = -p;
+  const double pi = std::acos(-1.0), c60 = std::cos(pi / 3), s60 = std::sin(pi / 3);
+  const double nx = s60, ny = -c60, tx = c60, ty = s60;
+  const double sigmaN = sxx * nx * nx + syy * ny * ny, tau = sxx * nx * tx + syy * ny * ty;
+  for (bool own : {false, true}) {
+    DYNAMIC_SECTION((own ? "with a faultPressure of its own" : "the rock's pressure")) {
+      Case c("tests:layeredRock",
+             std::string("layered-fault-depletion-") + (own ? "own" : "rock") + "/layeredRock");
+      makeMesh(c, 1);
+      c.edit("constant/mechanicalProperties", "caprock +\\{ E 30e9; nu 0.3; \\}",
+             "caprock { E 10e9; nu 0.25; }");
+      c.edit("constant/fractureProperties", "frictionCoefficient 0.4;", "frictionCoefficient 2;");
+      c.edit("0/D", "right +\\{ type free; \\}",
+             "right   { type fixedDisplacement; components (x); value (0 0); }");
+      writeText(c.dir() / "constant" / "effects",
+                std::string(kEffectsHeader) +
+                    "rock { type porePressure; biotCoefficient 1;\n"
+                    "       initial { type depth; value 3e6; gradient -1e4; }\n"
+                    "       change table ((0 0) (1 -2e6)); }\n" +
+                    (own ? "fluid { type faultPressure; fracture crack; initial 5e5; }\n" : ""));
+      const int rc = c.solve();
+      INFO(c.log());
+      REQUIRE(rc == 0);
+      CHECK_THAT(c.log(), Catch::Contains(own ? "Fracture crack: a fluid pressure of its own"
+                                              : "Fracture crack: initial pore pressure of the "
+                                                "rock (rock) from min"));
+      const Table t = c.namedTable("1", "crack");
+      int interior = 0;
+      for (std::size_t i = 0; i < t.rows.size(); ++i) {
+        const double y = t.at(i, "y");
+        const double pressure = own ? 5e5 : 3e6 - 1e4 * y + dp;
+        INFO("row " << i << " y = " << y);
+        // 12 digits written; the recovery's round-off as in the column test: 1e-8 p.
+        CHECK(std::abs(t.at(i, "pressure") - pressure) <= 1e-8 * p);
+        if (t.state[i] == "tip") continue;
+        ++interior;
+        CHECK(t.state[i] == "stick");
+        CHECK(std::abs(t.at(i, "sigmaN") - sigmaN) <= 1e-8 * p);
+        CHECK(std::abs(t.at(i, "tau") - tau) <= 1e-8 * p);
+        CHECK(std::abs(t.at(i, "sigmaNEffective") - (sigmaN + pressure)) <= 1e-8 * p);
+        CHECK(std::abs(t.at(i, "slip")) <= 1e-15);
+      }
+      CHECK(interior >= 10);
+      // The written stress is total: σ_xx = −2 MPa in every cell.
+      auto vtu = readVtu(vtuOf(c));
+      const auto& stress = vtu["stress"];
+      REQUIRE(stress.size() > 6 * 20);
+      for (std::size_t k = 0; 6 * k < stress.size(); ++k) {
+        CHECK(std::abs(stress[6 * k + 0] - sxx) <= 1e-8 * p);
+        CHECK(std::abs(stress[6 * k + 1] - syy) <= 1e-8 * p);
+      }
+    }
+  }
+}

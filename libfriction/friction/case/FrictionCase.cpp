@@ -221,6 +221,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
         continue;
       }
       effects_.push_back(Effect::New(key, e, names, caseDir, split_.mesh.dim));
+      effects_.back()->setMesh(split_.mesh);  // regions named by the effect: checked now
     }
     ed.checkAllRead();
   }
@@ -416,7 +417,12 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   {
     std::vector<std::string> fractureNames;
     for (const auto& g : split_.fractures) fractureNames.push_back(g.name);
-    const EffectContext context{split_, nodes, fractureNames, log};
+    // The fractures given a fluid pressure of their own (the rock's pore pressure leaves them).
+    std::vector<char> ownPressure(fractureNames.size(), 0);
+    for (std::size_t f = 0; f < fractureNames.size(); ++f)
+      for (const auto& e : effects_) ownPressure[f] |= e->givesPressureOn(fractureNames[f]);
+    const EffectContext context{split_,     nodes, fractureNames, log, &system_->splitAssembler(),
+                                ownPressure};
     for (const auto& e : effects_) {
       e->bind(context);
       hasPressure_ |= e->givesFracturePressure();
@@ -1595,18 +1601,20 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   // it restarts from the time before, which drops this time's VTK files and .pvd entry.
   if (time_->writeVTK()) {
     if (!vtk_) vtk_ = std::make_unique<VtkSeries>(caseDir_);
-    std::function<Eigen::Matrix3d(const Point&)> sigma0;
-    bool hasInitialStress = false;
-    for (const auto& e : effects_) hasInitialStress |= e->type() == "initialStress";
-    if (hasInitialStress)
-      sigma0 = [this](const Point& x) {
-        // 2D: the in-plane block, σ⁰_zz = 0 (Effect.hpp).
+    // The total stress: C:ε(u) plus what the effects add (initialStress's σ⁰, porePressure's
+    // −α_B Δp_b I); nothing to add without them.
+    std::function<Eigen::Matrix3d(Index, const Point&)> offset;
+    bool hasOffset = false;
+    for (const auto& e : effects_) hasOffset |= e->givesStressOffset();
+    if (hasOffset)
+      offset = [this, t = r.time](Index cell, const Point& x) {
+        // 2D: the in-plane block and σ_zz (Effect.hpp).
         Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
-        for (const auto& e : effects_) s += e->initialStress(x);
+        for (const auto& e : effects_) s += e->stressOffset(cell, x, t);
         return s;
       };
     vtk_->write(r.time, time_->timeName(r.time), sys.splitSpace(), sys.splitAssembler(), u,
-                vtkFractures, precision, sigma0);
+                vtkFractures, precision, offset);
   }
   if (history_) history_->sync();
   for (const auto& h : fractureHistories_) h->sync();

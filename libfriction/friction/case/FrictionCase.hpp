@@ -9,7 +9,8 @@
 //   system/frictionSolution        element order, linear solver, control-problem settings
 //   constant/mechanicalProperties  E, ν (or λ, μ), planeStress, bodyForce
 //   constant/fractureProperties    per fracture: law and its parameters
-//   constant/effects               optional: bodyForce, initialStress, fracturePressure
+//   constant/effects               optional: bodyForce, initialStress, fracturePressure,
+//                                  faultPressure, porePressure (Effect.hpp)
 //   constant/splitMesh             from splitFractureNodes
 //   0/D                            boundary conditions (BoundaryConditions.hpp)
 #pragma once

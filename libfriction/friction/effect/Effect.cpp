@@ -8,6 +8,7 @@
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/NumberRows.hpp"
 #include "friction/effect/FaultPressure.hpp"
+#include "friction/effect/PorePressure.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fracture/FractureSystem.hpp"
 
@@ -120,6 +121,7 @@ class InitialStress : public Effect {
   Eigen::Matrix3d initialStress(const Point& x) const override {
     return s0_ + x[vertical_] * grad_;
   }
+  bool givesStressOffset() const override { return true; }
   void addLoad(const ElasticityAssembler& a, double, Eigen::VectorXd& F) const override {
     // div σ⁰ = ∂σ⁰/∂v · e_v, v the vertical (σ⁰ varies with it only); zero for a uniform
     // in-situ stress, so the common case assembles nothing.
@@ -185,6 +187,7 @@ class FracturePressure : public Effect {
   }
   std::string type() const override { return "fracturePressure"; }
   bool givesFracturePressure() const override { return true; }
+  bool givesPressureOn(const std::string& name) const override { return name == fracture_; }
   std::string describe() const override {
     return "on fracture " + fracture_ + (file_.empty() ? "" : ", values from " + file_);
   }
@@ -235,6 +238,7 @@ const EffectEntry effectTable[] = {
        return std::make_unique<FracturePressure>(n, d, f, c, dim);
      }},
     {"faultPressure", makeFaultPressure},
+    {"porePressure", makePorePressure},
 };
 
 }  // namespace

@@ -11,6 +11,9 @@
 //   fluid    { type faultPressure; fractures (fault);                      // p_f(x, t) [Pa]
 //              initial { type depth; value 0; gradient -9810; } change table (...); }
 //              (FaultPressure.hpp: the initial state as a field, wells, diffusion, data)
+//   rock     { type porePressure; biotCoefficient 1;                      // p_b(x, t) [Pa] of
+//              initial { type depth; value 0; gradient -9810; }          // the rock, one way
+//              regions { reservoir { change table (...); } } }           // (PorePressure.hpp)
 // Any entry may say `active no;` to be switched off without deleting it.
 //
 // The dimension comes from the mesh. On a 3D mesh: g (gx gy gz); stress
@@ -45,6 +48,7 @@ class Dictionary;
 class DictionaryWriter;
 class ElasticityAssembler;
 struct ControlNode;
+struct Mesh;
 struct SplitMesh;
 
 /// What an effect may look at once the fracture system exists (FrictionCase::setup): the
@@ -54,6 +58,11 @@ struct EffectContext {
   const std::vector<ControlNode>& nodes;
   const std::vector<std::string>& fractureNames;
   std::ostream& log;
+  /// The split space's assembler (loads that are assembled once), if the caller has one.
+  const ElasticityAssembler* assembler = nullptr;
+  /// Per fracture (fractureNames' order): 1 where some effect gives it a fluid pressure of its
+  /// own (givesPressureOn); empty: none does.
+  std::vector<char> ownPressure = {};
 };
 
 class Effect {
@@ -77,9 +86,15 @@ class Effect {
   /// that varies along the fractures evaluates its fields at the control nodes here (and
   /// checks them: InputError naming the key and the node). `nodes` of later calls are these.
   virtual void bind(const EffectContext& /*context*/) {}
+  /// Called once when the case is read, before any work: an effect that names parts of the
+  /// mesh (regions) resolves and checks them here (InputError naming the key).
+  virtual void setMesh(const Mesh& /*mesh*/) {}
   /// True if the effect gives a fluid pressure on the fractures: the tables and the fault's
   /// VTK then carry p and σ'_n.
   virtual bool givesFracturePressure() const { return false; }
+  /// True if the effect gives fracture `name` a fluid pressure of its own (faultPressure,
+  /// fracturePressure): the rock's pore pressure then leaves that fracture alone.
+  virtual bool givesPressureOn(const std::string& /*name*/) const { return false; }
 
   /// Effects with a state of their own (faultPressure's computed diffusion): advance it to
   /// time t [s], once per step before the step's loads and pressures are asked for (t grows
@@ -109,6 +124,14 @@ class Effect {
   /// stresses. In 2D the in-plane σ⁰ in the upper-left 2 × 2 block, the rest 0 (σ⁰_zz = 0).
   virtual Eigen::Matrix3d initialStress(const Point& /*x*/) const {
     return Eigen::Matrix3d::Zero();
+  }
+  /// True if stressOffset() is not zero: the written stresses then add it.
+  virtual bool givesStressOffset() const { return false; }
+  /// What the effect adds at time t to the stress C:ε(u) of cell `cell` at x to make the total
+  /// stress written [Pa], symmetric: initialStress(x) unless the effect says otherwise
+  /// (porePressure: −α_B Δp_b I). 2D: the in-plane block in the upper-left 2 × 2, and σ_zz.
+  virtual Eigen::Matrix3d stressOffset(Index /*cell*/, const Point& x, double /*t*/) const {
+    return initialStress(x);
   }
 
  protected:

@@ -149,6 +149,9 @@ class FaultPressure : public Effect {
 
   std::string type() const override { return "faultPressure"; }
   bool givesFracturePressure() const override { return true; }
+  bool givesPressureOn(const std::string& name) const override {
+    return std::find(fractures_.begin(), fractures_.end(), name) != fractures_.end();
+  }
   std::string describe() const override {
     std::ostringstream s;
     s << "on " << (fractures_.size() == 1 ? "fracture " : "fractures ") << joinWords(fractures_)

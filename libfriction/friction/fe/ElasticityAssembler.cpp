@@ -170,6 +170,32 @@ Eigen::VectorXd assembleBodyForce(const LagrangeSpace& V, const VectorField& f) 
   return F;
 }
 
+/// F_i = ∫ b · αp · div φ_i (ElasticityAssembler::pressureLoad); alphaP(cell, l, x) gives αp
+/// at the point of barycentric coordinates l, x, of the cell.
+template <int dim, class Field>
+Eigen::VectorXd assemblePressureLoad(const LagrangeSpace& V, const ElasticityAssembler& a,
+                                     const Field& alphaP) {
+  // αp linear times div φ_i (constant for P1, linear for P2): degree 1 or 2 is exact.
+  const SimplexQuadrature<dim> rule = simplexQuadrature<dim>(V.degree());
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(V.numDofs());
+  SimplexPoint<dim> grad[kMaxNodes];
+  for (Index c = 0; c < V.numCells(); ++c) {
+    const Simplex<dim> g = cellGeometry<dim>(V.mesh(), c);
+    const NodeList nodes = V.cellNodes(c);
+    const double b = a.pressureFactor(c);
+    for (int q = 0; q < rule.size(); ++q) {
+      const auto& l = rule.barycentric[q];
+      const double value = alphaP(c, l, global<dim>(g.point(l)));
+      if (value == 0.0) continue;
+      basisGradients<dim>(V.degree(), l, g, grad);
+      const double w = g.measure * rule.weights[q] * b * value;
+      // div (φ_i e_r) = ∂_r φ_i: dof (i, r) takes w ∂_r φ_i.
+      for (int i = 0; i < nodes.size; ++i) F.segment<dim>(dim * nodes[i]) += w * grad[i];
+    }
+  }
+  return F;
+}
+
 /// The vertices of facet k of a flat list (d per facet) as the kernels see them.
 template <int dim>
 SimplexFacet<dim> facetGeometry(const LagrangeSpace& V, const Index* vertices) {
@@ -282,6 +308,37 @@ Eigen::VectorXd ElasticityAssembler::bodyForce(const Vector2& f) const {
 Eigen::VectorXd ElasticityAssembler::bodyForce(const VectorField& f) const {
   return dispatch(space_->mesh(),
                   [&](auto d) { return assembleBodyForce<decltype(d)::value>(*space_, f); });
+}
+
+double ElasticityAssembler::pressureFactor(Index cell) const {
+  const Material& m = materials_.ofCell(cell);
+  if (space_->dim() == 3 || !m.planeStress()) return 1.0;
+  return 2 * m.mu() / (m.lambda() + 2 * m.mu());
+}
+
+Eigen::VectorXd ElasticityAssembler::pressureLoad(const CellScalarField& alphaP) const {
+  return dispatch(space_->mesh(), [&](auto d) {
+    constexpr int dim = decltype(d)::value;
+    return assemblePressureLoad<dim>(
+        *space_, *this,
+        [&](Index c, const Barycentric<dim>&, const Point& x) { return alphaP(c, x); });
+  });
+}
+
+Eigen::VectorXd ElasticityAssembler::pressureLoad(const Eigen::VectorXd& alphaPAtPoints) const {
+  const Mesh& mesh = space_->mesh();
+  FRICTION_ASSERT(alphaPAtPoints.size() == static_cast<Eigen::Index>(mesh.points.size()),
+                  "one value per mesh point");
+  return dispatch(mesh, [&](auto d) {
+    constexpr int dim = decltype(d)::value;
+    return assemblePressureLoad<dim>(*space_, *this,
+                                     [&](Index c, const Barycentric<dim>& l, const Point&) {
+                                       double value = 0.0;
+                                       for (int v = 0; v <= dim; ++v)
+                                         value += l[v] * alphaPAtPoints[mesh.cellVertex(c, v)];
+                                       return value;
+                                     });
+  });
 }
 
 Eigen::VectorXd ElasticityAssembler::traction(int label, const Point& g) const {

@@ -1,8 +1,8 @@
 // ElasticityAssembler: the global stiffness matrix, load vectors, facet mass matrices and
 // point evaluation of stress and strain for P1 / P2 elasticity on triangles (plane strain or
 // stress) and tetrahedra (docs/method.md §1, §4, §7; the facet mass is the M of the traction
-// recovery (53)). Each call dispatches once on the mesh's dimension to the element kernels of
-// Simplex.hpp.
+// recovery (53); the pore pressure's load ∫ α_B p div v of §11). Each call dispatches once on
+// the mesh's dimension to the element kernels of Simplex.hpp.
 //
 // Conventions: K u = F with u the interleaved nodal displacements of LagrangeSpace
 // [m], F the nodal forces [N; N per m of thickness in 2D], K = ∫ ε(φ_i) : C : ε(φ_j) [N/m].
@@ -26,6 +26,9 @@ namespace friction {
 /// A vector field of position x [m], e.g. a body force [N/m³] or a traction [Pa]; in 2D it
 /// is called with z = 0 and its z component is ignored.
 using VectorField = std::function<Point(const Point&)>;
+/// A scalar field of the cell and the position x [m] in it (z = 0 in 2D), e.g. a pore pressure
+/// [Pa] that is constant per region (the cell says which) or smooth (x says where).
+using CellScalarField = std::function<double(Index cell, const Point& x)>;
 /// A tensor field of position, e.g. a displacement gradient G(i, j) = ∂u_i/∂x_j; in 2D its
 /// top-left 2 × 2 block is used.
 using TensorField = std::function<Eigen::Matrix3d(const Point&)>;
@@ -63,6 +66,21 @@ class ElasticityAssembler {
   Eigen::VectorXd bodyForce(const Vector2& f) const;
   /// Load vector of a body force f(x) [N/m³], by a degree-5 rule per cell.
   Eigen::VectorXd bodyForce(const VectorField& f) const;
+
+  /// Load vector of a pore pressure acting through a Biot coefficient (docs/method.md §12):
+  /// F_i = ∫_Ω b · αp · div φ_i [N; N per m in 2D], with αp [Pa] = α_B p, given per cell and
+  /// point by `alphaP` and integrated by a rule exact for αp linear in each cell (degree 1
+  /// for P1, 2 for P2). It is the load of the total stress σ = C:ε − αp I: positive αp pushes
+  /// outwards (a free body expands). b = 1 in 3D and in plane strain; in plane stress (σ_zz
+  /// = 0 in a thin plate, so the pressure expands it across its thickness too) b = 2μ/(λ + 2μ)
+  /// = (1 − 2ν)/(1 − ν) of the cell's material, the in-plane part of −αp I that remains once
+  /// ε_zz is eliminated.
+  Eigen::VectorXd pressureLoad(const CellScalarField& alphaP) const;
+  /// The same for αp given at the mesh's points [Pa] (one value per mesh point, the
+  /// vertices; a P2 space's midpoints are not used), interpolated linearly in each cell.
+  Eigen::VectorXd pressureLoad(const Eigen::VectorXd& alphaPAtPoints) const;
+  /// b of pressureLoad for a cell: 1, or (1 − 2ν)/(1 − ν) in plane stress.
+  double pressureFactor(Index cell) const;
 
   /// Load vector of a constant traction g [Pa] on the facets with this label:
   /// F_i = ∫_patch g · φ_i. The traction is the force per area applied to the body (for an

@@ -32,7 +32,51 @@ bool regionNumberOf(const std::string& word, int& value) {
   return true;
 }
 
+/// The regions of the mesh by number: those with cells, and those the mesh names (gmsh may
+/// name a physical group that holds no cell).
+std::map<int, MaterialMap::Region> regionsOf(const Mesh& mesh) {
+  std::map<int, MaterialMap::Region> regions;
+  for (int r : mesh.cellRegion) ++regions[r].cells;
+  for (const auto& [number, name] : mesh.regionNames) regions[number].name = name;
+  for (auto& [number, r] : regions) r.number = number;
+  return regions;
+}
+
+/// "reservoir (region1)" or "region3", per region: the messages' list.
+std::vector<std::string> availableRegions(const std::map<int, MaterialMap::Region>& regions) {
+  std::vector<std::string> available;
+  for (const auto& [number, r] : regions)
+    available.push_back(r.name.empty() ? "region" + std::to_string(number)
+                                       : r.name + " (region" + std::to_string(number) + ")");
+  return available;
+}
+
 }  // namespace
+
+int meshRegionOf(const std::string& key, const SourceLocation& where, const Mesh& mesh,
+                 bool withDefault) {
+  const std::map<int, MaterialMap::Region> regions = regionsOf(mesh);
+  for (const auto& [number, r] : regions)
+    if (r.name == key) return number;
+  int number = 0;
+  if (regionNumberOf(key, number) && regions.count(number)) return number;
+  std::vector<std::string> candidates;
+  if (withDefault) candidates.push_back("default");
+  for (const auto& [n, r] : regions) {
+    if (!r.name.empty()) candidates.push_back(r.name);
+    candidates.push_back("region" + std::to_string(n));
+  }
+  throw InputError(
+      where,
+      "'" + key + "' is no region of the mesh " + mesh.source + suggestionText(key, candidates) +
+          " (regions: " + joinWords(availableRegions(regions)) +
+          (withDefault ? "; an entry is a region's name, region<number>, or 'default'"
+                       : "; an entry is a region's name or region<number>") +
+          (mesh.regionNames.empty() ? "; the mesh names no region (a split mesh keeps the names "
+                                      "only when its cells lie in several regions): use "
+                                      "region<number>)"
+                                    : ")"));
+}
 
 MaterialMap::MaterialMap(const Material& material) : materials_{material} {}
 
@@ -57,19 +101,8 @@ MaterialMap MaterialMap::read(const Dictionary& dict, const Mesh& mesh) {
 
   // The regions of the mesh: those with cells, and those the mesh names (gmsh may name a
   // physical group that holds no cell).
-  std::map<int, Region> regions;
-  for (int r : mesh.cellRegion) ++regions[r].cells;
-  for (const auto& [number, name] : mesh.regionNames) regions[number].name = name;
-  for (auto& [number, r] : regions) r.number = number;
-  std::vector<std::string> available;
-  for (const auto& [number, r] : regions)
-    available.push_back(r.name.empty() ? "region" + std::to_string(number)
-                                       : r.name + " (region" + std::to_string(number) + ")");
-  std::vector<std::string> candidates{"default"};
-  for (const auto& [number, r] : regions) {
-    if (!r.name.empty()) candidates.push_back(r.name);
-    candidates.push_back("region" + std::to_string(number));
-  }
+  std::map<int, Region> regions = regionsOf(mesh);
+  std::vector<std::string> available = availableRegions(regions);
 
   MaterialMap map;
   int defaultMaterial = -1;
@@ -86,21 +119,7 @@ MaterialMap MaterialMap::read(const Dictionary& dict, const Mesh& mesh) {
                      dict.scope() + "), not inside a region's entry");
     Region* target = nullptr;
     if (key != "default") {
-      for (auto& [number, r] : regions)
-        if (r.name == key) target = &r;
-      int number = 0;
-      if (!target && regionNumberOf(key, number) && regions.count(number))
-        target = &regions[number];
-      if (!target)
-        entries.fail(key, "'" + key + "' is no region of the mesh " + mesh.source +
-                              suggestionText(key, candidates) +
-                              " (regions: " + joinWords(available) +
-                              "; an entry is a region's name, region<number>, or 'default'" +
-                              (mesh.regionNames.empty()
-                                   ? "; the mesh names no region (a split mesh keeps the names "
-                                     "only when its cells lie in several regions): use "
-                                     "region<number>)"
-                                   : ")"));
+      target = &regions[meshRegionOf(key, entries.location(key), mesh, true)];
       if (!target->entry.empty())
         entries.fail(key, "region " + describe(*target, mesh.dim) + " has two entries, '" +
                               target->entry + "' and '" + key + "' (expected one per region)");

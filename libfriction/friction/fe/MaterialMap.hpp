@@ -16,6 +16,15 @@ namespace friction {
 
 class Dictionary;
 struct Mesh;
+struct SourceLocation;
+
+/// The number of the region of `mesh` that the dictionary key `key` (at `where`) names: the
+/// mesh's name for the region, or region<N> with N its number. Otherwise an InputError at
+/// `where` naming the key, with a suggestion and the regions available. `withDefault`: the
+/// key may also be 'default' (MaterialMap's entries; the caller handles it), which the
+/// message then offers.
+int meshRegionOf(const std::string& key, const SourceLocation& where, const Mesh& mesh,
+                 bool withDefault = false);
 
 class MaterialMap {
  public:

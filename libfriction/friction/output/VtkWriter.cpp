@@ -99,7 +99,7 @@ int vtkStateCode(const std::string& state) {
 
 void writeVtu(const std::string& path, const LagrangeSpace& space,
               const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
-              const std::function<Eigen::Matrix3d(const Point&)>& initialStress) {
+              const std::function<Eigen::Matrix3d(Index, const Point&)>& stressOffset) {
   if (u.size() != space.numDofs())
     throw std::invalid_argument("writeVtu: u has " + std::to_string(u.size()) +
                                 " values, the space " + std::to_string(space.numDofs()) + " dofs");
@@ -144,7 +144,7 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
       const Point centroid =
           (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]] + mesh.points[t[3]]) / 4.0;
       Eigen::Matrix3d sigma = assembler.stress(u, c, centroid);
-      if (initialStress) sigma += initialStress(centroid);
+      if (stressOffset) sigma += stressOffset(c, centroid);
       sxx = sigma(0, 0), syy = sigma(1, 1), szz = sigma(2, 2);
       sxy = sigma(0, 1), syz = sigma(1, 2), sxz = sigma(0, 2);
       s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
@@ -156,9 +156,13 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
                                 mesh.points[t[2]].head<2>()) /
                                3.0;
       Eigen::Matrix2d sigma = assembler.stress(u, c, centroid);
-      if (initialStress)
-        sigma += initialStress(Point(centroid.x(), centroid.y(), 0.0)).topLeftCorner<2, 2>();
       szz = assembler.material(c).outOfPlaneStress(assembler.strain(u, c, centroid));
+      if (stressOffset) {
+        const Eigen::Matrix3d offset = stressOffset(c, Point(centroid.x(), centroid.y(), 0.0));
+        sigma += offset.topLeftCorner<2, 2>();
+        // Only a non-zero σ_zz is added: 0 + (−0) would turn a −0 of the files into 0.
+        if (offset(2, 2) != 0.0) szz += offset(2, 2);
+      }
       sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
       s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
         << finite(sxy) << " 0 0\n";
@@ -537,7 +541,7 @@ int VtkSeries::resume(const std::function<bool(const std::string&)>& keep,
 void VtkSeries::write(double time, const std::string& timeName, const LagrangeSpace& space,
                       const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
                       const std::vector<Fracture>& fractures, int precision,
-                      const std::function<Eigen::Matrix3d(const Point&)>& initialStress) {
+                      const std::function<Eigen::Matrix3d(Index, const Point&)>& stressOffset) {
   std::error_code ec;
   fs::create_directories(fs::path(vtkDir_) / "fractures", ec);
   if (ec)
@@ -548,7 +552,7 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
   entry.time = time;
   std::vector<std::string> written;
   try {
-    writeVtu(vtuPath(timeName), space, assembler, u, precision, initialStress);
+    writeVtu(vtuPath(timeName), space, assembler, u, precision, stressOffset);
     written.push_back(vtuPath(timeName));
     entry.files.push_back(fs::path(vtuPath(timeName)).filename().string());
     entry.names.push_back("mesh");

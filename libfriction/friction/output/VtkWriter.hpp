@@ -66,12 +66,13 @@ int vtkStateCode(const std::string& state);
 ///    (Int32), the mesh's region number per cell.
 /// `space` must be the space `assembler` was built on and `u` its interleaved dof vector
 /// (dim · numNodes values [m]). `precision`: significant digits of every number.
-/// `initialStress`, if given, is an in-situ stress σ⁰(x) [Pa] (symmetric 3×3) added to the
-/// stress of `u` at the centroid: 3D the whole tensor; 2D its upper-left 2×2 block to the
-/// in-plane stress (σ⁰_zz is not used: σ_zz stays Material::outOfPlaneStress's).
+/// `stressOffset`, if given, is what makes the stress of `u` the total stress [Pa] (symmetric
+/// 3×3) in cell c at x: an in-situ stress σ⁰(x), a pore pressure's −α_B Δp_b I
+/// (Effect::stressOffset), added at the centroid: 3D the whole tensor; 2D its upper-left 2×2
+/// block to the in-plane stress and its zz entry to Material::outOfPlaneStress's σ_zz.
 void writeVtu(const std::string& path, const LagrangeSpace& space,
               const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
-              const std::function<Eigen::Matrix3d(const Point&)>& initialStress = {});
+              const std::function<Eigen::Matrix3d(Index, const Point&)>& stressOffset = {});
 
 /// Write one fracture's rows (FieldWriter.hpp) as VTK XML poly data (ASCII) at `path`.
 ///  * 2D (`triangles` empty): the points (x, y, 0) [m] in row order (arclength order) joined by
@@ -135,7 +136,7 @@ class VtkSeries {
   void write(double time, const std::string& timeName, const LagrangeSpace& space,
              const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
              const std::vector<Fracture>& fractures, int precision,
-             const std::function<Eigen::Matrix3d(const Point&)>& initialStress = {});
+             const std::function<Eigen::Matrix3d(Index, const Point&)>& stressOffset = {});
 
   /// Take over an earlier run's collection up to a restart: read the existing .pvd (if any),
   /// keep the times whose name `keep` accepts, and delete the files of this layout whose time

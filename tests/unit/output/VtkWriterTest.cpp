@@ -303,7 +303,7 @@ std::vector<std::vector<double>> stressRows(const std::string& vtu) {
 }
 
 // σ⁰ with six distinct components, so that a component put in the wrong place shows [Pa].
-Eigen::Matrix3d initialStress3d(const Point&) {
+Eigen::Matrix3d initialStress3d(Index, const Point&) {
   Eigen::Matrix3d s;
   s << -3e6, 4e5, 6e5,  //
       4e5, -2e6, 5e5,   //
@@ -313,11 +313,11 @@ Eigen::Matrix3d initialStress3d(const Point&) {
 
 }  // namespace
 
-TEST_CASE("writeVtu adds an initial stress: the whole tensor in 3D, its in-plane block in 2D",
+TEST_CASE("writeVtu adds a stress offset: the whole tensor in 3D, its in-plane block and zz in 2D",
           "[output][vtk][3d]") {
   const fs::path dir = freshTempDir("initial");
   const Material material = Material::fromYoungPoisson(kE, kNu, false);
-  const Eigen::Matrix3d s0 = initialStress3d(Point::Zero());
+  const Eigen::Matrix3d s0 = initialStress3d(0, Point::Zero());
 
   // u = 0: the written stress is σ⁰ alone (to the written digits: 17).
   const Mesh cube = test::unitCubeMesh(1);
@@ -329,7 +329,8 @@ TEST_CASE("writeVtu adds an initial stress: the whole tensor in 3D, its in-plane
   for (const auto& r : rows3)
     CHECK(r == std::vector<double>{s0(0, 0), s0(1, 1), s0(2, 2), s0(0, 1), s0(1, 2), s0(0, 2)});
 
-  // 2D: σ⁰_zz, σ⁰_yz and σ⁰_xz are not used; σ_zz is Hooke's out-of-plane stress (0 at u = 0).
+  // 2D: σ⁰_yz and σ⁰_xz are not used; σ_zz is Hooke's out-of-plane stress (0 at u = 0) plus
+  // the offset's zz (a pore pressure's −α_B Δp_b in plane strain; initialStress gives 0).
   const Mesh square = test::unitSquareMesh(2);
   const LagrangeSpace space2(square, 1);
   writeVtu((dir / "b.vtu").string(), space2, ElasticityAssembler(space2, material),
@@ -337,6 +338,6 @@ TEST_CASE("writeVtu adds an initial stress: the whole tensor in 3D, its in-plane
   const auto rows2 = stressRows(readFile(dir / "b.vtu"));
   REQUIRE(rows2.size() == static_cast<std::size_t>(square.numCells()));
   for (const auto& r : rows2)
-    CHECK(r == std::vector<double>{s0(0, 0), s0(1, 1), 0, s0(0, 1), 0, 0});
+    CHECK(r == std::vector<double>{s0(0, 0), s0(1, 1), s0(2, 2), s0(0, 1), 0, 0});
   fs::remove_all(dir);
 }
