@@ -18,6 +18,7 @@
 
 #include <Eigen/Geometry>
 
+#include "friction/case/RunCase.hpp"
 #include "friction/core/Assert.hpp"
 #include "friction/core/OutputError.hpp"
 #include "friction/core/Parallel.hpp"
@@ -284,10 +285,22 @@ void FrictionCase::printSettings(std::ostream& log) const {
 }
 
 FactorStatus FrictionCase::setup(std::ostream& log) {
-  system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
-  bcs_->fix(system_->dirichlet());
-  findFloatingParts();
+  // Several ranks share the factorisation: they agree (parallel::agree) that each got there,
+  // and that each finished what follows it, so that no failure leaves the others waiting in a
+  // shared call.
+  parallel::agree(
+      [&] {
+        system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
+        bcs_->fix(system_->dirichlet());
+        findFloatingParts();
+      },
+      exitStatusOf);
   const FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());
+  parallel::agree([&] { finishSetup(status, log); }, exitStatusOf);
+  return status;
+}
+
+void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
   const auto& nodes = system_->controlNodes();
   const Eigen::Index n = static_cast<Eigen::Index>(nodes.size());
 
@@ -425,7 +438,6 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
         << "\n";
   printSettings(log);
   log << "\n";
-  return status;
 }
 
 std::string FloatingPart::describe() const {
@@ -812,12 +824,18 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   const Eigen::Index controlSize = opening_ ? perNode * n + n : perNode * n;
   Eigen::VectorXd beta = Eigen::VectorXd::Zero(controlSize);
   lastBeta_ = beta;
-  if (!outputPrepared_) prepareOutput(false, log);
+  // Rank 0 prepares the outputs (postProcessing/ may be a file, the folder read-only): every
+  // rank learns whether it could before the first shared solve (parallel::agree).
   long first = 1;
-  if (time_->startFromLatest())
-    first = restart(log);
-  else
-    trimOutputs([](const std::string&) { return false; }, true);
+  parallel::agree(
+      [&] {
+        if (!outputPrepared_) prepareOutput(false, log);
+        if (time_->startFromLatest())
+          first = restart(log);
+        else
+          trimOutputs([](const std::string&) { return false; }, true);
+      },
+      exitStatusOf);
   if (!time_->precisionNote().empty()) log << time_->precisionNote() << "\n\n";
   Eigen::VectorXd& lastBeta = lastBeta_;
   const std::string controlDict = (fs::path(caseDir_) / "system" / "controlDict").string();
@@ -922,7 +940,6 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     for (const auto& h : r.report.history)
       lines << time_->timeName(r.time) << " " << h.iteration << " " << h.J << " " << h.relResidual
             << " " << std::max(h.stepNorm, 0.0) << "\n";
-    if (history_) history_->append(lines.str());  // rank 0's only
 
     // Stop requests: the user edited stopAt in controlDict, or sent SIGINT/SIGTERM.
     std::error_code stampError;
@@ -953,17 +970,25 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
                          stopAt == TimeControl::StopAt::noWriteNow ||
                          (stopAt == TimeControl::StopAt::nextWrite && time_->writes(k));
     const bool write = time_->writes(k) || signalled || stopAt == TimeControl::StopAt::writeNow;
-    if (write && stopAt != TimeControl::StopAt::noWriteNow) {
-      try {
-        writeTimeFolder(r, last_.beta, k);
-      } catch (const OutputError&) {
-        throw;
-      } catch (const InputError& e) {
-        // The case was read fine: a write that fails is the disk's or the system's doing.
-        throw OutputError(e.location(), e.message());
-      }
-      r.written = true;
-    }
+    // Rank 0 writes (the history, the time folder); every rank learns whether it could before
+    // the next shared solve, so that a full disk stops them all (exit 6) instead of leaving the
+    // others waiting for rank 0 in it.
+    const bool writeFolder = write && stopAt != TimeControl::StopAt::noWriteNow;
+    parallel::agree(
+        [&] {
+          if (history_) history_->append(lines.str());  // rank 0's only
+          if (!writeFolder) return;
+          try {
+            writeTimeFolder(r, last_.beta, k);
+          } catch (const OutputError&) {
+            throw;
+          } catch (const InputError& e) {
+            // The case was read fine: a write that fails is the disk's or the system's doing.
+            throw OutputError(e.location(), e.message());
+          }
+        },
+        exitStatusOf);
+    r.written = writeFolder;
     log << "Time = " << time_->timeName(r.time)
         << (r.reused ? "  loads unchanged: previous solution reused" : "") << "  iterations "
         << r.report.iterations << "  backSubstitutions " << r.backSubstitutions

@@ -128,6 +128,9 @@ class FrictionCase {
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.
   void judgeStep(StepResult& r) const;
   void findFloatingParts();
+  /// What setup() does after the factorisation: the friction coefficients and cohesion per
+  /// node, γ, the optimiser's scale, and the log of it all.
+  void finishSetup(FactorStatus status, std::ostream& log);
   /// Mean length of the fracture edges [m] (0 without fractures): the h of γ's default.
   double meanFractureEdge() const;
   Eigen::VectorXd loadVector(double t) const;
