@@ -295,9 +295,35 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
         findFloatingParts();
       },
       exitStatusOf);
-  const FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());
+  FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());
+  // A part that nothing holds, or a direction no patch fixes: K is singular, whatever its
+  // pivots say. The backends' pivot checks see it on one rank, but MUMPS on several does not
+  // (measured on a free 3D body, cases/pennyCrack with every patch free: INFOG(28) null pivots
+  // 5 on one rank, 0 on 2 and 3 ranks, with no negative pivot either, even at CNTL(3) = 1e-2,
+  // without the Schur complement, scaling or ScaLAPACK; the run then "converged" on nonsense).
+  // The mesh and the patches, the same on every rank, decide alike for every rank count.
+  if (status == FactorStatus::ok && canMoveRigidly()) status = FactorStatus::notPositiveDefinite;
+  factorStatus_ = status;
   parallel::agree([&] { finishSetup(status, log); }, exitStatusOf);
   return status;
+}
+
+std::vector<std::string> FrictionCase::freeComponents() const {
+  std::vector<std::string> free;
+  for (int c = 0; c < split_.mesh.dim; ++c) {
+    bool fixes = false;
+    for (const auto& p : bcs_->patches())
+      fixes |=
+          p.type == BoundaryConditions::Type::fixedDisplacement && fixesComponent(p.components, c);
+    if (!fixes) free.push_back(std::string(1, "xyz"[c]));
+  }
+  return free;
+}
+
+bool FrictionCase::canMoveRigidly() const {
+  for (const FloatingPart& p : floating_)
+    if (!p.heldThroughFracture) return true;
+  return !freeComponents().empty();
 }
 
 void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
@@ -576,7 +602,7 @@ std::string FrictionCase::factorFailureDiagnosis() const {
   const SparseFactor& f = system_->factorization();
   std::ostringstream s;
   s << std::setprecision(4) << "the stiffness matrix could not be factored ("
-    << toString(f.status()) << "): ";
+    << toString(factorStatus_) << "): ";
   // 1. Scaling: entries beyond double precision (the case's units).
   if (!std::isfinite(f.maxAbsEntry()) || f.maxAbsEntry() > 1e250) {
     s << "its entries overflow double precision (largest |K_ij| " << f.maxAbsEntry()
@@ -598,14 +624,11 @@ std::string FrictionCase::factorFailureDiagnosis() const {
   }
   // 3. Held, but by rollers that leave a direction free.
   const Mesh& m = split_.mesh;
-  std::vector<std::string> fixed, free;
-  for (int c = 0; c < m.dim; ++c) {
-    bool fixes = false;
-    for (const auto& p : bcs_->patches())
-      fixes |=
-          p.type == BoundaryConditions::Type::fixedDisplacement && fixesComponent(p.components, c);
-    (fixes ? fixed : free).push_back(std::string(1, "xyz"[c]));
-  }
+  const std::vector<std::string> free = freeComponents();
+  std::vector<std::string> fixed;
+  for (int c = 0; c < m.dim; ++c)
+    if (std::find(free.begin(), free.end(), std::string(1, "xyz"[c])) == free.end())
+      fixed.push_back(std::string(1, "xyz"[c]));
   if (!free.empty()) {
     s << "every part touches a Dirichlet patch, but they fix only the " << joinWords(fixed)
       << " component" << (fixed.size() == 1 ? "" : "s") << ": the body can slide along "
