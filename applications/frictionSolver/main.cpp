@@ -98,10 +98,8 @@ int main(int argc, char** argv) {
   const int status = runCase(args["case"].as<std::string>(), run, std::cout, std::cerr);
   std::cout.flush();
   std::cout.rdbuf(logBuffer);
-  // An output or system error may strike one rank only (rank 0 writes; memory runs out on
-  // one): the others would wait in a shared solve forever, so stop them all with its status.
-  // Input errors are found by every rank alike while reading, before any shared work.
-  if (status == 6 && parallel::size() > 1) parallel::abort(status);
+  // A failure on any rank has reached every rank (runCase: they agree after what may fail on
+  // one alone, and end every rank at once where they cannot): each returns the same status.
   parallel::finalize();
   return status;
 }

@@ -18,6 +18,7 @@
 
 #include <Eigen/Geometry>
 
+#include "friction/case/RunCase.hpp"
 #include "friction/core/Assert.hpp"
 #include "friction/core/OutputError.hpp"
 #include "friction/core/Parallel.hpp"
@@ -350,24 +351,63 @@ void FrictionCase::printSettings(std::ostream& log) const {
 }
 
 FactorStatus FrictionCase::setup(std::ostream& log) {
-  system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
-  // Absolute γ and γ_n against their range around E/h, before the factorisation's work. Where
-  // 1e8 E/h overflows, the case's units do (E near 1e300 Pa): the overflow diagnoses of the
-  // factorisation and of the step say so, and name the cure.
-  if (const double h = meanFractureEdge();
-      h > 0 && std::isfinite(gammaRelativeMax * youngScale_ / h)) {
-    const double scale = youngScale_ / h;
-    const auto checkAbsolute = [scale](const char* key, double value, const SourceLocation& at) {
-      if (!(value >= gammaRelativeMin * scale && value <= gammaRelativeMax * scale))
-        throw InputError(at, gammaRangeMessage(key, value, scale));
-    };
-    if (gammaAbsolute_) checkAbsolute("gamma", gamma_, gammaLocation_);
-    if (gammaNGiven_ == GammaNGiven::absolute)
-      checkAbsolute("gammaNormal", gammaN_, gammaNLocation_);
+  // Several ranks share the factorisation: they agree (parallel::agree) that each got there,
+  // and that each finished what follows it, so that no failure leaves the others waiting in a
+  // shared call.
+  parallel::agree(
+      [&] {
+        system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
+        // Absolute γ and γ_n against their range around E/h, before the factorisation's work.
+        // Where 1e8 E/h overflows, the case's units do (E near 1e300 Pa): the overflow
+        // diagnoses of the factorisation and of the step say so, and name the cure.
+        if (const double h = meanFractureEdge();
+            h > 0 && std::isfinite(gammaRelativeMax * youngScale_ / h)) {
+          const double scale = youngScale_ / h;
+          const auto checkAbsolute = [scale](const char* key, double value,
+                                             const SourceLocation& at) {
+            if (!(value >= gammaRelativeMin * scale && value <= gammaRelativeMax * scale))
+              throw InputError(at, gammaRangeMessage(key, value, scale));
+          };
+          if (gammaAbsolute_) checkAbsolute("gamma", gamma_, gammaLocation_);
+          if (gammaNGiven_ == GammaNGiven::absolute)
+            checkAbsolute("gammaNormal", gammaN_, gammaNLocation_);
+        }
+        bcs_->fix(system_->dirichlet());
+        findFloatingParts();
+      },
+      exitStatusOf);
+  FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());
+  // A part that nothing holds, or a direction no patch fixes: K is singular, whatever its
+  // pivots say. The backends' pivot checks see it on one rank, but MUMPS on several does not
+  // (measured on a free 3D body, cases/pennyCrack with every patch free: INFOG(28) null pivots
+  // 5 on one rank, 0 on 2 and 3 ranks, with no negative pivot either, even at CNTL(3) = 1e-2,
+  // without the Schur complement, scaling or ScaLAPACK; the run then "converged" on nonsense).
+  // The mesh and the patches, the same on every rank, decide alike for every rank count.
+  if (status == FactorStatus::ok && canMoveRigidly()) status = FactorStatus::notPositiveDefinite;
+  factorStatus_ = status;
+  parallel::agree([&] { finishSetup(status, log); }, exitStatusOf);
+  return status;
+}
+
+std::vector<std::string> FrictionCase::freeComponents() const {
+  std::vector<std::string> free;
+  for (int c = 0; c < split_.mesh.dim; ++c) {
+    bool fixes = false;
+    for (const auto& p : bcs_->patches())
+      fixes |=
+          p.type == BoundaryConditions::Type::fixedDisplacement && fixesComponent(p.components, c);
+    if (!fixes) free.push_back(std::string(1, "xyz"[c]));
   }
-  bcs_->fix(system_->dirichlet());
-  findFloatingParts();
-  const FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());
+  return free;
+}
+
+bool FrictionCase::canMoveRigidly() const {
+  for (const FloatingPart& p : floating_)
+    if (!p.heldThroughFracture) return true;
+  return !freeComponents().empty();
+}
+
+void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
   const auto& nodes = system_->controlNodes();
   const Eigen::Index n = static_cast<Eigen::Index>(nodes.size());
 
@@ -540,7 +580,6 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
         << "\n";
   printSettings(log);
   log << "\n";
-  return status;
 }
 
 std::string FloatingPart::describe() const {
@@ -679,7 +718,7 @@ std::string FrictionCase::factorFailureDiagnosis() const {
   const SparseFactor& f = system_->factorization();
   std::ostringstream s;
   s << std::setprecision(4) << "the stiffness matrix could not be factored ("
-    << toString(f.status()) << "): ";
+    << toString(factorStatus_) << "): ";
   // 1. Scaling: entries beyond double precision (the case's units).
   if (!std::isfinite(f.maxAbsEntry()) || f.maxAbsEntry() > 1e250) {
     s << "its entries overflow double precision (largest |K_ij| " << f.maxAbsEntry()
@@ -701,14 +740,11 @@ std::string FrictionCase::factorFailureDiagnosis() const {
   }
   // 3. Held, but by rollers that leave a direction free.
   const Mesh& m = split_.mesh;
-  std::vector<std::string> fixed, free;
-  for (int c = 0; c < m.dim; ++c) {
-    bool fixes = false;
-    for (const auto& p : bcs_->patches())
-      fixes |=
-          p.type == BoundaryConditions::Type::fixedDisplacement && fixesComponent(p.components, c);
-    (fixes ? fixed : free).push_back(std::string(1, "xyz"[c]));
-  }
+  const std::vector<std::string> free = freeComponents();
+  std::vector<std::string> fixed;
+  for (int c = 0; c < m.dim; ++c)
+    if (std::find(free.begin(), free.end(), std::string(1, "xyz"[c])) == free.end())
+      fixed.push_back(std::string(1, "xyz"[c]));
   if (!free.empty()) {
     s << "every part touches a Dirichlet patch, but they fix only the " << joinWords(fixed)
       << " component" << (fixed.size() == 1 ? "" : "s") << ": the body can slide along "
@@ -1086,12 +1122,18 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   const Eigen::Index controlSize = opening_ ? perNode * n + n : perNode * n;
   Eigen::VectorXd beta = Eigen::VectorXd::Zero(controlSize);
   lastBeta_ = beta;
-  if (!outputPrepared_) prepareOutput(false, log);
+  // Rank 0 prepares the outputs (postProcessing/ may be a file, the folder read-only): every
+  // rank learns whether it could before the first shared solve (parallel::agree).
   long first = 1;
-  if (time_->startFromLatest())
-    first = restart(log);
-  else
-    trimOutputs([](const std::string&) { return false; }, true, log);
+  parallel::agree(
+      [&] {
+        if (!outputPrepared_) prepareOutput(false, log);
+        if (time_->startFromLatest())
+          first = restart(log);
+        else
+          trimOutputs([](const std::string&) { return false; }, true, log);
+      },
+      exitStatusOf);
   if (!time_->precisionNote().empty()) log << time_->precisionNote() << "\n\n";
   if (time_->steps() != TimeControl::Steps::uniform) log << "Time: " << time_->describe() << "\n\n";
   Eigen::VectorXd& lastBeta = lastBeta_;
@@ -1201,9 +1243,6 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     for (const auto& h : r.report.history)
       lines << time_->timeName(r.time) << " " << h.iteration << " " << h.J << " " << h.relResidual
             << " " << std::max(h.stepNorm, 0.0) << "\n";
-    if (history_) history_->append(lines.str());  // rank 0's only
-    for (std::size_t f = 0; f < fractureHistories_.size(); ++f)
-      fractureHistories_[f]->append(historyLine(f, r.time));
 
     // Stop requests: the user edited stopAt in controlDict, or sent SIGINT/SIGTERM.
     std::error_code stampError;
@@ -1234,17 +1273,27 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
                          stopAt == TimeControl::StopAt::noWriteNow ||
                          (stopAt == TimeControl::StopAt::nextWrite && time_->writes(k));
     const bool write = time_->writes(k) || signalled || stopAt == TimeControl::StopAt::writeNow;
-    if (write && stopAt != TimeControl::StopAt::noWriteNow) {
-      try {
-        writeTimeFolder(r, last_.beta, k);
-      } catch (const OutputError&) {
-        throw;
-      } catch (const InputError& e) {
-        // The case was read fine: a write that fails is the disk's or the system's doing.
-        throw OutputError(e.location(), e.message());
-      }
-      r.written = true;
-    }
+    // Rank 0 writes (the history, the time folder); every rank learns whether it could before
+    // the next shared solve, so that a full disk stops them all (exit 6) instead of leaving the
+    // others waiting for rank 0 in it.
+    const bool writeFolder = write && stopAt != TimeControl::StopAt::noWriteNow;
+    parallel::agree(
+        [&] {
+          if (history_) history_->append(lines.str());  // rank 0's only
+          for (std::size_t f = 0; f < fractureHistories_.size(); ++f)
+            fractureHistories_[f]->append(historyLine(f, r.time));
+          if (!writeFolder) return;
+          try {
+            writeTimeFolder(r, last_.beta, k);
+          } catch (const OutputError&) {
+            throw;
+          } catch (const InputError& e) {
+            // The case was read fine: a write that fails is the disk's or the system's doing.
+            throw OutputError(e.location(), e.message());
+          }
+        },
+        exitStatusOf);
+    r.written = writeFolder;
     log << "Time = " << time_->timeName(r.time)
         << (r.reused ? "  loads unchanged: previous solution reused" : "") << "  iterations "
         << r.report.iterations << "  backSubstitutions " << r.backSubstitutions

@@ -139,6 +139,15 @@ class FrictionCase {
   void sanityNotes(std::ostream& log);
   std::vector<char> allOpenNoted_;
   bool largeDisplacementNoted_ = false;
+  /// The components ("x", "y", "z") that no fixedDisplacement patch fixes: the body can
+  /// translate along them.
+  std::vector<std::string> freeComponents() const;
+  /// Whether the body can move without strain: a part that nothing holds (floating_), or a
+  /// free component. K is then singular, whatever a factorisation's pivots say.
+  bool canMoveRigidly() const;
+  /// What setup() does after the factorisation: the friction coefficients and cohesion per
+  /// node, γ, the optimiser's scale, and the log of it all.
+  void finishSetup(FactorStatus status, std::ostream& log);
   /// Mean length of the fracture edges [m] (0 without fractures): the h of γ's default.
   double meanFractureEdge() const;
   Eigen::VectorXd loadVector(double t) const;
@@ -188,6 +197,9 @@ class FrictionCase {
   Eigen::VectorXd lastBeta_;
   std::string stoppedEarly_;
   std::vector<FloatingPart> floating_;
+  /// setup()'s verdict on the factorisation: the backend's, or notPositiveDefinite where the
+  /// body can move rigidly (canMoveRigidly()).
+  FactorStatus factorStatus_ = FactorStatus::failed;
   double diameter_ = 0;                  ///< diagonal of the mesh's bounding box [m]
   std::unique_ptr<VtkSeries> vtk_;       ///< ParaView files, when controlDict's writeVTK is on
   std::unique_ptr<AppendFile> history_;  ///< postProcessing/convergence.dat

@@ -44,16 +44,66 @@ struct Keep {
     if (to) *to = std::move(from);
   }
 };
+
+// The exit status of a failure and its message (without the leading newline), as frictionSolver
+// reports it.
+int describeFailure(const std::exception_ptr& error, const std::string& program,
+                    std::string& message) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const OutputError& e) {
+    // Not the user's input (OutputError is an InputError, so it comes first): exit 6.
+    message = program + ": error: " + e.what();
+    return 6;
+  } catch (const InputError& e) {
+    message = program + ": error: " + e.what();
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    message = program + ": error: " + e.path1().string() + ": " + e.code().message() + " (" +
+              e.what() + ")";
+    return 6;
+  } catch (const std::bad_alloc&) {
+    message = program + ": error: out of memory";
+    return 6;
+  } catch (const std::exception& e) {
+    message = program + ": internal error: " + e.what();
+    return 6;
+  } catch (...) {
+    message = program + ": internal error: an unknown exception";
+    return 6;
+  }
+}
 }  // namespace
+
+int exitStatusOf(const std::exception_ptr& error) {
+  std::string message;
+  return describeFailure(error, "", message);
+}
 
 int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostream& log,
             std::ostream& err, std::unique_ptr<FrictionCase>* kept) {
+  // Outside the try block: a failure on one rank alone must end every rank while the case, and
+  // with it the factor MUMPS shares between the ranks, still lives (its release is collective
+  // and would wait for the other ranks forever).
+  std::unique_ptr<FrictionCase> owned;
+  Keep keep{kept, owned};
+  const auto report = [&](const std::exception_ptr& error) {
+    std::string message;
+    const int status = describeFailure(error, options.program, message);
+    // The stack is unwound on the way, so TimeFolder's destructor has removed the step's
+    // partial folder.
+    log.flush();
+    err << "\n" << message << "\n";
+    return status;
+  };
   try {
-    // 2. Read and validate the whole case before any work.
+    // 2. Read and validate the whole case before any work. Every rank reads it; they agree
+    // (parallel::agree) after each part that may fail on one rank alone, before the next shared
+    // call.
     log << options.program;
     if (parallel::size() > 1) log << " (" << parallel::size() << " ranks)";
     log << "\n";
-    auto owned = std::make_unique<FrictionCase>(caseDir);
+    parallel::agree([&] { owned = std::make_unique<FrictionCase>(caseDir); }, exitStatusOf);
     FrictionCase& c = *owned;
     Keep keep{kept, owned};
     // One run at a time writes a case: the lock before anything is written or removed. Rank 0
@@ -74,14 +124,16 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     if (lockError) std::rethrow_exception(lockError);
     if (lockStatus != 0) return lockStatus;  // rank 0 said why
     // An earlier run's time folders are refused, continued (startFrom latestTime) or, with
-    // -overwrite, removed: before any work.
-    c.prepareOutput(options.overwrite, log, options.overwriteHint);
-    parallel::barrier();  // rank 0 has removed what -overwrite removes
+    // -overwrite, removed: before any work (rank 0 removes; the agreement waits for it).
+    parallel::agree([&] { c.prepareOutput(options.overwrite, log, options.overwriteHint); },
+                    exitStatusOf);
 
     // 3. Assemble and factor once.
     if (c.setup(log) != FactorStatus::ok) {
       log.flush();
-      err << options.program << ": error: " << c.factorFailureDiagnosis() << "\n";
+      // Every rank has the same verdict (setup()): rank 0 says it, as for the log.
+      if (parallel::isMaster())
+        err << options.program << ": error: " << c.factorFailureDiagnosis() << "\n";
       return 4;
     }
 
@@ -113,35 +165,16 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     }
     log << "\nEnd\n";
     return 0;
-  } catch (const OutputError& e) {
-    // Not the user's input (OutputError is an InputError, so it comes first): exit 6. Here and
-    // below the stack is unwound on the way, so TimeFolder's destructor has removed the step's
-    // partial folder.
-    log.flush();
-    err << "\n" << options.program << ": error: " << e.what() << "\n";
-    return 6;
-  } catch (const InputError& e) {
-    log.flush();
-    err << "\n" << options.program << ": error: " << e.what() << "\n";
-    return 1;
-  } catch (const std::filesystem::filesystem_error& e) {
-    log.flush();
-    err << "\n"
-        << options.program << ": error: " << e.path1().string() << ": " << e.code().message()
-        << " (" << e.what() << ")\n";
-    return 6;
-  } catch (const std::bad_alloc&) {
-    log.flush();
-    err << "\n" << options.program << ": error: out of memory\n";
-    return 6;
-  } catch (const std::exception& e) {
-    log.flush();
-    err << "\n" << options.program << ": internal error: " << e.what() << "\n";
-    return 6;
+  } catch (const parallel::RankFailure& e) {
+    // Every rank knows: each ends with the same status, the first where it failed says why.
+    if (e.cause()) report(e.cause());
+    return e.status();
   } catch (...) {
-    log.flush();
-    err << "\n" << options.program << ": internal error: an unknown exception\n";
-    return 6;
+    const int status = report(std::current_exception());
+    // This rank alone may have failed, in the middle of work the ranks share: the others
+    // would wait for it forever. End them all, with the status a serial run gives.
+    if (parallel::size() > 1) parallel::abort(status);
+    return status;
   }
 }
 

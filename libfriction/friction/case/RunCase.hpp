@@ -4,6 +4,7 @@
 // and frictionSolver's exit code.
 #pragma once
 
+#include <exception>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -32,6 +33,10 @@ struct RunCaseOptions {
 /// (after its run, or after the failure), for the caller to read its results.
 int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostream& log,
             std::ostream& err, std::unique_ptr<FrictionCase>* kept = nullptr);
+
+/// The exit code runCase gives for a failure (an exception caught): 1 for bad input, 6 for an
+/// output or system error. With several ranks, what they agree on (parallel::agree).
+int exitStatusOf(const std::exception_ptr& error);
 
 /// The largest resident set of this process so far [bytes]; 0 if unknown.
 double peakMemoryBytes();

@@ -3,7 +3,10 @@
 
 #include <dlfcn.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 
 #ifdef FRICTION_WITH_MPI
@@ -102,6 +105,11 @@ int maxOverRanks(int value) {
   return value;
 }
 
+void maxOverRanks(int* data, long count) {
+  if (size() > 1 && count > 0)
+    MPI_Allreduce(MPI_IN_PLACE, data, static_cast<int>(count), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+}
+
 double sumOverRanks(double value) {
   if (size() > 1) MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   return value;
@@ -136,6 +144,9 @@ std::vector<int> gatherOnMaster(const std::vector<int>& mine) {
 }
 
 void abort(int code) {
+  static std::atomic_flag once = ATOMIC_FLAG_INIT;
+  if (once.test_and_set())
+    for (;;) pause();  // another thread is ending the run
   if (size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
   std::exit(code);
 }
@@ -157,6 +168,7 @@ void barrier() {}
 void broadcast(double*, long, int) {}
 void broadcast(int*, long, int) {}
 int maxOverRanks(int value) { return value; }
+void maxOverRanks(int*, long) {}
 double sumOverRanks(double value) { return value; }
 double maxOverRanks(double value) { return value; }
 void sumOverRanks(double*, long) {}
@@ -164,6 +176,29 @@ std::vector<int> gatherOnMaster(const std::vector<int>& mine) { return mine; }
 void abort(int code) { std::exit(code); }
 int fortranCommunicator() { return 0; }
 #endif
+
+RankFailure::RankFailure(int status, std::exception_ptr cause)
+    : std::runtime_error("a rank failed (exit status " + std::to_string(status) + ")"),
+      status_(status),
+      cause_(std::move(cause)) {}
+
+void agree(const std::function<void()>& step, int (*statusOf)(const std::exception_ptr&)) {
+  if (size() <= 1) {
+    step();
+    return;
+  }
+  std::exception_ptr error;
+  try {
+    step();
+  } catch (...) {
+    error = std::current_exception();
+  }
+  // Exit statuses are positive: 0 says "no failure here". The second number finds the lowest
+  // rank that failed (the largest of −rank), the one that reports it.
+  int shared[2] = {error ? std::max(statusOf(error), 1) : 0, error ? -rank() : -size()};
+  maxOverRanks(shared, 2);
+  if (shared[0] > 0) throw RankFailure(shared[0], -shared[1] == rank() ? error : nullptr);
+}
 
 int launchedRanks() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})

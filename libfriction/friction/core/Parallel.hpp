@@ -6,6 +6,9 @@
 // nothing.
 #pragma once
 
+#include <exception>
+#include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -45,6 +48,8 @@ void broadcast(double* data, long count, int root = 0);
 void broadcast(int* data, long count, int root = 0);
 /// The maximum of value over the ranks.
 int maxOverRanks(int value);
+/// data[i] becomes the maximum over the ranks of their data[i], on every rank.
+void maxOverRanks(int* data, long count);
 /// The sum of value over the ranks.
 double sumOverRanks(double value);
 /// data[i] becomes the sum over the ranks of their data[i], on every rank.
@@ -54,8 +59,33 @@ std::vector<int> gatherOnMaster(const std::vector<int>& mine);
 /// The maximum of value over the ranks.
 double maxOverRanks(double value);
 
-/// Stop every rank with exit status `code` (MPI_Abort); with one rank, std::exit(code).
+/// Stop every rank with exit status `code` (MPI_Abort); with one rank, std::exit(code). Safe to
+/// call from two threads at once (the stop watchdog, StopRequest.cpp): the first call ends the
+/// run, a later one waits for that.
 [[noreturn]] void abort(int code);
+
+/// Thrown on every rank when agree() found that its step failed on some rank. On the first rank
+/// where it failed (the lowest), cause() is the exception, to be reported once, as a serial run
+/// reports it; elsewhere it is empty. status() is the exit status every rank ends with (the
+/// largest over the ranks that failed).
+class RankFailure : public std::runtime_error {
+ public:
+  RankFailure(int status, std::exception_ptr cause);
+  int status() const { return status_; }
+  const std::exception_ptr& cause() const { return cause_; }
+
+ private:
+  int status_;
+  std::exception_ptr cause_;
+};
+
+/// Runs `step` on this rank, then every rank learns whether it threw on any rank, so that they
+/// all go on, or all stop, together: a step that only rank 0 does (writing) cannot fail there
+/// while the others wait for it in a shared solve. Collective: every rank calls agree() at the
+/// same point, and `step` itself makes no collective call. If `step` threw anywhere, every rank
+/// throws RankFailure with the largest statusOf(exception) over the ranks where it threw. With
+/// one rank the exception passes unchanged.
+void agree(const std::function<void()>& step, int (*statusOf)(const std::exception_ptr&));
 
 /// The Fortran handle of the ranks' communicator, as MUMPS takes it.
 int fortranCommunicator();

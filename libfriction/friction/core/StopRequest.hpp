@@ -11,7 +11,9 @@ namespace friction {
 /// For its lifetime, SIGINT and SIGTERM only set a flag (and say so on stderr): the flags start
 /// clear, and the handlers that were there before come back at the end. So a process that
 /// runs several cases (the FreeFEM plug-in, the fuzz harness) starts each with no stop
-/// request, and is interrupted as usual between them.
+/// request, and is interrupted as usual between them. With several ranks a watchdog thread
+/// makes sure a second signal ends the run even on a rank that waits in a shared call for
+/// another rank that cannot come (parallel::abort(5) after a grace of 2 s).
 class StopHandlerScope {
  public:
   StopHandlerScope();
