@@ -99,7 +99,8 @@ case $scenario in
             chmod -R a-w "$c"
           fi
           touch "$c/probe" 2>/dev/null && fail "readOnly: the case folder is still writable"
-          expect="$c/postProcessing: cannot create the folder" ;;
+          # The case lock is the first file a run creates (before any output).
+          expect="$c/.frictionSolver.lock: cannot create the lock file of the case" ;;
         diskFull)
           # Room for two or three written times (a .vtu is 750 kB) on a 3 MB tmpfs.
           if ! mount -t tmpfs -o size=3m tmpfs "$work/$sibling" 2>/dev/null; then

@@ -732,8 +732,9 @@ std::string FrictionCase::factorFailureDiagnosis() const {
   for (const FloatingPart& p : floating_)
     if (!p.heldThroughFracture) loose.push_back(&p);
   if (!loose.empty()) {
-    s << loose.size() << " part" << (loose.size() == 1 ? "" : "s")
-      << " of the mesh touch no Dirichlet patch and can move as a rigid body:";
+    s << loose.size() << " part" << (loose.size() == 1 ? "" : "s") << " of the mesh "
+      << (loose.size() == 1 ? "touches" : "touch")
+      << " no Dirichlet patch and can move as a rigid body:";
     for (const FloatingPart* p : loose) s << " the part " << p->describe() << ";";
     s << " fix a patch of each (0/D, type fixedDisplacement)";
     return s.str();

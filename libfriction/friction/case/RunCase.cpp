@@ -105,24 +105,15 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     log << "\n";
     parallel::agree([&] { owned = std::make_unique<FrictionCase>(caseDir); }, exitStatusOf);
     FrictionCase& c = *owned;
-    Keep keep{kept, owned};
     // One run at a time writes a case: the lock before anything is written or removed. Rank 0
-    // writes every file, so it holds it; the others hear whether it got it.
+    // writes every file, so it holds it; the agreement tells the others whether it got it.
     std::unique_ptr<CaseLock> lock;
-    std::exception_ptr lockError;
-    int lockStatus = 0;
-    if (parallel::isMaster()) try {
-        lock = std::make_unique<CaseLock>(caseDir, options.program, log);
-      } catch (const OutputError&) {
-        lockStatus = 6;
-        lockError = std::current_exception();
-      } catch (const InputError&) {
-        lockStatus = 1;
-        lockError = std::current_exception();
-      }
-    parallel::broadcast(&lockStatus, 1);
-    if (lockError) std::rethrow_exception(lockError);
-    if (lockStatus != 0) return lockStatus;  // rank 0 said why
+    parallel::agree(
+        [&] {
+          if (parallel::isMaster())
+            lock = std::make_unique<CaseLock>(caseDir, options.program, log);
+        },
+        exitStatusOf);
     // An earlier run's time folders are refused, continued (startFrom latestTime) or, with
     // -overwrite, removed: before any work (rank 0 removes; the agreement waits for it).
     parallel::agree([&] { c.prepareOutput(options.overwrite, log, options.overwriteHint); },
