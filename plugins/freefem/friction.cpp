@@ -49,7 +49,9 @@
 #include "friction/case/SplitCase.hpp"
 #include "friction/core/AtomicFile.hpp"
 #include "friction/core/InputError.hpp"
+#include "friction/core/InputFile.hpp"
 #include "friction/core/Suggest.hpp"
+#include "friction/mesh/MeshReader.hpp"
 
 // FreeFEM's headers after ours: they bring macros and names into the global namespace.
 #include <ff++.hpp>
@@ -116,11 +118,12 @@ std::string meshText(const Fem2D::Mesh3& Th) {
   return s.str();
 }
 
+// The mesh file there now, through the library's reader of input files (regular files only).
 std::string readWhole(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  friction::InputFileRole role;
+  role.what = "the mesh file";
+  role.maxBytes = friction::kMaxMeshFileBytes;
+  return friction::readInputFile(path, role);
 }
 
 // The split mesh as a FreeFEM mesh, in the solver's numbering.

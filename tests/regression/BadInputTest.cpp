@@ -6,6 +6,8 @@
 // cannot make a check pass by accident or fail for no reason.
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -703,5 +705,61 @@ TEST_CASE("bad friction fields name file, line, key and the place where they fai
     writeText(c.dir() / "constant/mu.dat", "0.5 0.5 0.2\n");
     solverFails(c, {"'frictionCoefficient'", "no row of", "constant/mu.dat",
                     "list every fracture node or set maxDistance"});
+  }
+}
+
+TEST_CASE("a FIFO or a device that a case names is refused at once, naming who named it",
+          "[regression][errors][files]") {
+  // Each used to block for ever (a FIFO), or read as empty (/dev/zero). The runs go through
+  // `timeout`: a reader that blocks fails the check on the exit status instead of hanging.
+  Case c("paperBenchmark", "bad-nonRegular");
+  split(c);
+  const fs::path fifo = c.dir() / "constant/fifo";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const std::string fifoIs = "it is a FIFO (named pipe), not a regular file";
+  const auto refused = [&](const std::string& tool, const std::vector<std::string>& expected) {
+    const auto before = snapshot(c.dir());
+    const fs::path log = c.dir() / ("log." + tool);
+    const int status = run("timeout -s KILL 60 " + bin(tool) + " -case " + quoted(c.dir()), log);
+    const std::string out = readText(log);
+    INFO(out);
+    CHECK(status == 1);  // 137 (killed by timeout) when the reader blocked
+    for (const std::string& e : expected) CHECK_THAT(out, Catch::Contains(e));
+    CHECK(snapshot(c.dir()) == before);
+  };
+
+  SECTION("#include of a FIFO in system/controlDict") {
+    writeText(c.dir() / "system/controlDict",
+              readText(c.dir() / "system/controlDict") + "\n#include \"../constant/fifo\"\n");
+    const int line = lineOf(c.dir() / "system/controlDict", "#include \"../constant/fifo\"");
+    refused("frictionSolver",
+            {at("system/controlDict", line), "#include: cannot open '", "constant/fifo", fifoIs});
+  }
+  SECTION("#include \"/dev/zero\" in constant/mechanicalProperties") {
+    const fs::path mech = c.dir() / "constant/mechanicalProperties";
+    writeText(mech, readText(mech) + "\n#include \"/dev/zero\"\n");
+    refused("frictionSolver",
+            {at("constant/mechanicalProperties", lineOf(mech, "#include \"/dev/zero\"")),
+             "#include: cannot open '/dev/zero': it is a character device"});
+  }
+  SECTION("a fracturePressure values file that is a FIFO") {
+    writeText(c.dir() / "constant/effects",
+              "pore\n{\n    type fracturePressure;\n    fracture fracture;\n"
+              "    values \"constant/fifo\";\n}\n");
+    refused("frictionSolver",
+            {at("constant/effects", 5), "key 'values': cannot open '", "constant/fifo", fifoIs});
+  }
+  SECTION("a friction field file that is a FIFO") {
+    const std::string props = "constant/fractureProperties";
+    c.edit(props, "frictionCoefficient 0\\.2;",
+           "frictionCoefficient { type arclength; file \"constant/fifo\"; }");
+    refused("frictionSolver", {at(props, lineOf(c.dir() / props, "file \"constant/fifo\"")),
+                               "key 'file': cannot open '", "constant/fifo", fifoIs});
+  }
+  SECTION("a mesh file that is a FIFO") {
+    c.edit("system/meshDict", "\"constant/mesh/square.msh\"", "\"constant/fifo\"");
+    refused("splitFractureNodes",
+            {at("system/meshDict", lineOf(c.dir() / "system/meshDict", "\"constant/fifo\"")),
+             "key 'mesh': cannot open '", "constant/fifo", fifoIs});
   }
 }

@@ -20,6 +20,7 @@
 
 #include "friction/case/RunCase.hpp"
 #include "friction/core/Assert.hpp"
+#include "friction/core/InputFile.hpp"
 #include "friction/core/OutputError.hpp"
 #include "friction/core/Parallel.hpp"
 #include "friction/core/StopRequest.hpp"
@@ -38,7 +39,9 @@ namespace {
 
 Dictionary readCaseFile(const std::string& caseDir, const std::string& relative) {
   const std::string path = (fs::path(caseDir) / relative).lexically_normal().string();
-  if (!fs::is_regular_file(path)) throw InputError(path, "cannot open: the case needs " + relative);
+  // A path that is there but no regular file (a folder, a FIFO) is refused by the reader, which
+  // says what it is.
+  if (!fs::exists(path)) throw InputError(path, "cannot open: the case needs " + relative);
   return Dictionary::read(path);
 }
 
@@ -148,7 +151,7 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
   controlDict.checkAllRead();
 
   const std::string splitPath = (fs::path(caseDir) / "constant" / "splitMesh").string();
-  if (!fs::is_regular_file(splitPath))
+  if (!fs::exists(splitPath))
     throw InputError(splitPath, "cannot open: run splitFractureNodes on the case first");
   split_ = readSplitMesh(splitPath);
   checkSplitMeshCurrent(caseDir, split_);
@@ -918,7 +921,12 @@ void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& ke
   const std::string path = (post / "convergence.dat").string();
   std::string text = "# time iteration J relResidual stepNorm\n";
   if (!fresh) {
-    std::ifstream in(path);
+    std::istringstream in;
+    if (fs::exists(path)) {
+      InputFileRole role;  // a FIFO put in its place must not block the restart
+      role.what = "the convergence history frictionSolver writes";
+      in.str(readInputFile(path, role));
+    }
     std::string kept;
     for (std::string line; std::getline(in, line);) {
       const std::string first = line.substr(0, line.find(' '));
@@ -934,8 +942,10 @@ void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& ke
   for (const auto& g : split_.fractures) {
     const std::string file = (post / ("history_" + g.name + ".dat")).string();
     std::string kept;
-    if (!fresh) {
-      std::ifstream in(file);
+    if (!fresh && fs::exists(file)) {
+      InputFileRole role;  // a FIFO put in its place must not block the restart
+      role.what = "the fracture history frictionSolver writes";
+      std::istringstream in(readInputFile(file, role));
       for (std::string line; std::getline(in, line);) {
         const std::string first = line.substr(0, line.find(' '));
         if (!line.empty() && line[0] != '#' && keep(first)) kept += line + "\n";
@@ -1025,7 +1035,7 @@ long FrictionCase::restart(std::ostream& log) {
   }
   const std::string statePath =
       (fs::path(caseDir_) / folder / "uniform" / "frictionState").string();
-  const Dictionary st = Dictionary::read(statePath);
+  const Dictionary st = Dictionary::read(statePath, DictionaryLimits::dataFile());
   // k values per fracture node (k = 1 in 2D), node-major as writeTimeFolder() writes them.
   const std::vector<double> slip = st.getScalarList("slip");
   const std::vector<double> beta = st.getScalarList("lastIncrement");

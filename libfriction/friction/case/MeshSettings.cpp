@@ -10,9 +10,11 @@
 
 #include <Eigen/Geometry>
 
+#include "friction/core/InputFile.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/mesh/MeshCheck.hpp"
+#include "friction/mesh/MeshReader.hpp"
 
 namespace friction {
 
@@ -37,10 +39,16 @@ MeshSettings MeshSettings::read(const std::string& caseDir, bool meshMustExist) 
   s.meshWhere = dict.location("mesh");
   s.meshEntry = mesh;
   s.meshFile = (fs::path(caseDir) / mesh).lexically_normal().string();
-  if (fs::exists(s.meshFile) && !fs::is_regular_file(s.meshFile))
-    dict.fail("mesh", "key 'mesh': '" + s.meshFile +
-                          "' is not a file (expected the mesh file; the path is relative to "
-                          "the case folder)");
+  if (fs::exists(s.meshFile)) {
+    // A FIFO, a device or a folder is refused here, at the key that names it (the reader would
+    // refuse it too, naming only the path); and so is a file too large to read.
+    InputFileRole role;
+    role.what = "the mesh file; the path is relative to the case folder";
+    role.maxBytes = kMaxMeshFileBytes;
+    role.namedAt = s.meshWhere;
+    role.namedBy = "key 'mesh'";
+    openInputFile(s.meshFile, role);
+  }
   if (meshMustExist && !fs::is_regular_file(s.meshFile))
     dict.fail("mesh", "key 'mesh': the mesh file '" + s.meshFile +
                           "' does not exist (the path is relative to the case folder)");

@@ -20,7 +20,9 @@ struct SourceLocation {
 };
 
 /// Error in user input. what() is "file:line: message"; location() and message() give the
-/// parts separately for tests and for callers that want to re-wrap the message.
+/// parts separately for tests and for callers that want to re-wrap the message. Control bytes
+/// in what() and message() are escaped (\0, \x01: VisibleText.hpp), so that a NUL the user
+/// wrote cannot cut the message short.
 class InputError : public std::runtime_error {
  public:
   InputError(SourceLocation where, const std::string& message);

@@ -3,7 +3,9 @@
 // entries the program never read. Grammar and semantics: Dictionary.hpp.
 #include "friction/dict/Dictionary.hpp"
 
+#include "friction/core/InputFile.hpp"
 #include "friction/core/Suggest.hpp"
+#include "friction/core/VisibleText.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -34,6 +36,10 @@ struct DictEntry {
   std::vector<Value> items;
   std::unique_ptr<Dictionary> dict;  // set for dictionary entries
   mutable bool read = false;
+  /// The text the entry was written in: one number per file read (each #include of a file is
+  /// another), 0 for an entry copied by '$name' or set by code. Two entries with one key and
+  /// one origin are a duplicate; a later one of another origin overrides.
+  int origin = 0;
 
   DictEntry() = default;
   DictEntry(DictEntry&&) = default;
@@ -43,7 +49,8 @@ struct DictEntry {
         where(o.where),
         items(o.items),
         dict(o.dict ? std::make_unique<Dictionary>(*o.dict) : nullptr),
-        read(o.read) {}
+        read(o.read),
+        origin(o.origin) {}
   DictEntry& operator=(const DictEntry& o) {
     DictEntry copy(o);
     return *this = std::move(copy);
@@ -101,6 +108,14 @@ struct Dictionary::Impl {
       if (e.dict) of(*e.dict).rescope(newScope + "/" + e.key);
   }
 
+  /// Marks every entry (recursively) as copied rather than written here.
+  void setCopied() {
+    for (DictEntry& e : entries) {
+      e.origin = 0;
+      if (e.dict) of(*e.dict).setCopied();
+    }
+  }
+
   void setRead(bool read) const {
     for (const DictEntry& e : entries) {
       e.read = read;
@@ -137,6 +152,26 @@ std::string shown(const Value& v) {
   constexpr std::size_t kMax = 60;
   if (s.size() > kMax) s = s.substr(0, kMax) + " ...";
   return s;
+}
+
+/// "which has the invisible character U+200B ZERO WIDTH SPACE after 'nu'; delete it": what
+/// hides in key (it has at least one invisible character).
+std::string invisibleText(const std::string& key) {
+  const std::vector<InvisibleChar> found = invisibleCharacters(key);
+  const InvisibleChar& c = found.front();
+  const std::string before = withoutInvisible(key.substr(0, c.offset));
+  std::string s = "which has the invisible character " + c.name() +
+                  (before.empty() ? " at its start" : " after '" + before + "'");
+  if (found.size() > 1) s += " (and " + std::to_string(found.size() - 1) + " more)";
+  return s + "; delete it, or type a plain space where one belongs";
+}
+
+/// True if written is wanted but for invisible characters: without them, or cut at the first
+/// one ("nu\u00a00.3", a no-break space where a space belongs, starts with "nu").
+bool looksLike(const std::string& written, const std::string& wanted) {
+  const std::vector<InvisibleChar> found = invisibleCharacters(written);
+  if (found.empty()) return false;
+  return withoutInvisible(written) == wanted || written.substr(0, found.front().offset) == wanted;
 }
 
 /// What an entry holds, for "got ..." in messages. Items spread over several lines usually
@@ -211,6 +246,12 @@ const DictEntry& requireValue(const Dictionary::Impl& d, const std::string& key,
   const DictEntry* e = d.ask(key);
   if (!e) {
     std::string msg = "missing key '" + key + "' in " + d.scope + " (expected " + expected + ")";
+    // A key that is this one but for an invisible character (a zero-width or no-break space
+    // pasted in) looks right in any editor: name it and the character, at its line.
+    for (const DictEntry& p : d.entries)
+      if (!p.read && looksLike(p.key, key))
+        throw InputError(p.where, msg + ": the key written here is '" + showInvisible(p.key) +
+                                      "', " + invisibleText(p.key));
     // A near miss among the keys present is most likely a misspelling of this one.
     std::vector<std::string> present;
     for (const DictEntry& p : d.entries)
@@ -336,26 +377,27 @@ T getOptional(const Dictionary::Impl& d, const std::string& key, const std::stri
 /// Nesting deeper than this is an error rather than a stack overflow.
 constexpr std::size_t kMaxDepth = 256;
 
-/// The whole file; errors are located at from and start with prefix.
-std::string readWholeFile(const std::string& path, const SourceLocation& from,
-                          const std::string& prefix) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(from, prefix + ": no such file");
-  if (fs::is_directory(path, ec)) throw InputError(from, prefix + ": it is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(from, prefix + ": " + std::strerror(errno));
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  std::string text(size > 0 ? static_cast<std::size_t>(size) : 0, '\0');
-  if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
-    throw InputError(from, prefix + ": read error");
-  return text;
+/// Items a value holds, itself included (what copying it adds to a dictionary).
+std::size_t itemCount(const Value& v) {
+  std::size_t n = 1;
+  for (const Value& i : v.items) n += itemCount(i);
+  return n;
+}
+std::size_t itemCount(const Dictionary::Impl& d) {
+  std::size_t n = 0;
+  for (const DictEntry& e : d.entries) {
+    n += 1;
+    for (const Value& v : e.items) n += itemCount(v);
+    if (e.dict) n += itemCount(Dictionary::Impl::of(*e.dict));
+  }
+  return n;
 }
 
 class Parser {
  public:
   using Impl = Dictionary::Impl;
+
+  explicit Parser(const DictionaryLimits& limits) : limits_(limits) {}
 
   /// Parses the file at path (as named in messages) into dict. includedFrom is the
   /// '#include' that asked for it, or null for the file given to Dictionary::read.
@@ -372,8 +414,21 @@ class Parser {
         throw InputError(from, "#include cycle: " + chain + path);
       }
     if (optional && !fs::exists(path, ec)) return;
-    const std::string text = readWholeFile(
-        path, from, includedFrom ? "#include: cannot open '" + path + "'" : "cannot open");
+    InputFileRole role;
+    role.what = "a dictionary";
+    role.maxBytes = limits_.bytes;
+    role.tooLargeHint = limits_.hint;
+    if (includedFrom) {
+      role.namedAt = *includedFrom;
+      role.namedBy = optional ? "#includeIfPresent" : "#include";
+    }
+    const std::string text = readInputFile(path, role);
+    bytes_ += text.size();
+    if (bytes_ > limits_.bytes)
+      throw InputError(from, "#include: '" + path + "' brings the text read for this dictionary " +
+                                 "to " + formatBytes(bytes_) + ", beyond the limit of " +
+                                 formatBytes(limits_.bytes) + " for a dictionary with the " +
+                                 "files it includes; " + limits_.hint);
 
     includeIds_.push_back(id);
     includeNames_.push_back(path);
@@ -389,7 +444,7 @@ class Parser {
     Tokenizer tz(text, file);
     const bool outermost = scopes_.empty();
     if (outermost) scopes_.push_back(&dict);
-    const Source src{tz, file, baseDir, included};
+    const Source src{tz, file, baseDir, included, ++origins_};
     parseEntries(src, dict, 0, "");
     if (outermost) scopes_.pop_back();
   }
@@ -400,6 +455,7 @@ class Parser {
     const std::string& file;
     std::string baseDir;
     bool included;
+    int origin;  // DictEntry::origin of the entries written in this text
   };
 
   /// Entries up to the '}' that closes the dictionary opened at openLine (0: to the end of
@@ -443,6 +499,8 @@ class Parser {
     DictEntry e;
     e.key = std::string(keyToken.text);
     e.where = {src.file, keyToken.line};
+    e.origin = src.origin;
+    count(1, src, keyToken.line);
     Token t = tz.next();
     if (t.isPunct('{')) {
       e.dict = std::make_unique<Dictionary>();
@@ -458,6 +516,12 @@ class Parser {
     }
     // An included file's header describes that file, not the dictionary it is included in.
     if (includedFileLevel && e.key == "FoamFile") return;
+    if (const DictEntry* old = dict.find(e.key); old && old->origin == e.origin)
+      tz.fail(e.where.line,
+              "key '" + showInvisible(e.key) + "' is given twice in " + dict.scope +
+                  " (first at line " + std::to_string(old->where.line) +
+                  "): expected each key once; delete one (a key may override one that comes "
+                  "from an #include file or a '$name;' merge, not one written beside it)");
     dict.add(std::move(e));
   }
 
@@ -475,10 +539,11 @@ class Parser {
                                 "' is a dictionary; it can only stand alone ('" + e.key + " $" +
                                 std::string(t.text) + ";')");
           e.dict = copyOf(*ref.dict, dict.scope + "/" + e.key);
+          count(itemCount(Impl::of(*e.dict)), src, t.line);
           tz.next();
           return;
         }
-        appendCopies(ref.items, t.line, e.items);
+        appendCopies(src, ref.items, t.line, e.items);
         continue;
       }
       if (item(src, t, e.items, e.key, 0)) continue;
@@ -501,6 +566,9 @@ class Parser {
   /// Adds the item starting with token t to out; false if t does not start an item.
   bool item(const Source& src, Token& t, std::vector<Value>& out, const std::string& key,
             std::size_t depth) {
+    if (t.type == Token::Type::Number || t.type == Token::Type::Word ||
+        t.type == Token::Type::String || t.isPunct('('))
+      count(1, src, t.line);
     switch (t.type) {
       case Token::Type::Number: {
         if (t.plainInteger && src.tz.sizedListFollows()) {
@@ -539,7 +607,7 @@ class Parser {
         if (ref.dict)
           src.tz.fail(t.line, "key '" + key + "': '$" + std::string(t.text) +
                                   "' is a dictionary and cannot be part of a list");
-        appendCopies(ref.items, t.line, out);
+        appendCopies(src, ref.items, t.line, out);
         return true;
       }
       case Token::Type::Punct:
@@ -563,12 +631,18 @@ class Parser {
     // text can hold, so a wrong size costs an error, not the memory). A list of unknown size
     // collects its items in a buffer kept per depth and gets them in one exact allocation:
     // growing each of 10^6 small "(x y)" lists item by item would double the allocations.
+    if (size >= 0 && static_cast<std::size_t>(size) > limits_.listItems)
+      tooManyItems(src, sizeLine, key, "is declared with " + std::to_string(size));
     std::vector<Value>& items = size >= 0 ? v.items : scratch(depth);
     if (size > 0) items.reserve(std::min(static_cast<std::size_t>(size), tz.remaining() / 2 + 1));
     for (;;) {
       Token t = tz.next();
       if (t.isPunct(')')) break;
-      if (item(src, t, items, key, depth)) continue;
+      if (item(src, t, items, key, depth)) {
+        if (items.size() > limits_.listItems)
+          tooManyItems(src, openLine, key, "has more than " + std::to_string(limits_.listItems));
+        continue;
+      }
       if (t.isPunct('{'))
         tz.fail(t.line, "key '" + key +
                             "': a dictionary inside a list is not supported "
@@ -627,6 +701,7 @@ class Parser {
                               "' at the start of an entry merges a dictionary, but '" + ref.key +
                               "' is a value (write 'key $" + ref.key + ";' to copy a value)");
     std::unique_ptr<Dictionary> copy = copyOf(*ref.dict, dict.scope);
+    count(itemCount(Impl::of(*copy)), src, t.line);
     for (DictEntry& e : Impl::of(*copy).entries) dict.add(std::move(e));
     if (src.tz.peekPunct(';')) src.tz.next();
   }
@@ -659,12 +734,17 @@ class Parser {
     auto copy = std::make_unique<Dictionary>(d);
     Impl::of(*copy).setRead(false);
     Impl::of(*copy).rescope(scope);
+    Impl::of(*copy).setCopied();
     return copy;
   }
 
   /// Appends copies of items, placed at line (the '$name' they replace), so that errors
   /// point into the file being read.
-  static void appendCopies(const std::vector<Value>& items, int line, std::vector<Value>& out) {
+  void appendCopies(const Source& src, const std::vector<Value>& items, int line,
+                    std::vector<Value>& out) {
+    std::size_t n = 0;
+    for (const Value& v : items) n += itemCount(v);
+    count(n, src, line);  // before the copy: '$a' in '$a $a' doubles, and so on
     for (const Value& v : items) {
       Value& c = out.emplace_back(v);
       relocate(c, line);
@@ -675,12 +755,33 @@ class Parser {
     for (Value& i : v.items) relocate(i, line);
   }
 
+  /// Adds n to the items the dictionary holds; InputError at line beyond the bound.
+  void count(std::size_t n, const Source& src, int line) {
+    items_ += n;
+    if (items_ > limits_.totalItems)
+      src.tz.fail(line, "the dictionary holds more than " + std::to_string(limits_.totalItems) +
+                            " items (words, numbers, strings and lists, '$' copies included) "
+                            "here, the limit for a dictionary; " +
+                            limits_.hint);
+  }
+
+  [[noreturn]] void tooManyItems(const Source& src, int line, const std::string& key,
+                                 const std::string& what) {
+    src.tz.fail(line, "key '" + key + "': the list opened here " + what +
+                          " items, beyond the limit of " + std::to_string(limits_.listItems) +
+                          " for a list in a dictionary; " + limits_.hint);
+  }
+
   /// The (empty) item buffer for lists at depth; a deque keeps references stable as it grows.
   std::vector<Value>& scratch(std::size_t depth) {
     while (scratch_.size() <= depth) scratch_.emplace_back();
     return scratch_[depth];
   }
 
+  DictionaryLimits limits_;
+  std::uint64_t bytes_ = 0;  // text read, the file and its #includes
+  std::size_t items_ = 0;    // items held, see count()
+  int origins_ = 0;          // texts read, see DictEntry::origin
   std::deque<std::vector<Value>> scratch_;
   std::vector<Impl*> scopes_;              // dictionaries being read, innermost last
   std::vector<std::string> includeIds_;    // canonical paths of the files being read
@@ -730,7 +831,13 @@ void checkRead(const Dictionary::Impl& root, const Dictionary::Impl& d,
         throw InputError(e.where, "key '" + e.key + "' in " + d.scope +
                                       " is never used (the program checks that it is there "
                                       "but does not read it)");
-      std::string msg = "unknown key '" + e.key + "' in " + d.scope;
+      std::string msg = "unknown key '" + showInvisible(e.key) + "' in " + d.scope;
+      if (!invisibleCharacters(e.key).empty()) {
+        // In an editor the key looks like a valid one; say what hides in it.
+        msg += ", " + invisibleText(e.key);
+        for (const std::string& k : d.asked)
+          if (looksLike(e.key, k)) throw InputError(e.where, msg + " (it reads as '" + k + "')");
+      }
       std::vector<std::string> places;
       askedElsewhere(root, d, parent, root, nullptr, e.key, places);
       if (!places.empty()) {
@@ -794,21 +901,34 @@ Dictionary& Dictionary::operator=(const Dictionary& o) {
   return *this;
 }
 
-Dictionary Dictionary::read(const std::string& path) {
+DictionaryLimits DictionaryLimits::caseFile() {
+  // 8 MiB of settings is far more than any case needs, and at most a few hundred MB in memory.
+  return {8u << 20, 100'000, 2'000'000,
+          "data this large belongs in a values file (a 'file' or 'values' key: one row of "
+          "numbers per line, read compactly), not in a dictionary"};
+}
+
+DictionaryLimits DictionaryLimits::dataFile() {
+  // A split mesh of ~10^7 points; one list per node or cell, of Index-sized counts.
+  return {std::uint64_t{4} << 30, 2'147'483'647, std::numeric_limits<std::size_t>::max(),
+          "a mesh this large is beyond what this text format can hold"};
+}
+
+Dictionary Dictionary::read(const std::string& path, const DictionaryLimits& limits) {
   Dictionary d;
   d.impl_->scope = path;
   d.impl_->where = {path, 0};
-  Parser().parseFile(path, *d.impl_, nullptr, false);
+  Parser(limits).parseFile(path, *d.impl_, nullptr, false);
   finishTopLevel(*d.impl_);
   return d;
 }
 
 Dictionary Dictionary::parse(const std::string& text, const std::string& sourceName,
-                             const std::string& baseDir) {
+                             const std::string& baseDir, const DictionaryLimits& limits) {
   Dictionary d;
   d.impl_->scope = sourceName;
   d.impl_->where = {sourceName, 0};
-  Parser().parseText(text, sourceName, baseDir.empty() ? "." : baseDir, *d.impl_, false);
+  Parser(limits).parseText(text, sourceName, baseDir.empty() ? "." : baseDir, *d.impl_, false);
   finishTopLevel(*d.impl_);
   return d;
 }

@@ -17,12 +17,18 @@
 // continues the string on the next (OpenFOAM's escapes). '$name' (or '${name}') expands to the
 // value of entry 'name' defined before it in the current or an enclosing dictionary; 'key
 // $name;' with a dictionary copies it and '$name;' merges its entries. An entry used by '$'
-// counts as read. A later entry with the same key replaces an earlier one in its place, and a
-// repeated dictionary is merged into the earlier one, as in OpenFOAM (checked with
-// foamDictionary v1912). A number is a whole finite decimal token (Number.hpp): "0,9" is a word,
-// refused with the reason wherever a number is expected, and "1e400" is an error when read.
-// Beyond OpenFOAM's rules, on purpose: the FoamFile header is optional (its 'format' must be
+// counts as read. A key given twice in one dictionary of one file is an error naming both
+// lines (OpenFOAM takes the last one; a case that says two things is ambiguous). An entry may
+// override one that came from an #include file or a '$name;' merge, as in OpenFOAM: it replaces
+// the earlier entry in its place, and a dictionary repeated so is merged into the earlier one
+// (checked with foamDictionary v1912). A number is a whole finite decimal token (Number.hpp): "0,9"
+// is a word, refused with the reason wherever a number is expected, and "1e400" is an error when
+// read. Beyond OpenFOAM's rules, on purpose: the FoamFile header is optional (its 'format' must be
 // ascii when given), and a UTF-8 byte-order mark at the start of a file is skipped.
+//
+// Files are opened with readInputFile (core/InputFile.hpp): only regular files, so a FIFO or a
+// device named by #include is an error at the #include, not a read that never ends. What a
+// dictionary may hold is bounded (DictionaryLimits): the reader keeps tens of bytes per item.
 //
 // Every entry keeps its file:line. Accessors mark an entry as read; checkAllRead() then
 // reports the first entry the program never read, naming its file:line and the nearest
@@ -30,6 +36,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -57,6 +64,27 @@ struct Bounds {
   std::string str() const;
 };
 
+/// Bounds on what one dictionary may hold; beyond them reading fails with the bound, the file
+/// and the line. The reader keeps each item as a Value (its text, its line, its list): about 40
+/// times the bytes of a list of numbers, so large data belongs in a values file (NumberRows.hpp),
+/// which has its own bound and a compact reader.
+struct DictionaryLimits {
+  /// Bytes of text: the file and every file it #includes, together.
+  std::uint64_t bytes = 0;
+  /// Items in any one list.
+  std::size_t listItems = 0;
+  /// Items (words, numbers, strings, lists) the whole dictionary holds, '$name' copies included.
+  std::size_t totalItems = 0;
+  /// What to do instead, in the message when a bound is passed.
+  const char* hint = "";
+
+  /// The dictionaries of a case, written by hand: settings, tables, short lists.
+  static DictionaryLimits caseFile();
+  /// Dictionaries the programs write with one item per node or cell (constant/splitMesh, a
+  /// time folder's uniform/frictionState): bounded by the size of the mesh they describe.
+  static DictionaryLimits dataFile();
+};
+
 /// A table of (time, vector) rows, e.g. ((0 (0 0)) (1 (-0.02 -0.025))). Scalar rows
 /// ((0 1) (1 2)) give vectors of size 1.
 struct Table {
@@ -73,14 +101,17 @@ class Dictionary {
   Dictionary(const Dictionary&);
   Dictionary& operator=(const Dictionary&);
 
-  /// Parse a file (following #include). Throws InputError naming file:line on syntax errors
-  /// and "cannot open" when the file is missing. The FoamFile header, if present, is kept as
-  /// the sub-dictionary "FoamFile" and counts as read.
-  static Dictionary read(const std::string& path);
+  /// Parse a file (following #include). Throws InputError naming file:line on syntax errors,
+  /// "cannot open" when the file (or an included one) is missing or not a regular file, and
+  /// the bound when one of limits is passed. The FoamFile header, if present, is kept as the
+  /// sub-dictionary "FoamFile" and counts as read.
+  static Dictionary read(const std::string& path,
+                         const DictionaryLimits& limits = DictionaryLimits::caseFile());
   /// Parse text; sourceName stands in for the file name in messages; includes are resolved
   /// relative to baseDir.
   static Dictionary parse(const std::string& text, const std::string& sourceName,
-                          const std::string& baseDir = ".");
+                          const std::string& baseDir = ".",
+                          const DictionaryLimits& limits = DictionaryLimits::caseFile());
 
   /// Scope name for messages: the file path, plus "/sub/dict" for sub-dictionaries.
   const std::string& scope() const;

@@ -3,11 +3,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <optional>
 
 #include "friction/core/InputError.hpp"
+#include "friction/core/InputFile.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/Number.hpp"
@@ -17,11 +16,13 @@ namespace friction {
 std::string readValuesFile(const Dictionary& d, const std::string& key, const std::string& caseDir,
                            std::string& path) {
   path = (std::filesystem::path(caseDir) / d.getFileName(key)).lexically_normal().string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in || std::filesystem::is_directory(path))
-    d.fail(key,
-           "key '" + key + "': cannot open '" + path + "' (a file, relative to the case folder)");
-  return std::string(std::istreambuf_iterator<char>(in), {});
+  InputFileRole role;
+  role.what = "a values file, rows of numbers, relative to the case folder";
+  role.maxBytes = kMaxValuesFileBytes;
+  role.namedAt = d.location(key);
+  role.namedBy = "key '" + key + "'";
+  role.tooLargeHint = "give the values on a coarser grid";
+  return readInputFile(path, role);
 }
 
 NumberRows parseNumberRows(const std::string& file, std::string_view text, std::size_t columns,

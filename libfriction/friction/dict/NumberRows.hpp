@@ -4,6 +4,7 @@
 // changes a load or a friction bound silently.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,8 +20,12 @@ struct NumberRows {
   std::vector<int> lines;
 };
 
-/// Read the file named by `key` (relative to caseDir): InputError at the key when it cannot
-/// be opened. The path is normalised (as it appears in messages).
+/// The largest values file read: a few million rows, a few hundred MB once parsed.
+constexpr std::uint64_t kMaxValuesFileBytes = std::uint64_t{64} << 20;
+
+/// Read the file named by `key` (relative to caseDir) with readInputFile: InputError at the key
+/// when it is missing, not a regular file (a FIFO, a device, a folder) or larger than
+/// kMaxValuesFileBytes. The path is normalised (as it appears in messages).
 std::string readValuesFile(const Dictionary& d, const std::string& key, const std::string& caseDir,
                            std::string& path);
 

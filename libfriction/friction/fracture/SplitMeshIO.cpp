@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "friction/core/Assert.hpp"
+#include "friction/core/InputFile.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 #include "friction/dict/Tokenizer.hpp"
@@ -213,7 +214,7 @@ void writeSplitMesh(const SplitMesh& split, const std::string& path, int precisi
 }
 
 SplitMesh readSplitMesh(const std::string& path) {
-  const Dictionary dict = Dictionary::read(path);
+  const Dictionary dict = Dictionary::read(path, DictionaryLimits::dataFile());
   SplitMesh s;
   Mesh& m = s.mesh;
   m.source = dict.getWord("source");
@@ -430,8 +431,8 @@ SplitMesh readSplitMesh(const std::string& path) {
 }
 
 std::string fileHash(const std::string& path) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!f) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
+  // Streamed, not read whole: the mesh may be large. Regular files only (InputFile.hpp).
+  const InputFileHandle f = openInputFile(path, InputFileRole{});
   std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64-bit offset basis
   unsigned char buffer[1 << 16];
   std::size_t n;
@@ -459,7 +460,7 @@ void checkSplitMeshCurrent(const std::string& caseDir, const SplitMesh& split) {
                      "stale" +
                          redo);
   const std::string dictPath = (fs::path(caseDir) / "system" / "meshDict").string();
-  if (!fs::is_regular_file(dictPath))
+  if (!fs::exists(dictPath))
     throw InputError(splitPath, "was made from " + dictPath + ", which no longer exists" + redo);
   if (fileHash(dictPath) != made.meshDictHash)
     throw InputError(splitPath, "is stale: " + dictPath +
@@ -467,7 +468,7 @@ void checkSplitMeshCurrent(const std::string& caseDir, const SplitMesh& split) {
                                     "recorded " +
                                     made.meshDictHash + ")" + redo);
   const std::string meshPath = (fs::path(caseDir) / made.mesh).lexically_normal().string();
-  if (!fs::is_regular_file(meshPath))
+  if (!fs::exists(meshPath))
     throw InputError(splitPath,
                      "was made from the mesh file " + meshPath + ", which no longer exists" + redo);
   if (fileHash(meshPath) != made.meshHash)

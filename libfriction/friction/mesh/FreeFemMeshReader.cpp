@@ -101,7 +101,7 @@ class FreeFemParser {
       // adaptmesh, and the edge labels carry the boundary information.
       if (!f.real(x) || !f.real(y) || !f.skip() || !f.done())
         syntaxError("vertex", i + 1, nv_, syntax);
-      checkFinite(s_, x, y, "vertex", i + 1);
+      checkCoordinates(s_, x, y, "vertex", i + 1);
       mesh_.points.emplace_back(x, y, 0.0);
     }
   }
@@ -117,16 +117,16 @@ class FreeFemParser {
       dataLine("triangles", i, nt_, syntax);
       LineFields f = s_.fields();
       std::array<long long, 3> v;
-      long long region;
-      if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(v[2]) || !f.integer(region) ||
-          !f.done() || !fitsInt(region))
+      int region;
+      if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(v[2]) ||
+          !readLabel(s_, f, region, "region", "triangle", i + 1) || !f.done())
         syntaxError("triangle", i + 1, nt_, syntax);
       std::array<Index, 3> t;
       for (int k = 0; k < 3; ++k) t[k] = vertex(v[k], "triangle", i + 1);
       const TriangleDefect defect = triangleDefect(mesh_.points, t);
       if (defect != TriangleDefect::none)
         failTriangle(s_, s_.lineNumber(), defect, mesh_.points, t, "triangle", i + 1, v, fix);
-      mesh_.addCell({t[0], t[1], t[2]}, static_cast<int>(region));
+      mesh_.addCell({t[0], t[1], t[2]}, region);
       numbering_.cellLine.push_back(s_.lineNumber());
     }
   }
@@ -139,12 +139,13 @@ class FreeFemParser {
       dataLine("edges", i, nbe_, syntax);
       LineFields f = s_.fields();
       std::array<long long, 2> v;
-      long long label;
-      if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(label) || !f.done() || !fitsInt(label))
+      int label;
+      if (!f.integer(v[0]) || !f.integer(v[1]) ||
+          !readLabel(s_, f, label, "label", "edge", i + 1) || !f.done())
         syntaxError("edge", i + 1, nbe_, syntax);
       const std::array<Index, 2> e{vertex(v[0], "edge", i + 1), vertex(v[1], "edge", i + 1)};
       checkEdge(s_, s_.lineNumber(), e, "edge", i + 1, v);
-      mesh_.addFacet({e[0], e[1]}, static_cast<int>(label));
+      mesh_.addFacet({e[0], e[1]}, label);
       numbering_.facetLine.push_back(s_.lineNumber());
     }
   }

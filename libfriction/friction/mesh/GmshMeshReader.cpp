@@ -294,15 +294,16 @@ class GmshParser {
     for (long long i = 0; i < n; ++i) {
       dataLine(openLine, "physical names", i, n, syntax);
       LineFields f = s_.fields();
-      long long dim, tag;
-      if (!f.integer(dim) || !f.integer(tag) || !fitsInt(tag))
+      long long dim;
+      int tag;
+      if (!f.integer(dim) || !readLabel(s_, f, tag, "tag", "physical name", i + 1))
         syntaxError("physical name " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
       const std::string_view q = f.rest();
       if (q.size() < 2 || q.front() != '"' || q.back() != '"')
         syntaxError("physical name " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
       const std::string name(q.substr(1, q.size() - 2));
       // Labels or regions once the mesh's dimension is known (buildMesh).
-      if (dim >= 1 && dim <= 3) names_[dim][static_cast<int>(tag)] = name;
+      if (dim >= 1 && dim <= 3) names_[dim][tag] = name;
     }
     expectEnd(openLine, "the " + std::to_string(n) + " names it announces");
   }
@@ -332,9 +333,11 @@ class GmshParser {
     long long numPhysical, numBounding, t;
     if (!f.integer(numPhysical) || numPhysical < 0) bad();
     std::vector<int> physical;
+    static const char* items[] = {"point", "curve", "surface", "volume"};
     for (long long k = 0; k < numPhysical; ++k) {
-      if (!f.integer(t) || !fitsInt(t)) bad();
-      physical.push_back(static_cast<int>(t));
+      int label;
+      if (!readLabel(s_, f, label, "physical tag", items[dim], i + 1)) bad();
+      physical.push_back(label);
     }
     if (dim > 0) {
       if (!f.integer(numBounding) || numBounding < 0) bad();
@@ -375,7 +378,7 @@ class GmshParser {
   // Coordinates of node i, which must be the next point (nodes are numbered in file order).
   void setCoordinates(std::size_t i, double x, double y, double z, int line) {
     FRICTION_ASSERT(i == mesh_.points.size(), "node coordinates out of order");
-    checkFinite(s_, x, y, z, "node", nodeTags_[i]);
+    checkCoordinates(s_, x, y, z, "node", nodeTags_[i]);
     mesh_.points.emplace_back(x, y, z);
     scale_ = std::max({scale_, std::abs(x), std::abs(y)});
     if (std::abs(z) > maxAbsZ_) {
@@ -638,15 +641,14 @@ class GmshParser {
         syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
       if (type == 15) continue;
       if (type != 1 && type != 2 && type != 4) unsupportedType(type);
-      long long physical = 0, elementary = 0, t;
+      int physical = 0;
+      long long elementary = 0, t;
       for (long long k = 0; k < numTags; ++k) {
-        if (!f.integer(t))
+        // The first tag is the physical group: the label or region, an int.
+        if (k == 0 ? !readLabel(s_, f, physical, "physical tag", "element", tag) : !f.integer(t))
           syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
-        if (k == 0) physical = t;
         if (k == 1) elementary = t;
       }
-      if (!fitsInt(physical))
-        syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
       std::array<long long, 4> v{};
       const int numNodes = type == 1 ? 2 : type == 2 ? 3 : 4;
       for (int k = 0; k < numNodes; ++k)
@@ -654,8 +656,7 @@ class GmshParser {
           syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
       if (!f.done())
         syntaxError("element " + std::to_string(i + 1) + " of " + std::to_string(n), syntax);
-      addRaw(static_cast<int>(type), tag, numTags >= 2 ? elementary : 0, v,
-             static_cast<int>(physical), -1);
+      addRaw(static_cast<int>(type), tag, numTags >= 2 ? elementary : 0, v, physical, -1);
     }
     expectEnd(elementsLine_, "the " + std::to_string(n) + " elements it announces");
   }

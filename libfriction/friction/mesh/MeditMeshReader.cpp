@@ -151,7 +151,7 @@ class MeditParser {
       // The vertex label is not kept: the triangle labels carry the boundary information.
       if (!f.real(x) || !f.real(y) || !f.real(z) || !f.skip() || !f.done())
         syntaxError("vertex", i + 1, n, syntax);
-      checkFinite(s_, x, y, z, "vertex", i + 1);
+      checkCoordinates(s_, x, y, z, "vertex", i + 1);
       mesh_.points.emplace_back(x, y, z);
     }
   }
@@ -166,9 +166,9 @@ class MeditParser {
       dataLine("Tetrahedra", i, n, syntax);
       LineFields f = s_.fields();
       std::array<long long, 4> v;
-      long long region;
+      int region;
       if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(v[2]) || !f.integer(v[3]) ||
-          !f.integer(region) || !f.done() || !fitsInt(region))
+          !readLabel(s_, f, region, "region", "tetrahedron", i + 1) || !f.done())
         syntaxError("tetrahedron", i + 1, n, syntax);
       std::array<Index, 4> t;
       for (int k = 0; k < 4; ++k) t[k] = vertex(v[k], "tetrahedron", i + 1);
@@ -177,7 +177,7 @@ class MeditParser {
         failTetrahedron(s_, s_.lineNumber(), defect, mesh_.points, t, "tetrahedron", i + 1, v,
                         "FreeFEM writes them so: the file was written or edited by something "
                         "else; swap two of its vertices");
-      mesh_.addCell({t[0], t[1], t[2], t[3]}, static_cast<int>(region));
+      mesh_.addCell({t[0], t[1], t[2], t[3]}, region);
       numbering_.cellLine.push_back(s_.lineNumber());
     }
   }
@@ -192,14 +192,14 @@ class MeditParser {
       dataLine("Triangles", i, n, syntax);
       LineFields f = s_.fields();
       std::array<long long, 3> v;
-      long long label;
-      if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(v[2]) || !f.integer(label) ||
-          !f.done() || !fitsInt(label))
+      int label;
+      if (!f.integer(v[0]) || !f.integer(v[1]) || !f.integer(v[2]) ||
+          !readLabel(s_, f, label, "label", "triangle", i + 1) || !f.done())
         syntaxError("triangle", i + 1, n, syntax);
       std::array<Index, 3> t;
       for (int k = 0; k < 3; ++k) t[k] = vertex(v[k], "triangle", i + 1);
       checkTriangleFacet(s_, s_.lineNumber(), t, "triangle", i + 1, v);
-      mesh_.addFacet({t[0], t[1], t[2]}, static_cast<int>(label));
+      mesh_.addFacet({t[0], t[1], t[2]}, label);
       numbering_.facetLine.push_back(s_.lineNumber());
     }
   }

@@ -11,11 +11,14 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <sstream>
 
 #include <Eigen/Geometry>
 
+#include "friction/core/InputFile.hpp"
+#include "friction/core/Suggest.hpp"
 #include "friction/mesh/MeshReaderDetail.hpp"
 #include "friction/mesh/MeshTopology.hpp"
 
@@ -23,23 +26,13 @@ namespace friction {
 
 namespace {
 
-// The whole file in one string: one read, no per-line I/O (a 500k-node mesh is ~50 MB).
+// The whole file in one string: one read, no per-line I/O (a 500k-node mesh is ~50 MB). Only a
+// regular file: a FIFO or a device would block or never end (InputFile.hpp).
 std::string loadFile(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path,
-                     "is a directory: expected a mesh file (FreeFEM .msh or .mesh, or gmsh .msh)");
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!f) throw InputError(path, std::string("cannot open the mesh file: ") + std::strerror(errno));
-  std::string text;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec) text.reserve(size);
-  char buffer[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
-  if (std::ferror(f.get()))
-    throw InputError(path, std::string("cannot read the mesh file: ") + std::strerror(errno));
-  return text;
+  InputFileRole role;
+  role.what = "the mesh file: FreeFEM .msh, Medit .mesh or gmsh .msh";
+  role.maxBytes = kMaxMeshFileBytes;
+  return readInputFile(path, role);
 }
 
 // Whether the first word of the file (after a byte-order mark and white space) is `tag`.
@@ -397,21 +390,50 @@ void dropUnusedPoints(Mesh& mesh, const FileNumbering& numbering) {
   for (Index& v : mesh.facetVertices) v = newNumber[v];
 }
 
-void checkFinite(const TextScanner& scanner, double x, double y, const char* kind,
-                 long long number) {
-  if (std::isfinite(x) && std::isfinite(y)) return;
-  scanner.fail(std::string(kind) + " " + std::to_string(number) + " has coordinate " +
-               (std::isfinite(x) ? "y" : "x") +
-               " that is not a finite number (NaN or Inf): expected finite coordinates");
+namespace {
+
+// One coordinate: finite, and small enough that areas and volumes do not overflow.
+void checkCoordinate(const TextScanner& scanner, double c, char axis, const char* kind,
+                     long long number) {
+  if (!std::isfinite(c))
+    scanner.fail(std::string(kind) + " " + std::to_string(number) + " has coordinate " + axis +
+                 " that is not a finite number (NaN or Inf): expected finite coordinates");
+  if (std::abs(c) > kMaxCoordinate)
+    scanner.fail(std::string(kind) + " " + std::to_string(number) + " has coordinate " + axis +
+                 " = " + formatNumber(c) +
+                 ", too large: the areas and volumes computed from it would overflow a double; "
+                 "expected |x|, |y|, |z| <= 1e100 (rescale the mesh, e.g. to metres)");
 }
 
-void checkFinite(const TextScanner& scanner, double x, double y, double z, const char* kind,
-                 long long number) {
-  checkFinite(scanner, x, y, kind, number);
-  if (std::isfinite(z)) return;
-  scanner.fail(std::string(kind) + " " + std::to_string(number) +
-               " has coordinate z that is not a finite number (NaN or Inf): expected finite "
-               "coordinates");
+}  // namespace
+
+void checkCoordinates(const TextScanner& scanner, double x, double y, const char* kind,
+                      long long number) {
+  checkCoordinate(scanner, x, 'x', kind, number);
+  checkCoordinate(scanner, y, 'y', kind, number);
+}
+
+void checkCoordinates(const TextScanner& scanner, double x, double y, double z, const char* kind,
+                      long long number) {
+  checkCoordinates(scanner, x, y, kind, number);
+  checkCoordinate(scanner, z, 'z', kind, number);
+}
+
+bool readLabel(const TextScanner& scanner, LineFields& fields, int& value, const char* what,
+               const char* item, long long number) {
+  long long v = 0;
+  bool overflow = false;
+  std::string_view text;
+  if (!fields.integer(v, overflow, text) && !overflow) return false;
+  if (overflow || !fitsInt(v))
+    scanner.fail(std::string(item) + " " + std::to_string(number) + ": " + what + " " +
+                 (overflow ? std::string(text) : std::to_string(v)) +
+                 " is out of range: expected a whole number from " +
+                 std::to_string(std::numeric_limits<int>::min()) + " to " +
+                 std::to_string(std::numeric_limits<int>::max()) +
+                 " (labels and regions are stored as int)");
+  value = static_cast<int>(v);
+  return true;
 }
 
 }  // namespace detail

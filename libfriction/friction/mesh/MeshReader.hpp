@@ -3,8 +3,10 @@
 // a gmsh file, MeshVersionFormatted a Medit file), not from the file name. A mesh is 3D when
 // it has tetrahedra (then its labelled facets are triangles), else 2D.
 //
-// Every error is an InputError naming file:line and what was expected: truncated files,
-// counts that disagree, indices out of range, NaN/Inf coordinates, zero-area or clockwise
+// Every error is an InputError naming file:line and what was expected: a path that is no
+// regular file (a FIFO, a device, a folder: InputFile.hpp), truncated files, counts that
+// disagree, indices out of range, labels and regions out of the range of an int, NaN/Inf
+// coordinates or coordinates so large that areas and volumes overflow, zero-area or clockwise
 // triangles, zero-volume or negative tetrahedra, cells listed twice, facets of more than two
 // cells, labelled facets that are no facet of a cell or are listed twice with one label,
 // unsupported element types, non-planar (z != 0) nodes of a 2D gmsh mesh, binary files.
@@ -12,11 +14,15 @@
 // Mesh::droppedPoints.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "friction/mesh/Mesh.hpp"
 
 namespace friction {
+
+/// The largest mesh file read (its text is held whole while it is parsed).
+constexpr std::uint64_t kMaxMeshFileBytes = std::uint64_t{4} << 30;
 
 /// Read a mesh, telling FreeFEM, Medit and gmsh apart by content.
 Mesh readMesh(const std::string& path);

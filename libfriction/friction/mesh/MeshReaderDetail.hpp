@@ -89,10 +89,23 @@ void finishMesh(const TextScanner& scanner, Mesh& mesh, const FileNumbering& num
 /// mesh.droppedPoints.
 void dropUnusedPoints(Mesh& mesh, const FileNumbering& numbering);
 
-/// Reject a NaN or Inf coordinate at the scanner's current line.
-void checkFinite(const TextScanner& scanner, double x, double y, const char* kind,
-                 long long number);
-void checkFinite(const TextScanner& scanner, double x, double y, double z, const char* kind,
-                 long long number);
+/// The largest |coordinate| read. A tetrahedron's volume is a sum of six products of three
+/// coordinate differences, each up to twice the largest |coordinate|: 48 * (1e100)^3 is far
+/// below the largest double (1.8e308), so no area, volume or edge length squared overflows.
+constexpr double kMaxCoordinate = 1e100;
+
+/// Reject a NaN or Inf coordinate, or one above kMaxCoordinate in size, at the scanner's
+/// current line, naming the item (`kind` `number`: "vertex 3", "node 20").
+void checkCoordinates(const TextScanner& scanner, double x, double y, const char* kind,
+                      long long number);
+void checkCoordinates(const TextScanner& scanner, double x, double y, double z, const char* kind,
+                      long long number);
+
+/// The next field as a label or region (the Mesh stores an int): false if there is none or it
+/// is not a whole number (the caller reports the syntax); a whole number outside the range of
+/// an int is an InputError at the current line: "<item> <number>: <what> 2147483648 is out of
+/// range ...".
+bool readLabel(const TextScanner& scanner, LineFields& fields, int& value, const char* what,
+               const char* item, long long number);
 
 }  // namespace friction::detail

@@ -17,12 +17,23 @@ void LineFields::skipSpace() {
 }
 
 bool LineFields::integer(long long& value) {
+  bool overflow = false;
+  std::string_view text;
+  return integer(value, overflow, text);
+}
+
+bool LineFields::integer(long long& value, bool& overflow, std::string_view& text) {
   skipSpace();
   const char* p = pos_;
   // from_chars rejects a leading '+', which C's printf never writes but people do.
   if (p < end_ && *p == '+' && p + 1 < end_ && p[1] != '-') ++p;
   const auto [next, ec] = std::from_chars(p, end_, value);
-  if (ec != std::errc() || (next < end_ && !isSpace(*next))) return false;
+  const bool whole = next > p && (next == end_ || isSpace(*next));
+  overflow = ec == std::errc::result_out_of_range && whole;
+  if (ec != std::errc() || !whole) {
+    if (overflow) text = std::string_view(pos_, static_cast<std::size_t>(next - pos_));
+    return false;
+  }
   pos_ = next;
   return true;
 }

@@ -21,6 +21,9 @@ class LineFields {
 
   /// Next field as an integer; false if there is none or it is not an integer.
   bool integer(long long& value);
+  /// Next field as an integer, as integer(); when it is a whole number beyond the range of
+  /// long long, false with `overflow` set and `text` the field (nothing consumed otherwise).
+  bool integer(long long& value, bool& overflow, std::string_view& text);
   /// Next field as a real number (NaN and Inf are parsed: the caller decides about them).
   bool real(double& value);
   /// Next field as text; false if there is none.

@@ -20,6 +20,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "friction/core/InputFile.hpp"
 #include "friction/core/OutputError.hpp"
 
 namespace friction {
@@ -488,8 +489,10 @@ int VtkSeries::resume(const std::function<bool(const std::string&)>& keep,
   const fs::path vtk(vtkDir_), vtp = vtk / "fractures";
   times_.clear();
   // The earlier collection, entry by entry; part 0 (the .vtu) starts a time.
-  if (fs::is_regular_file(pvdPath(), ec)) {
-    std::ifstream in(pvdPath());
+  if (fs::exists(pvdPath(), ec)) {
+    InputFileRole role;  // something else put in its place (a FIFO) is refused, not waited on
+    role.what = "the ParaView collection frictionSolver writes";
+    std::istringstream in(readInputFile(pvdPath(), role));
     const std::regex attribute("(\\w+)=\"([^\"]*)\"");
     for (std::string line; std::getline(in, line);) {
       if (line.find("<DataSet") == std::string::npos) continue;

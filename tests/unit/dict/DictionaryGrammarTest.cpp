@@ -11,6 +11,7 @@
 using namespace friction;
 using namespace friction::dicttest;
 using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
 
 TEST_CASE("scalars, words, strings and nested dictionaries keep their file and line",
           "[dict][grammar]") {
@@ -118,19 +119,24 @@ TEST_CASE("a number followed by a list on the same line is a table row, not a si
   CHECK(s.y == std::vector<std::vector<double>>{{1}, {3}});
 }
 
-TEST_CASE("a repeated key replaces the earlier value and a repeated dictionary merges",
-          "[dict][grammar]") {
-  // OpenFOAM's default (#inputMode merge), checked against foamDictionary v1912.
-  const Dictionary d =
-      Dictionary::parse("a 1;\nb 2;\na 3;\nd { x 1; y 2; }\nd { y 3; z 4; }\n;\n", "test");
-  CHECK(d.keys() == std::vector<std::string>{"a", "b", "d"});
-  CHECK(d.getScalar("a") == 3);
-  CHECK(d.location("a").line == 3);
-  const Dictionary& sub = d.subDict("d");
-  CHECK(sub.keys() == std::vector<std::string>{"x", "y", "z"});
-  CHECK(sub.getScalar("x") == 1);
-  CHECK(sub.getScalar("y") == 3);
-  CHECK(sub.getScalar("z") == 4);
+TEST_CASE("a key given twice in one file is an error naming both lines",
+          "[dict][grammar][duplicates]") {
+  // OpenFOAM takes the last one (foamDictionary v1912); a case that says two things is
+  // ambiguous, so the reader refuses it, for values and dictionaries, at any depth.
+  CHECK_THAT(inputErrorOf([] { Dictionary::parse("a 1;\nb 2;\na 3;\n", "test"); }),
+             StartsWith("test:3: key 'a' is given twice in test (first at line 1): expected each "
+                        "key once; delete one"));
+  CHECK_THAT(
+      inputErrorOf([] { Dictionary::parse("d { x 1; y 2; }\n\nd { y 3; z 4; }\n", "test"); }),
+      StartsWith("test:3: key 'd' is given twice in test (first at line 1)"));
+  CHECK_THAT(inputErrorOf([] { Dictionary::parse("d\n{\n    x 1;\n    x 1;\n}\n", "test"); }),
+             StartsWith("test:4: key 'x' is given twice in test/d (first at line 3)"));
+  CHECK_THAT(inputErrorOf([] { Dictionary::parse("v 1;\nv { a 1; }\n", "test"); }),
+             StartsWith("test:2: key 'v' is given twice in test (first at line 1)"));
+  // The same key in different dictionaries is no duplicate.
+  const Dictionary d = Dictionary::parse("a 1;\nd { a 2; }\ne { a 3; }\n", "test");
+  CHECK(d.getScalar("a") == 1);
+  CHECK(d.subDict("d").getScalar("a") == 2);
 }
 
 TEST_CASE("numbers keep their text, integers convert exactly, and number-like words stay words",

@@ -89,6 +89,41 @@ TEST_CASE("include cycles and missing files are errors at the #include line", "[
   }
 }
 
+TEST_CASE("an entry may override one from an #include file, not one written beside it",
+          "[dict][include][duplicates]") {
+  // OpenFOAM's idiom: include the common settings, then change some. The overriding entry
+  // takes the included one's place; a dictionary is merged into the included one.
+  TempDir dir;
+  dir.write("common", "E 1e9;\nnu 0.25;\nsolid { rho 2700; g 9.8; }\n");
+  const std::string main = dir.write("main", "#include \"common\"\nnu 0.3;\nsolid { g 9.81; }\n");
+  const Dictionary d = Dictionary::read(main);
+  CHECK(d.keys() == std::vector<std::string>{"E", "nu", "solid"});
+  CHECK(d.getScalar("nu") == 0.3);
+  CHECK(d.location("nu").str() == main + ":2");
+  CHECK(d.subDict("solid").getScalar("rho") == 2700);
+  CHECK(d.subDict("solid").getScalar("g") == 9.81);
+  // An included file may be overridden by a later one as well, and a file included twice
+  // repeats nothing of its own.
+  dir.write("more", "nu 0.35;\n");
+  const std::string chain =
+      dir.write("chain", "#include \"common\"\n#include \"more\"\n#include \"more\"\n");
+  CHECK(Dictionary::read(chain).getScalar("nu") == 0.35);
+
+  SECTION("a key written twice beside the #include is still a duplicate") {
+    const std::string twice =
+        dir.write("twice", "#include \"common\"\nnu 0.3;\nE 2e9;\nnu 0.31;\n");
+    CHECK_THAT(
+        inputErrorOf([&] { Dictionary::read(twice); }),
+        StartsWith(twice + ":4: key 'nu' is given twice in " + twice + " (first at line 2)"));
+  }
+  SECTION("a key written twice in the included file is a duplicate there") {
+    dir.write("bad", "a 1;\na 2;\n");
+    const std::string inc = dir.write("inc", "#include \"bad\"\n");
+    CHECK_THAT(inputErrorOf([&] { Dictionary::read(inc); }),
+               StartsWith((dir.path() / "bad").string() + ":2: key 'a' is given twice"));
+  }
+}
+
 TEST_CASE("variables expand from the current, then the enclosing dictionaries", "[dict][expand]") {
   const Dictionary d = Dictionary::parse(R"(
 E      1e9;

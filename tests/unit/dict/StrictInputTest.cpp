@@ -149,6 +149,66 @@ TEST_CASE("a UTF-8 byte-order mark is skipped, in the file and in an included fi
   CHECK(inside.getWord("E") == kBom);
 }
 
+TEST_CASE("a key with an invisible character is named with the character and its line",
+          "[dict][invisible]") {
+  // Pasted from a web page or a word processor, "nu" followed by a zero-width space or a
+  // no-break space looks like "nu" in every editor.
+  struct Case {
+    std::string text;
+    std::string shown;
+    std::string character;
+  };
+  for (const Case& c : {Case{"E 1e9;\nnu\u200b 0.3;\n", "nu<U+200B>", "U+200B ZERO WIDTH SPACE"},
+                        Case{"E 1e9;\nnu\u00a0 0.3;\n", "nu<U+00A0>", "U+00A0 NO-BREAK SPACE"},
+                        // a no-break space where a space belongs: the key swallows the value
+                        Case{"E 1e9;\nnu\u00a00.3;\n", "nu<U+00A0>0.3", "U+00A0 NO-BREAK SPACE"},
+                        Case{"E 1e9;\n\u2060nu 0.3;\n", "<U+2060>nu", "U+2060 WORD JOINER"}}) {
+    INFO(c.shown);
+    const Dictionary d = Dictionary::parse(c.text, "mech");
+    const std::string m = inputErrorOf([&] { d.getScalar("nu"); });
+    CHECK_THAT(m, StartsWith("mech:2: missing key 'nu' in mech (expected a number): the key "
+                             "written here is '" +
+                             c.shown + "', which has the invisible character " + c.character));
+    // Read as optional, the key is unknown: the same explanation.
+    const Dictionary o = Dictionary::parse(c.text, "mech");
+    o.getScalar("E");
+    CHECK(o.getScalarOr("nu", 0.25) == 0.25);
+    CHECK_THAT(inputErrorOf([&] { o.checkAllRead(); }),
+               StartsWith("mech:2: unknown key '" + c.shown +
+                          "' in mech, which has the invisible character " + c.character) &&
+                   Contains("(it reads as 'nu')"));
+  }
+  CHECK_THAT(inputErrorOf([] { Dictionary::parse("a\u200b 1;\n", "t").checkAllRead(); }),
+             Contains("U+200B ZERO WIDTH SPACE after 'a'; delete it"));
+}
+
+TEST_CASE("a control byte the user wrote is shown escaped, and the message keeps file:line",
+          "[dict][invisible]") {
+  // A NUL printed as a C string (printf, std::cerr << what()) ends the message where it stands.
+  using namespace std::string_literals;
+  const std::string text = "a 1;\nb\0c 2;\nx 1\0;\ny 2\x01 (3);\n"s;
+  REQUIRE(text.size() == 28);
+  const Dictionary d = Dictionary::parse(text, "dict");
+  const auto printed = [](auto&& f) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(printed([&] { d.getScalar("x"); }),
+             StartsWith("dict:3: key 'x': expected a number, got '1\\0' ('1\\0' is the number "
+                        "'1' followed by '\\0'") &&
+                 Catch::Matchers::EndsWith(")"));
+  CHECK_THAT(printed([&] { d.getScalar("y"); }),
+             StartsWith("dict:4: key 'y': expected a number, got '2\\x01 (3)'"));
+  d.getScalar("a");
+  CHECK_THAT(printed([&] { d.checkAllRead(); }),
+             StartsWith("dict:2: unknown key 'b<U+0000>c' in dict, which has the invisible "
+                        "character U+0000 NUL after 'b'"));
+}
+
 TEST_CASE("a dictionary without a FoamFile header reads like one with it and binary is refused",
           "[dict][header]") {
   TempDir dir;

@@ -76,6 +76,24 @@ const std::string gmsh41 =
     "3 10 30 40\n"           // 27
     "$EndElements\n";        // 28
 
+// One tetrahedron with a labelled face (Medit, 3D).
+const std::string medit =
+    "MeshVersionFormatted 2\n"  // 1
+    "Dimension 3\n"             // 2
+    "Vertices\n"                // 3
+    "4\n"                       // 4
+    "0 0 0 1\n"                 // 5
+    "1 0 0 1\n"                 // 6
+    "0 1 0 1\n"                 // 7
+    "0 0 1 1\n"                 // 8
+    "Tetrahedra\n"              // 9
+    "1\n"                       // 10
+    "1 2 3 4 1\n"               // 11
+    "Triangles\n"               // 12
+    "1\n"                       // 13
+    "1 2 3 5\n"                 // 14
+    "End\n";                    // 15
+
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
@@ -138,7 +156,8 @@ TEST_CASE("mesh: a mesh file that cannot be opened is an InputError naming the f
     FAIL("no InputError for a missing file");
   } catch (const InputError& e) {
     CHECK(e.location().file == path);
-    CHECK(std::string(e.what()).find("cannot open the mesh file") != std::string::npos);
+    CHECK_THAT(e.what(), Catch::StartsWith(path + ": cannot open: no such file (expected the "
+                                                  "mesh file"));
   }
 }
 
@@ -332,14 +351,89 @@ TEST_CASE("mesh: zero-area triangles are rejected", "[mesh][errors]") {
   }
 }
 
-TEST_CASE("mesh: a triangle whose area overflows double is rejected", "[mesh][errors]") {
+TEST_CASE("mesh: coordinates so large that areas and volumes overflow are refused at the vertex",
+          "[mesh][errors]") {
+  // 1e308 is a finite double, but the area or volume made from it is not: the message used to
+  // call such a tetrahedron "zero volume (-0.000976562)". The bound, 1e100, keeps every product
+  // of three coordinate differences finite.
   TempDir dir;
-  // Vertices 1, 2, 3 at (−1e308, 0), (1e308, 0), (1e308, 1e308): the sides' differences are
-  // infinite and the signed area is ∞ − ∞, not a number.
-  const std::string huge = replaceLine(
-      replaceLine(replaceLine(freeFem, 2, "-1e308 0 1"), 3, "1e308 0 1"), 4, "1e308 1e308 2");
-  requireReadError(dir, "huge.msh", huge, 6,
-                   {"triangle 1 (vertices 1 2 3", "not a finite number", "rescale the mesh"});
+  const std::string expected = "expected |x|, |y|, |z| <= 1e100 (rescale the mesh";
+  SECTION("FreeFEM") {
+    requireReadError(dir, "huge.msh", replaceLine(freeFem, 3, "1e308 0 1"), 3,
+                     {"vertex 2 has coordinate x = 1e+308, too large: the areas and volumes "
+                      "computed from it would overflow a double",
+                      expected});
+    requireReadError(dir, "huge2.msh", replaceLine(freeFem, 5, "0 -1e101 3"), 5,
+                     {"vertex 4 has coordinate y = -1e+101, too large", expected});
+  }
+  SECTION("Medit") {
+    const Mesh m = readMesh(dir.write("base.mesh", medit));
+    REQUIRE(m.numCells() == 1);
+    requireReadError(dir, "huge.mesh", replaceLine(medit, 6, "1e308 0 0 1"), 6,
+                     {"vertex 2 has coordinate x = 1e+308, too large", expected});
+    requireReadError(dir, "hugez.mesh", replaceLine(medit, 8, "0 0 2e100 1"), 8,
+                     {"vertex 4 has coordinate z = 2e+100, too large", expected});
+  }
+  SECTION("gmsh 2.2") {
+    requireReadError(dir, "huge22.msh", replaceLine(gmsh22, 8, "3 1 1e308 0"), 8,
+                     {"node 3 has coordinate y = 1e+308, too large", expected});
+  }
+  SECTION("gmsh 4.1") {
+    requireReadError(dir, "huge41.msh", replaceLine(gmsh41, 17, "1e308 0 0"), 17,
+                     {"node 20 has coordinate x = 1e+308, too large", expected});
+  }
+  SECTION("the bound itself is accepted") {
+    const Mesh m = readMesh(dir.write(
+        "edge.msh",
+        replaceLine(replaceLine(replaceLine(replaceLine(freeFem, 2, "0 0 1"), 3, "1e100 0 1"), 4,
+                                "1e100 1e100 2"),
+                    5, "0 1e100 3")));
+    CHECK(m.totalMeasure() == Approx(1e200));
+  }
+}
+
+TEST_CASE("mesh: a label or region beyond the range of an int is out of range, every format",
+          "[mesh][errors]") {
+  // The mesh keeps labels and regions as int; 2147483648 used to be "expected ... as ...", as if
+  // the line were malformed.
+  TempDir dir;
+  const std::string range =
+      "is out of range: expected a whole number from -2147483648 to "
+      "2147483647 (labels and regions are stored as int)";
+  SECTION("FreeFEM") {
+    requireReadError(dir, "region.msh", replaceLine(freeFem, 6, "1 2 3 2147483648"), 6,
+                     {"triangle 1: region 2147483648 " + range});
+    requireReadError(dir, "label.msh", replaceLine(freeFem, 9, "2 3 -2147483649"), 9,
+                     {"edge 2: label -2147483649 " + range});
+    requireReadError(dir, "huge.msh", replaceLine(freeFem, 10, "3 4 99999999999999999999"), 10,
+                     {"edge 3: label 99999999999999999999 " + range});
+  }
+  SECTION("Medit") {
+    requireReadError(dir, "region.mesh", replaceLine(medit, 11, "1 2 3 4 2147483648"), 11,
+                     {"tetrahedron 1: region 2147483648 " + range});
+    requireReadError(dir, "label.mesh", replaceLine(medit, 14, "1 2 3 2147483648"), 14,
+                     {"triangle 1: label 2147483648 " + range});
+  }
+  SECTION("gmsh 2.2") {
+    requireReadError(dir, "label22.msh", replaceLine(gmsh22, 13, "1 1 2 2147483648 1 1 2"), 13,
+                     {"element 1: physical tag 2147483648 " + range});
+    requireReadError(dir, "name22.msh",
+                     replaceLine(gmsh22, 3,
+                                 "$EndMeshFormat\n$PhysicalNames\n1\n1 2147483648 \"top\"\n"
+                                 "$EndPhysicalNames"),
+                     6, {"physical name 1: tag 2147483648 " + range});
+  }
+  SECTION("gmsh 4.1") {
+    requireReadError(dir, "label41.msh", replaceLine(gmsh41, 6, "1 0 0 0 1 0 0 1 2147483648 0"), 6,
+                     {"curve 1: physical tag 2147483648 " + range});
+  }
+  SECTION("the ends of the range are accepted") {
+    const Mesh m =
+        readMesh(dir.write("ends.msh", replaceLine(replaceLine(freeFem, 6, "1 2 3 2147483647"), 8,
+                                                   "1 2 -2147483648")));
+    CHECK(m.cellRegion[0] == 2147483647);
+    CHECK(m.facetLabel[0] == -2147483648);
+  }
 }
 
 TEST_CASE("mesh: clockwise triangles are rejected, naming the triangle and how to fix it",
