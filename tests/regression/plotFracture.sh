@@ -2,8 +2,10 @@
 # Regression test for utilities/plotFracture/plotFracture.py on a solved copy of
 # cases/paperBenchmark (made in WORK_DIR, never in cases/): the default run writes
 # postProcessing/fracture_fracture.png and convergence.png, each a real PNG (magic bytes) and
-# not empty; the user errors (no time folders, unknown fracture, unknown time, missing case)
-# exit 1 with a message on stderr and write nothing.
+# not empty; tables with a fluid pressure (columns pressure, sigmaNEffective) get the panel of
+# p and sigma'_n (the figure's height says how many panels), the others not; the user errors
+# (no time folders, unknown fracture, unknown time, missing case) exit 1 with a message on
+# stderr and write nothing.
 # Usage: plotFracture.sh SPLIT_BINARY SOLVER_BINARY SOURCE_DIR WORK_DIR
 set -uo pipefail
 split=$1 solver=$2 src=$3 work=$4
@@ -23,6 +25,9 @@ cp -r "$src/cases/paperBenchmark" "$c"
 isPng() {  # non-empty, starts with the 8-byte PNG signature
   [[ -s $1 ]] || return 1
   [[ $(head -c 8 "$1" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]]
+}
+pngHeight() {  # the height in pixels, from the IHDR chunk (bytes 20-23, big-endian)
+  echo $((16#$(head -c 24 "$1" | tail -c 4 | od -An -tx1 | tr -d ' \n')))
 }
 
 # Errors before a solve: no time folders.
@@ -96,12 +101,61 @@ grep -q " nan nan nan nan tip$" "$ic/1/fractures/crack.dat" || fail "inclinedCra
 out=$("$python" "$plot" -case "$ic" -noConvergence 2>&1) || fail "inclinedCrack: $out"
 grep -qF "(slip tendency and slip)" <<<"$out" || fail "inclinedCrack: $out"
 isPng "$ic/postProcessing/fracture_crack.png" || fail "inclinedCrack: no PNG"
-# A crack that opens (contact unilateral): the opening's panel too.
+# A crack that opens (contact unilateral) under a fluid pressure: the opening's panel and the
+# pressure's (p and sigma'_n) too.
 sn=$work/sneddonCrack
 cp -r "$src/cases/sneddonCrack" "$sn" && "$sn/Allclean" >/dev/null
 "$split" -case "$sn" >"$sn/log.splitFractureNodes" 2>&1 || fail "sneddonCrack: split failed"
 "$solver" -case "$sn" >"$sn/log.frictionSolver" 2>&1 || fail "sneddonCrack: solver failed"
 out=$("$python" "$plot" -case "$sn" -noConvergence 2>&1) || fail "sneddonCrack: $out"
-grep -qF "fracture_crack.png (tractions, slip and opening)" <<<"$out" || fail "sneddonCrack: $out"
+grep -qF "fracture_crack.png (tractions, slip, opening, pressure and effective normal stress)" \
+  <<<"$out" || fail "sneddonCrack: $out"
 isPng "$sn/postProcessing/fracture_crack.png" || fail "sneddonCrack: no PNG"
+((  $(pngHeight "$sn/postProcessing/fracture_crack.png") == 1500 )) ||
+  fail "sneddonCrack: $(pngHeight "$sn/postProcessing/fracture_crack.png") px tall, expected 1500 (4 panels)"
+
+# A fluid pressure (tables with 'pressure sigmaNEffective' before the state, as frictionSolver
+# writes them with fracturePressure or faultPressure): the solved paperBenchmark's tables with
+# the columns added, p uniform. A third panel (p and sigma'_n along s: the figure 10 in tall,
+# 1200 px, against 7.5 in, 900 px, without it); ST while sigma'_n < 0 somewhere, the
+# tractions once p exceeds every node's compression (sigma'_n >= 0): the test is on sigma'_n,
+# not sigma_n.
+withPressure() {  # name, p: a copy of the solved paperBenchmark with the pressure columns
+  local v=$work/$1
+  rm -rf "$v" && cp -r "$c" "$v" && rm -rf "$v/postProcessing"
+  for f in "$v"/[1-9]*/fractures/*.dat; do
+    "$python" - "$f" "$2" <<'PY' || fail "$1: cannot add the pressure columns"
+import math, sys
+path, p = sys.argv[1], float(sys.argv[2])
+lines = open(path).read().splitlines()
+names = lines[0][1:].split()
+assert names[-1] == "state" and "pressure" not in names
+out = ["# " + " ".join(names[:-1] + ["pressure", "sigmaNEffective", "state"])]
+for line in lines[1:]:
+    if line.startswith("#"):
+        out.append(line)
+        continue
+    items = line.split()
+    sn = float(items[names.index("sigmaN")])
+    out.append(" ".join(items[:-1] + [repr(p), repr(sn + p) if math.isfinite(sn) else "nan",
+                                      items[-1]]))
+open(path, "w").write("\n".join(out) + "\n")
+PY
+  done
+  echo "$v"
+}
+v=$(withPressure pressure 0.01)
+out=$("$python" "$plot" -case "$v" -noConvergence 2>&1); rc=$?
+((rc == 0)) || fail "pressure: exit $rc: $out"
+grep -qF "fracture_fracture.png (slip tendency, slip, pressure and effective normal stress)" \
+  <<<"$out" || fail "pressure: $out"
+isPng "$v/postProcessing/fracture_fracture.png" || fail "pressure: no PNG"
+(( $(pngHeight "$v/postProcessing/fracture_fracture.png") == 1200 )) ||
+  fail "pressure: $(pngHeight "$v/postProcessing/fracture_fracture.png") px tall, expected 1200"
+(( $(pngHeight "$c/postProcessing/fracture_fracture.png") == 900 )) ||
+  fail "paperBenchmark: $(pngHeight "$c/postProcessing/fracture_fracture.png") px tall, expected 900"
+v=$(withPressure pressureAboveConfinement 1)   # |sigma_n| < 0.1 on every node
+out=$("$python" "$plot" -case "$v" -noConvergence 2>&1) || fail "pressure above: $out"
+grep -qF "(tractions, slip, pressure and effective normal stress)" <<<"$out" ||
+  fail "pressure above the confinement: the ST panel drawn: $out"
 echo "plotFracture: ok"

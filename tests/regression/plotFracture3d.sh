@@ -10,6 +10,8 @@
 #    of that function at r <= 0.8 A (see checkProfile below), r the distance in the map
 #    plane from the penny's centre; both for the default segment and for a -line whose
 #    points lie off the plane (projected on it);
+#  * tables with a fluid pressure (columns pressure, sigmaNEffective): two more maps (p and
+#    sigma'_n), two more profile rows and two more CSV columns, p and sigma_n + p exact;
 #  * bad input (a table without rows, a missing column, an unknown state, a malformed -line,
 #    a -line that misses the fault, -line with several faults, a bad -samples, an unknown
 #    image format) exits 1 with a message naming the file or the option, and leaves no PNG,
@@ -30,6 +32,9 @@ rm -rf "$work" && mkdir -p "$work"
 isPng() {  # non-empty, starts with the 8-byte PNG signature
   [[ -s $1 ]] || return 1
   [[ $(head -c 8 "$1" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]]
+}
+pngHeight() {  # the height in pixels, from the IHDR chunk (bytes 20-23, big-endian)
+  echo $((16#$(head -c 24 "$1" | tail -c 4 | od -An -tx1 | tr -d ' \n')))
 }
 
 # checkProfile CSV KIND: the samples against the analytic penny (constants of the generator).
@@ -254,4 +259,71 @@ grep -qF "maps of slip magnitude, ST, node states and opening at t = 1" <<<"$out
 for png in "$op"/postProcessing/fracture_fault{,_profile}.png; do
   isPng "$png" || fail "opening: $png missing, empty or not a PNG"
 done
+# A fluid pressure (faultPressure, fracturePressure): the tables have "pressure
+# sigmaNEffective" before the state (after "opening" where there is one). p is linear in
+# x y z (so in the map coordinates, and reproduced by linear interpolation to round-off),
+# sigma'_n = sigma_n + p, nan at tips. The maps gain the maps of p and sigma'_n (two rows: the
+# figure 11.5 in tall, 1380 px, against 5.8 in, 696 px, without them), the profile its two
+# rows (6 of 2.5 in: 1800 px, against 1200 px), the CSV the columns pressure,sigmaNEffective
+# after the others; the tables without pressure keep the CSV header they had.
+pr=$work/pressure
+cp -r "$disc" "$pr" && rm -rf "$pr/postProcessing" "$pr/profile.csv"
+for f in "$pr"/*/fractures/fault.dat; do
+  "$python" - "$f" "$make" <<'PY' || fail "cannot add the pressure columns"
+import math, os, sys
+sys.path.insert(0, os.path.dirname(sys.argv[2]))
+import plotFracture3dCase as case
+path = sys.argv[1]
+lines = open(path).read().splitlines()
+names = lines[0][1:].split()
+out = ["# " + " ".join(names[:-1] + ["pressure", "sigmaNEffective", "state"])]
+for line in lines[1:]:
+    if line.startswith("#"):
+        out.append(line)
+        continue
+    items = line.split()
+    p = case.pressure([float(items[names.index(k)]) for k in "xyz"])
+    sn = float(items[names.index("sigmaN")])
+    out.append(" ".join(items[:-1] + [repr(p), repr(sn + p) if math.isfinite(sn) else "nan",
+                                      items[-1]]))
+open(path, "w").write("\n".join(out) + "\n")
+PY
+done
+out=$("$python" "$plot" -case "$pr" -noConvergence -profileCsv "$pr/profile.csv" 2>&1); rc=$?
+((rc == 0)) || fail "pressure: exit $rc: $out"
+grep -qF "maps of slip magnitude, ST, node states, pressure and effective normal stress at t = 1" \
+  <<<"$out" || fail "pressure: $out"
+for png in "$pr"/postProcessing/fracture_fault{,_profile}.png; do
+  isPng "$png" || fail "pressure: $png missing, empty or not a PNG"
+done
+h=$(pngHeight "$pr/postProcessing/fracture_fault.png")
+((h == 1380)) || fail "pressure: the maps are $h px tall, expected 1380 (two rows of maps)"
+h=$(pngHeight "$disc/postProcessing/fracture_fault.png")
+((h == 696)) || fail "penny without pressure: the maps are $h px tall, expected 696 (one row)"
+h=$(pngHeight "$pr/postProcessing/fracture_fault_profile.png")
+((h == 1800)) || fail "pressure: the profile is $h px tall, expected 1800 (six rows)"
+"$python" - "$pr/profile.csv" "$disc/profile.csv" "$make" <<'PY' || fail "pressure: profile CSV"
+import csv, math, os, sys
+import numpy as np
+sys.path.insert(0, os.path.dirname(sys.argv[3]))
+import plotFracture3dCase as case
+plain = open(sys.argv[2]).readline().strip()
+assert plain == "time,distance,x,y,z,slipMagnitude,sigmaN,tauMagnitude,ST", plain
+header = open(sys.argv[1]).readline().strip()
+assert header == plain + ",pressure,sigmaNEffective", header
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert sorted({r["time"] for r in rows}, key=float) == ["0.5", "1"]
+checked = 0
+for r in rows:
+    q = np.array([float(r[k]) for k in "xyz"]) - case.C
+    s = case.C + (q @ case.T1) * case.T1 + (q @ case.T2) * case.T2  # on the plane
+    p, sn, eff = float(r["pressure"]), float(r["sigmaN"]), float(r["sigmaNEffective"])
+    assert math.isfinite(p), f"nan pressure at {s} (p is given at tips too)"
+    assert abs(p - case.pressure(s)) <= 1e-9 * abs(case.pressure(s)), (p, case.pressure(s))
+    if math.isfinite(sn):
+        assert abs(eff - (sn + p)) <= 1e-9 * abs(sn), (eff, sn + p)
+        checked += 1
+assert checked >= 300, f"only {checked} samples of sigma'_n"
+print(f"  pressure: {len(rows)} samples of p exact to 1e-9, {checked} of sigma'_n = sigma_n + p")
+PY
 echo "plotFracture3d: ok"

@@ -52,6 +52,11 @@ def tauMagnitude(p):
     return 4e6 + 1e6 * (p[1] - C[1])
 
 
+def pressure(p):
+    """A fluid pressure for the test's tables with pressure columns (not written here)."""
+    return 2e7 + 3e6 * (p[0] - C[0]) - 2e6 * (p[1] - C[1]) + 1e6 * (p[2] - C[2])
+
+
 def discPoints():
     pts = [(0.0, 0.0, False)]
     for k in range(1, RINGS + 1):

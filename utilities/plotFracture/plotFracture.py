@@ -10,7 +10,10 @@ Figure 1, per fracture (default <case>/postProcessing/fracture_<name>.png):
           frictionless, mu_f = 0, or a fracture in tension, where ST and mu_f mean nothing): the
           tractions sigma_n and tau [Pa] along s.
   bottom: the accumulated slip [m] along s, one curve per time; with fractures that open
-          (an 'opening' column: contact unilateral) a third panel, the opening g [m].
+          (an 'opening' column: contact unilateral) a third panel, the opening g [m]; with a
+          fluid pressure (columns 'pressure sigmaNEffective': fracturePressure, faultPressure)
+          a last panel, p and sigma'_n = sigma_n + p [Pa] along s, and ST and the check for
+          compressed nodes then use sigma'_n.
 Tips (state 'tip': a single node, no traction) are left out of the traction and ST curves;
 their slip, 0 (the jump is held there), is drawn.
 Figure 2 (default <case>/postProcessing/convergence.png, when postProcessing/convergence.dat
@@ -43,16 +46,20 @@ the dimension is told from the header. Per fault, at the last of the chosen time
   solver's tangentBasis(n)); the nodes are projected on that plane and triangulated (Delaunay:
   the convex hull of the projected nodes, flat border triangles removed):
     slip magnitude [m] with arrows of the slip (slipX slipY slipZ projected on t1, t2),
-    ST over the non-tip nodes, and the node states (tip, stick, slip, open) as markers;
+    ST over the non-tip nodes, and the node states (tip, stick, slip, open) as markers; with
+    a fluid pressure (columns pressure, sigmaNEffective) two more maps, p and sigma'_n, each
+    with the outline of the slipping nodes (two rows of maps);
   profile (default <case>/postProcessing/fracture_<name>_profile.png): slipMagnitude,
-  sigmaN, tauMagnitude and ST along a segment, one curve per chosen time, sampled by linear
+  sigmaN, tauMagnitude and ST (and opening, pressure, sigmaNEffective where the tables have
+  them) along a segment, one curve per chosen time, sampled by linear
   interpolation on the triangulation (tractions on the triangulation of the non-tip nodes)
   against the distance from the segment's first point. The segment: -line
   x0,y0,z0:x1,y1,z1 (two points in m, projected on the map plane), by default through the
   centroid along t1 across the whole fault. Samples off the triangulated surface are left
   out of the plot (nan in the CSV).
   -profile out.png, -profileCsv out.csv (time,distance,x,y,z,slipMagnitude,sigmaN,
-  tauMagnitude,ST; x y z the sample point on the segment), -samples N (default 201).
+  tauMagnitude,ST, then pressure,sigmaNEffective where the tables have them; x y z the sample
+  point on the segment), -samples N (default 201).
 Every table is read and checked before any file is written, and each file is written under
 a temporary name and renamed: a failed run leaves no partial figure.
 """
@@ -192,8 +199,8 @@ def statusWord(status):
 
 
 def plotFracture(case, name, times, out):
-    """Draw figure 1; returns what the top panel shows ("slip tendency" or "tractions") and
-    whether it has the opening's panel."""
+    """Draw figure 1; returns what the top panel shows ("slip tendency" or "tractions"),
+    whether it has the opening's panel and whether it has the fluid pressure's panel."""
     law = fractureEntry(case, name, "law")
     mu = frictionCoefficient(case, name)
     tables = []
@@ -202,15 +209,20 @@ def plotFracture(case, name, times, out):
         tables.append((t, cols, statusWord(status)))
     # ST = |tau| / -sigma_n and the line ST = mu_f mean something only for a Coulomb law at
     # compressed nodes; a tip (no traction) counts for nothing.
+    # With a fluid pressure (columns pressure, sigmaNEffective) the law and ST act on the
+    # effective normal stress sigma'_n = sigma_n + p: a node is compressed where sigma'_n < 0.
+    pressure = any("pressure" in cols and "sigmaNEffective" in cols for _, cols, _ in tables)
+    normal = "sigmaNEffective" if pressure else "sigmaN"
     compressed = any(state in ("stick", "slip") and sigmaN < 0
                      for _, cols, _ in tables
-                     for state, sigmaN in zip(cols["state"], cols.get("sigmaN", [])))
+                     for state, sigmaN in zip(cols["state"], cols.get(normal, [])))
     showST = law in COULOMB_LAWS and compressed and (mu is None or mu > 0)
     opening = any("opening" in cols for _, cols, _ in tables)
-    if opening:
-        fig, (axTop, axSlip, axOpen) = plt.subplots(3, 1, figsize=(8, 10), sharex=True)
-    else:
-        fig, (axTop, axSlip) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True)
+    panels = 2 + opening + pressure
+    fig, axes = plt.subplots(panels, 1, figsize=(8, 7.5 + 2.5 * (panels - 2)), sharex=True)
+    axTop, axSlip = axes[0], axes[1]
+    axOpen = axes[2] if opening else None
+    axPress = axes[-1] if pressure else None
     colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(times) - 1) for i in range(len(times))])
     for (t, cols, word), color in zip(tables, colors):
         label = f"t = {t}" + (f" ({word})" if word and word != "converged" else "")
@@ -226,10 +238,17 @@ def plotFracture(case, name, times, out):
         axSlip.plot(cols["s"], cols["slip"], ".-", color=color, ms=3, lw=1, label=label)
         if opening and "opening" in cols:
             axOpen.plot(cols["s"], cols["opening"], ".-", color=color, ms=3, lw=1, label=label)
+        if pressure and "pressure" in cols and "sigmaNEffective" in cols:
+            # p on every node (a tip has one too); sigma'_n where there is a traction.
+            axPress.plot(cols["s"], cols["pressure"], ".-", color=color, ms=3, lw=1,
+                         label=f"$p$, {label}")
+            axPress.plot(s, [cols["sigmaNEffective"][i] for i in keep], "x--", color=color,
+                         ms=3, lw=1, label=f"$\\sigma'_n$, {label}")
     if showST:
         if mu is not None:
             axTop.axhline(mu, color="firebrick", ls="--", lw=1.2, label=f"$\\mu_f$ = {mu:g}")
-        axTop.set_ylabel(r"slip tendency ST = $|\tau| / (-\sigma_n)$")
+        axTop.set_ylabel(r"slip tendency ST = $|\tau| / (-\sigma'_n)$" if pressure
+                         else r"slip tendency ST = $|\tau| / (-\sigma_n)$")
     else:
         axTop.set_ylabel(r"traction $\sigma_n$, $\tau$ [Pa]")
     axTop.set_title(f"{os.path.basename(os.path.abspath(case))}: fracture '{name}'"
@@ -243,11 +262,15 @@ def plotFracture(case, name, times, out):
         axOpen.set_ylabel("opening g [m]")
         axOpen.grid(True, alpha=0.3)
         axOpen.legend(fontsize=8)
-    (axOpen if opening else axSlip).set_xlabel("arclength s [m]")
+    if pressure:
+        axPress.set_ylabel(r"fluid pressure $p$, $\sigma'_n = \sigma_n + p$ [Pa]")
+        axPress.grid(True, alpha=0.3)
+        axPress.legend(fontsize=8)
+    axes[-1].set_xlabel("arclength s [m]")
     fig.tight_layout()
     saveFigure(fig, out)
     plt.close(fig)
-    return ("slip tendency" if showST else "tractions"), opening
+    return ("slip tendency" if showST else "tractions"), opening, pressure
 
 
 def readConvergence(path):
@@ -473,8 +496,13 @@ class FaultMaps:
                                 f"{np.count_nonzero(~used)} nodes on top of others): its maps "
                                 "and profile overlap there")
         self.keep = np.array([s != "tip" for s in table["state"]])
-        for key in ("sigmaN", "tauMagnitude", "ST"):
+        # A fluid pressure (columns pressure and sigmaNEffective): p is drawn over every node
+        # when it is finite at each (the solver writes it at tips too), sigma'_n as a traction.
+        self.pressure = "pressure" in table and "sigmaNEffective" in table
+        for key in ("sigmaN", "tauMagnitude", "ST") + (("sigmaNEffective",) if self.pressure
+                                                        else ()):
             self.keep &= np.isfinite(table[key])
+        self.pressureEverywhere = self.pressure and bool(np.isfinite(table["pressure"]).all())
         self.tractionTri = None
         if self.keep.sum() >= 3:
             try:
@@ -484,7 +512,8 @@ class FaultMaps:
                 self.tractionTri = None
 
     def sample(self, u, v):
-        """slipMagnitude, sigmaN, tauMagnitude, ST at the map points, nan off the surface."""
+        """slipMagnitude, sigmaN, tauMagnitude, ST (and opening, pressure, sigmaNEffective where
+        the table has them) at the map points, nan off the surface."""
         # A point on the border (the default segment ends on border nodes) may be found
         # outside by round-off: such points are looked up again a hair (1e-9 of the map's
         # size) towards the centroid.
@@ -503,7 +532,14 @@ class FaultMaps:
         out = {"slipMagnitude": interp(self.tri, self.table["slipMagnitude"])}
         if "opening" in self.table:  # fractures that open (contact unilateral)
             out["opening"] = interp(self.tri, self.table["opening"])
-        for key in ("sigmaN", "tauMagnitude", "ST"):
+        tractions = ("sigmaN", "tauMagnitude", "ST")
+        if self.pressure:
+            tractions += ("sigmaNEffective",)
+            if self.pressureEverywhere:
+                out["pressure"] = interp(self.tri, self.table["pressure"])
+            else:
+                tractions += ("pressure",)
+        for key in tractions:
             out[key] = (interp(self.tractionTri, self.table[key][self.keep])
                         if self.tractionTri is not None else np.full(np.shape(u), np.nan))
         return out
@@ -568,7 +604,23 @@ class Fault3d:
         # Side by side for a roundish fault, stacked for an elongated one.
         aspect = np.ptp(m.u) / max(np.ptp(m.v), 1e-300)
         opening = "opening" in table  # a fourth map: the opening of fractures that open
-        if opening:
+        pressure = m.pressure  # two more: the fluid pressure p and sigma'_n = sigma_n + p
+        if pressure:
+            # Two rows of three maps (three rows of two for an elongated fault): slip, ST,
+            # states; p, sigma'_n and the opening (or nothing).
+            if aspect > 1.4:
+                fig, grid = plt.subplots(3, 2, figsize=(14, min(24.0, 3 * 6 / aspect + 3.5)))
+                axes = grid.T.ravel()
+            else:
+                fig, grid = plt.subplots(2, 3, figsize=(19, 11.5))
+                axes = grid.ravel()
+            axes = list(axes)
+            axPressure, axEffective = axes[3], axes[4]
+            axOpening = axes[5] if opening else None
+            if not opening:
+                axes[5].remove()
+                axes = axes[:5]
+        elif opening:
             fig, grid = plt.subplots(2, 2, figsize=(14, 11.5))
             axes = grid.ravel()
         elif aspect > 1.4:
@@ -577,10 +629,13 @@ class Fault3d:
             fig, axes = plt.subplots(1, 3, figsize=(18, 5.8))
         axSlip, axST, axState = axes[:3]
         if opening:
-            pc = axes[3].tripcolor(m.tri, table["opening"], shading="gouraud", cmap="cividis")
-            fig.colorbar(pc, ax=axes[3], shrink=0.85, label="opening g [m]")
-            axes[3].set_title("opening g = $-[[u]] \\cdot n_\\Gamma$ (contact unilateral)",
-                              fontsize=10)
+            axOpen = axOpening if pressure else axes[3]
+            pc = axOpen.tripcolor(m.tri, table["opening"], shading="gouraud", cmap="cividis")
+            fig.colorbar(pc, ax=axOpen, shrink=0.85, label="opening g [m]")
+            axOpen.set_title("opening g = $-[[u]] \\cdot n_\\Gamma$ (contact unilateral)",
+                             fontsize=10)
+        if pressure:
+            self.drawPressureMaps(fig, m, axPressure, axEffective)
         pc = axSlip.tripcolor(m.tri, table["slipMagnitude"], shading="gouraud", cmap="viridis")
         fig.colorbar(pc, ax=axSlip, shrink=0.85, label="slip magnitude |slip| [m]")
         magnitude = np.hypot(m.slipU, m.slipV)
@@ -634,11 +689,43 @@ class Fault3d:
         saveFigure(fig, out)
         plt.close(fig)
 
+    def drawPressureMaps(self, fig, m, axPressure, axEffective):
+        """The maps of the fluid pressure p and of sigma'_n = sigma_n + p, with the outline of
+        the slipping nodes (where the fault slips against where the fluid has reached)."""
+        table = m.table
+        if m.pressureEverywhere:
+            pc = axPressure.tripcolor(m.tri, table["pressure"], shading="gouraud",
+                                      cmap="Blues")
+        elif m.tractionTri is not None:
+            pc = axPressure.tripcolor(m.tractionTri, table["pressure"][m.keep],
+                                      shading="gouraud", cmap="Blues")
+        else:
+            pc = None
+        if pc is not None:
+            fig.colorbar(pc, ax=axPressure, shrink=0.85, label="fluid pressure p [Pa]")
+        if m.tractionTri is not None:
+            pc = axEffective.tripcolor(m.tractionTri, table["sigmaNEffective"][m.keep],
+                                       shading="gouraud", cmap="cividis")
+            fig.colorbar(pc, ax=axEffective, shrink=0.85,
+                         label=r"$\sigma'_n = \sigma_n + p$ [Pa] (compression < 0)")
+        slipping = np.array([s == "slip" for s in table["state"]], dtype=float)
+        outline = ""
+        if slipping.any() and not slipping.all():
+            for ax in (axPressure, axEffective):
+                ax.tricontour(m.tri, slipping, levels=[0.5], colors="red", linewidths=1.2)
+            outline = "\nred: the outline of the slipping nodes"
+        axPressure.set_title(f"fluid pressure p{outline}", fontsize=10)
+        axEffective.set_title(f"effective normal stress $\\sigma'_n$ (non-tip nodes){outline}",
+                              fontsize=10)
+
     def drawProfile(self, out):
         keys = (("slipMagnitude", "slip magnitude [m]"), ("sigmaN", r"$\sigma_n$ [Pa]"),
                 ("tauMagnitude", r"$|\tau|$ [Pa]"), ("ST", r"ST = $|\tau| / (-\sigma'_n)$"))
         if all("opening" in p for p in self.profiles):
             keys += (("opening", "opening g [m]"),)
+        if all("pressure" in p for p in self.profiles):
+            keys += (("pressure", "fluid pressure p [Pa]"),
+                     ("sigmaNEffective", r"$\sigma'_n = \sigma_n + p$ [Pa]"))
         fig, axes = plt.subplots(len(keys), 1, figsize=(8, 2.5 * len(keys)), sharex=True)
         colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(self.times) - 1)
                                  for i in range(len(self.times))])
@@ -664,11 +751,14 @@ class Fault3d:
         plt.close(fig)
 
     def profileCsv(self):
-        lines = ["time,distance,x,y,z,slipMagnitude,sigmaN,tauMagnitude,ST"]
+        keys = ("slipMagnitude", "sigmaN", "tauMagnitude", "ST")
+        # A fluid pressure at every chosen time: its columns after the others.
+        if all("pressure" in p for p in self.profiles):
+            keys += ("pressure", "sigmaNEffective")
+        lines = ["time,distance,x,y,z," + ",".join(keys)]
         for t, profile in zip(self.times, self.profiles):
             for i, d in enumerate(self.distance):
-                values = [d, *self.points[i]] + [profile[k][i] for k in
-                                                 ("slipMagnitude", "sigmaN", "tauMagnitude", "ST")]
+                values = [d, *self.points[i]] + [profile[k][i] for k in keys]
                 lines.append(",".join([t] + [f"{v:.12g}" for v in values]))
         return "\n".join(lines) + "\n"
 
@@ -699,7 +789,8 @@ def main(argv):
                     "postProcessing/fracture_<name>_profile.png)")
     ap.add_argument("-profileCsv", metavar="OUT.csv",
                     help="3D: also write the profile's samples as CSV (time,distance,x,y,z,"
-                    "slipMagnitude,sigmaN,tauMagnitude,ST; nan off the fault)")
+                    "slipMagnitude,sigmaN,tauMagnitude,ST[,pressure,sigmaNEffective]; nan off "
+                    "the fault)")
     ap.add_argument("-samples", metavar="N", help="3D: points along the profile (default 201)")
     # A value that starts with a minus sign (-line -250,-433,0:250,433,0) would be read as an
     # option: joined to its option as -line=VALUE, which argparse takes as it is.
@@ -799,13 +890,16 @@ def main(argv):
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
         fault = faults3d.get(name)
         if fault is None:
-            shows, opening = plotFracture(case, name, times, out)
-            written.append(f"{out} ({shows}, slip and opening)" if opening
-                           else f"{out} ({shows} and slip)")
+            shows, opening, pressure = plotFracture(case, name, times, out)
+            parts = [shows, "slip"] + (["opening"] if opening else []) + \
+                (["pressure", "effective normal stress"] if pressure else [])
+            written.append(f"{out} ({', '.join(parts[:-1])} and {parts[-1]})")
             continue
         fault.drawMaps(out)
-        what = ("ST, node states and opening" if "opening" in fault.maps[-1].table
-                else "ST and node states")
+        last = fault.maps[-1]
+        parts = ["ST", "node states"] + (["opening"] if "opening" in last.table else []) + \
+            (["pressure", "effective normal stress"] if last.pressure else [])
+        what = ", ".join(parts[:-1]) + " and " + parts[-1]
         written.append(f"{out} (maps of slip magnitude, {what} at t = {times[-1]})")
         profile = a.profile or os.path.join(post, f"fracture_{name}_profile.png")
         os.makedirs(os.path.dirname(os.path.abspath(profile)), exist_ok=True)
