@@ -176,17 +176,13 @@ class PorePressure : public Effect {
               << "rock's pore pressure (" << name_ << ")\n";
         continue;
       }
-      std::vector<const ControlNode*> nodes;
       std::vector<std::size_t> index;
-      for (std::size_t k = 0; k < n; ++k)
-        if (c.nodes[k].fracture == static_cast<int>(f))
-          nodes.push_back(&c.nodes[k]), index.push_back(k);
-      const Eigen::VectorXd v = initial_.evaluate(nodes);
+      const Eigen::VectorXd v = initial_.evaluateOnFracture(c.nodes, static_cast<int>(f), index);
       for (std::size_t i = 0; i < index.size(); ++i) {
         initialAt_[static_cast<Eigen::Index>(index[i])] = v[static_cast<Eigen::Index>(i)];
         on_[index[i]] = 1;
       }
-      if (!initial_.isConstant() && !nodes.empty())
+      if (!initial_.isConstant() && !index.empty())
         c.log << "Fracture " << c.fractureNames[f] << ": initial pore pressure of the rock ("
               << name_ << ") from min " << v.minCoeff() << " to max " << v.maxCoeff() << " Pa over "
               << v.size() << " nodes\n";

@@ -173,6 +173,15 @@ Eigen::VectorXd FrictionField::evaluate(const std::vector<const ControlNode*>& n
   return v;
 }
 
+Eigen::VectorXd FrictionField::evaluateOnFracture(const std::vector<ControlNode>& nodes, int f,
+                                                  std::vector<std::size_t>& index) const {
+  std::vector<const ControlNode*> on;
+  index.clear();
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    if (nodes[k].fracture == f) on.push_back(&nodes[k]), index.push_back(k);
+  return evaluate(on);
+}
+
 std::string FrictionField::describe() const {
   std::ostringstream s;
   const std::string rows =

@@ -49,6 +49,10 @@ class FrictionField {
   double value() const { return value_; }
   /// The values at the given control nodes (all of one fracture), checked against the bounds.
   Eigen::VectorXd evaluate(const std::vector<const ControlNode*>& nodes) const;
+  /// The values at the control nodes of fracture f among all of a system's `nodes`; `index`
+  /// receives each value's position in `nodes`.
+  Eigen::VectorXd evaluateOnFracture(const std::vector<ControlNode>& nodes, int f,
+                                     std::vector<std::size_t>& index) const;
   /// "0.6", or the field's form for the log ("arclength table (3 rows)", "points from
   /// constant/mu.dat (41 rows)", "depth: 0.6 at y = 0 m, gradient -0.01 per m").
   std::string describe() const;
