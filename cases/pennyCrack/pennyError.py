@@ -178,7 +178,7 @@ def latestTime(case, fracture):
 
 def readTable(path, columns=COLUMNS3D):
     """A 3D fracture table with the given columns (a unilateral fracture's have 'opening'
-    before 'state', a fluid pressure's 'pressure sigmaNEffective'): its columns by name, the
+    before 'state', a fluid pressure's 'pressure sigmaNEffective ...'): its columns by name, the
     status line and the frame line."""
     try:
         lines = open(path).read().splitlines()
@@ -187,9 +187,10 @@ def readTable(path, columns=COLUMNS3D):
     if not lines or not lines[0].startswith("#"):
         raise InputError(f"{path}:1: expected the column header")
     header = lines[0][1:].split()
-    # A fluid pressure adds 'pressure sigmaNEffective' before the state (README, "Fluid
-    # pressure"): the same table with two more columns.
-    if header == list(columns[:-1]) + ["pressure", "sigmaNEffective", "state"]:
+    # A fluid pressure adds 'pressure sigmaNEffective deltaCFS slipStrike slipDip tauStrike
+    # tauDip' before the state (README, "Fluid pressure"): the same table with more columns.
+    if header == list(columns[:-1]) + ["pressure", "sigmaNEffective", "deltaCFS", "slipStrike",
+                                       "slipDip", "tauStrike", "tauDip", "state"]:
         columns = header
     if header != list(columns):
         if header[:3] == ["s", "x", "y"]:

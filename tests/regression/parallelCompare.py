@@ -6,7 +6,7 @@ Usage: parallelCompare.py REFERENCE_CASE RUN_CASE...
 Every `<time>/fractures/<name>.dat` of the reference must exist in each run with the same rows,
 the same `state` column and the same status on its `# status` line; each numeric column must
 agree to 1e-9 of its scale in the reference table: tractions (sigmaN, tau..., residual, and a
-fluid pressure's pressure and sigmaNEffective) against
+fluid pressure's pressure, sigmaNEffective and deltaCFS) against
 the largest traction of the table, slips and openings (slip..., opening) against the largest of
 them, ST (a ratio like the friction coefficient) against max(largest ST, 1), the rest against
 its own largest magnitude. A column's own scale would not do: a fault that carries no shear
@@ -72,7 +72,7 @@ def main():
                 failures += 1
                 continue
             def group(name):
-                if name in ("sigmaN", "residual", "sigmaNEffective", "pressure") or name.startswith("tau"):
+                if name in ("sigmaN", "residual", "sigmaNEffective", "pressure", "deltaCFS") or name.startswith("tau"):
                     return "traction"
                 if name.startswith("slip") or name == "opening":
                     return "slip"

@@ -17,6 +17,21 @@ cd "$work/case"
 ./Allclean >/dev/null
 ./Allmesh -h 0.1
 FRICTION_BIN=$bin ./Allrun
+# At every slipping node the Coulomb failure stress change equals the initial margin:
+# |tau| = f |sigma'_n| there, so Delta|tau| + f Delta sigma'_n = f sigma'_0 - tau_0 = T f dp
+# (0.3 MPa for T = 0.1); the tractions are converged to 1e-10 of 1e7 Pa: 1 Pa is ample.
+/usr/bin/python3 - runs/T0.1/1/fractures/fault.dat <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+header = lines[0][1:].split()
+rows = [l.split() for l in lines if not l.startswith("#")]
+col, st = header.index("deltaCFS"), header.index("state")
+slipping = [float(r[col]) for r in rows if r[st] == "slip"]
+assert slipping, "no slipping node"
+worst = max(abs(v - 3e5) for v in slipping)
+assert worst <= 1.0, f"deltaCFS at slipping nodes off the margin 3e5 Pa by {worst} Pa"
+print(f"PASS: deltaCFS = 0.3 MPa (the margin) at {len(slipping)} slipping nodes to {worst:.2g} Pa")
+PY
 rows=$(grep -vc '^#' postProcessing/viesca.dat)
 [[ $rows == 29 ]] || { echo "FAIL: postProcessing/viesca.dat has $rows rows, expected 29 (9 + 11 + 9 times)"; exit 1; }
 echo "PASS: a(t) within h/2 + 0.5 % of lambda(T) sqrt(4 alpha t) at 29 times, T = 0.1, 0.5, 0.9"

@@ -5,7 +5,7 @@ Usage: vtkMatchesTables.py CASE_DIR TIME FRACTURE NUM_POINTS NUM_CELLS
 Checks: the .pvd names files that exist; the .vtu has the split mesh's point and cell
 counts, connectivity in range (VTK itself does not check it) and finite arrays; the .vtp
 has one point per table row with sigmaN, tau, ST, slip, residual, opening (fractures that
-open), pressure and sigmaNEffective (a fluid pressure) and state equal to the table's values (the table is written with writePrecision digits: relative 1e-6 is ample);
+open), pressure, sigmaNEffective and deltaCFS (a fluid pressure) and state equal to the table's values (the table is written with writePrecision digits: relative 1e-6 is ample);
 a tip's row has NaN tractions in both, and state code 3.
 """
 import math
@@ -51,13 +51,13 @@ p.SetFileName(os.path.join(vtkdir, vtp))
 p.Update()
 poly = p.GetOutput()
 assert poly.GetNumberOfPoints() == len(rows), (poly.GetNumberOfPoints(), len(rows))
-# 10 columns, 11 with fractures that open (the opening before the state), 2 more with a
-# fluid pressure (pressure and sigmaNEffective, before the state)
-assert header[-1] == "state" and len(header) in (10, 11, 12, 13), header
+# 10 columns, 11 with fractures that open (the opening before the state), 3 more with a
+# fluid pressure (pressure, sigmaNEffective and deltaCFS, before the state)
+assert header[-1] == "state" and len(header) in (10, 11, 13, 14), header
 assert rows and all(len(r) == len(header) for r in rows), "expected %d columns per row" % len(header)
 last = len(header) - 1
 names = ["slip", "sigmaN", "tau", "ST", "residual"] + (["opening"] if "opening" in header else [])
-names += ["pressure", "sigmaNEffective"] if "pressure" in header else []
+names += ["pressure", "sigmaNEffective", "deltaCFS"] if "pressure" in header else []
 columns = {name: header.index(name) for name in names}
 for name, col in columns.items():
     array = poly.GetPointData().GetArray(name)

@@ -471,6 +471,18 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
       hasPressure_ |= e->givesFracturePressure();
     }
   }
+  // The initial state that ΔCFS is measured against: the in-situ stress resolved on the
+  // fractures and the fluid pressure at startTime (before any effect's state has advanced).
+  if (hasPressure_ && n > 0) {
+    const double t0 = time_->startTime();
+    Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n),
+                    tau0 = Eigen::VectorXd::Zero(system_->blockSize() * n);
+    for (const auto& e : effects_) e->addFractureTraction(nodes, t0, sn0, tau0);
+    initialSigmaNEffective_ = sn0 + fracturePressure(t0);
+    initialTauNorm_.resize(n);
+    const int kb = system_->blockSize();
+    for (Eigen::Index k = 0; k < n; ++k) initialTauNorm_[k] = blockNorm(tau0.segment(kb * k, kb));
+  }
   // γ has units of stress/length; its scale-free default is E over the mean fracture edge
   // length h (docs/method.md §4): then γβ and τ are of the same size for slips of order h·τ/E.
   const double h = meanFractureEdge();
@@ -1556,6 +1568,11 @@ std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::
       row.hasPressure = true;
       row.pressure = pressure_.size() ? pressure_[k] : 0.0;
       row.sigmaNEffective = tip ? nan : effective;
+      // ΔCFS = Δ|τ| + μ_f Δσ'_n against the initial state (setup()): positive towards failure.
+      const Eigen::Index i = static_cast<Eigen::Index>(k);
+      row.deltaCFS =
+          tip ? nan
+              : (tauNorm - initialTauNorm_[i]) + mu_[i] * (effective - initialSigmaNEffective_[i]);
     }
     if (rowOfPlus) (*rowOfPlus)[nodes[k].plus] = static_cast<Index>(rows.size());
     rows.push_back(row);

@@ -192,6 +192,9 @@ class FrictionCase {
   Eigen::VectorXd pressure_;  ///< p of the last step, per control node
   /// Some effect gives a fluid pressure on the fractures: tables and VTK carry p and σ'_n.
   bool hasPressure_ = false;
+  /// With a fluid pressure: σ'_n and |τ| of the initial state per control node [Pa] (the
+  /// in-situ stress and p_f at startTime), which ΔCFS is measured against.
+  Eigen::VectorXd initialSigmaNEffective_, initialTauNorm_;
   /// Control of the last step (warm start, restart): the slip increment, then with openings
   /// the opening g per node [m] (a state: the faces' separation at the end of that step).
   Eigen::VectorXd lastBeta_;

@@ -48,6 +48,27 @@ bool turnedFrame(const std::vector<FractureRow>& rows) {
 
 }  // namespace
 
+void strikeDipBasis(const Eigen::Vector3d& n, Eigen::Vector3d& strike, Eigen::Vector3d& dip) {
+  // Down the plane: −e_z projected on it. Along strike: the fault dips to its right (seen from
+  // above, dip is strike turned clockwise by 90°), so neither depends on n's side.
+  const Eigen::Vector3d down = -Eigen::Vector3d::UnitZ() + n.z() * n;
+  if (std::abs(n.z()) >= 1 - 1e-12 || down.norm() < 1e-12) {
+    strike = Eigen::Vector3d::UnitX();
+    dip = -Eigen::Vector3d::UnitY();
+    return;
+  }
+  if (std::abs(n.z()) <= 1e-12) {
+    // A vertical fault dips neither way: dip = −e_z, and strike the horizontal direction in
+    // it whose azimuth lies in [0°, 180°) from x.
+    dip = -Eigen::Vector3d::UnitZ();
+    strike = Eigen::Vector3d(-n.y(), n.x(), 0).normalized();
+    if (strike.x() < 0 || (strike.x() == 0 && strike.y() < 0)) strike = -strike;
+    return;
+  }
+  dip = down.normalized();
+  strike = Eigen::Vector3d(-dip.y(), dip.x(), 0).normalized();
+}
+
 std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
   std::vector<double> v;
   if (dim != 3) {
@@ -80,6 +101,18 @@ std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
   if (r.hasPressure) {
     v.push_back(r.pressure);
     v.push_back(r.sigmaNEffective);
+    v.push_back(r.deltaCFS);
+    if (dim == 3) {
+      // The slip and τ on the fault's strike and down-dip directions (strikeDipBasis()).
+      Eigen::Vector3d strike, dip;
+      strikeDipBasis(r.normal, strike, dip);
+      const Eigen::Vector3d slip = r.slip[0] * r.tangent[0] + r.slip[1] * r.tangent[1];
+      const Eigen::Vector3d tau = r.tau[0] * r.tangent[0] + r.tau[1] * r.tangent[1];
+      v.push_back(slip.dot(strike));
+      v.push_back(slip.dot(dip));
+      v.push_back(tau.dot(strike));
+      v.push_back(tau.dot(dip));
+    }
   }
   return v;
 }
@@ -95,8 +128,11 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   };
   // Fractures that open: the opening g before the state.
   const bool opening = !rows.empty() && rows.front().hasOpening;
-  const char* pressure =
-      !rows.empty() && rows.front().hasPressure ? "pressure sigmaNEffective " : "";
+  const bool hasPressure = !rows.empty() && rows.front().hasPressure;
+  const std::string pressure =
+      !hasPressure ? ""
+      : dim == 3   ? "pressure sigmaNEffective deltaCFS slipStrike slipDip tauStrike tauDip "
+                   : "pressure sigmaNEffective deltaCFS ";
   if (dim != 3) {
     out << "# s x y slip slipIncrement sigmaN tau ST residual " << (opening ? "opening " : "")
         << pressure << "state\n# " << statusLine << "\n";

@@ -16,7 +16,9 @@
 //    node: ...". Rows in the control-node order of FractureSystem.
 //    With fractures that open (contact unilateral), a column "opening" (g = −[[u]]·n_Γ [m])
 //    comes before "state", in 2D and 3D; with a fluid pressure (fracturePressure,
-//    faultPressure), "pressure sigmaNEffective" (p and σ'_n = σ_n + p [Pa]) come after it.
+//    faultPressure), "pressure sigmaNEffective deltaCFS" (p, σ'_n = σ_n + p and the Coulomb
+//    failure stress change [Pa]) come after it, and in 3D "slipStrike slipDip tauStrike
+//    tauDip" (strikeDipBasis()).
 #pragma once
 
 #include <array>
@@ -52,14 +54,27 @@ struct FractureRow {
   bool hasPressure = false;
   double pressure = 0;         ///< p [Pa] (fluid, positive)
   double sigmaNEffective = 0;  ///< σ'_n = σ_n + p [Pa], NaN at tips
+  /// Coulomb failure stress change against the initial state, Δ|τ| + μ_f Δσ'_n [Pa] (positive
+  /// towards failure), NaN at tips; written with the pressure columns.
+  double deltaCFS = 0;
   std::string state;
 };
+
+/// The fault's strike and down-dip unit vectors at a node of normal n (z up), whichever side n
+/// points to: dip is the steepest way down the fault plane (−e_z projected on it), strike the
+/// horizontal direction in it with the fault dipping to its right (seen from above, dip is
+/// strike turned clockwise by 90°). A vertical fault (|n_z| ≤ 1e-12) dips neither way: dip =
+/// −e_z and strike the horizontal direction with azimuth in [0°, 180°) from x. A horizontal
+/// fault (|n_z| ≥ 1 − 1e-12) has neither: strike = e_x and dip = −e_y (rules stated in the
+/// README).
+void strikeDipBasis(const Eigen::Vector3d& n, Eigen::Vector3d& strike, Eigen::Vector3d& dip);
 
 /// The numbers of a fracture table's row, in the file's order (the header comment above),
 /// without the state: 2D s x y slip slipIncrement sigmaN tau ST residual; 3D x y z nx ny nz
 /// slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1 slipIncrement2 sigmaN tau1
-/// tau2 tauMagnitude ST residual; then opening if the row has one, then pressure and
-/// sigmaNEffective if it has them. NaN at tips.
+/// tau2 tauMagnitude ST residual; then opening if the row has one, then pressure,
+/// sigmaNEffective and deltaCFS if it has them (3D: also slipStrike slipDip tauStrike tauDip).
+/// NaN at tips.
 std::vector<double> fractureTableValues(const FractureRow& row, int dim);
 
 /// dim: 2 or 3, the layout of the file comment (2D: components [0]; 3D: both, the magnitudes
