@@ -11,7 +11,8 @@
 #     Crank-Nicolson, a constant rate): every step converged, the part at its friction bound
 #     (slip, then open) never shrinks;
 #  4. an opening (unilateral) at the well while the neighbouring part slips: both states
-#     present in one step.
+#     present in one step;
+#  5. a pressure front crossing a junction (cases/fractureNetwork).
 # Usage: pressureStability.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$1 src=$2 work=$3
@@ -126,4 +127,46 @@ check openAndSlip '
 s = states(last)
 assert s["open"] > 0 and s["slip"] > 0, s
 '
-echo "PASS: pressure stability, 6 runs"
+# 5. A pressure front that crosses a junction: cases/fractureNetwork (faultA and faultB cross
+#    at (2000, -1700)) with 5 MPa held on faultB 200 m from the crossing, diffusing along both
+#    faults: the junction has one pressure in both tables, and faultA takes the fluid on both
+#    sides of the crossing.
+d=$work/junctionFront
+cp -r "$src/cases/fractureNetwork" "$d"
+(cd "$d" && ./Allclean >/dev/null)
+cat >>"$d/constant/effects" <<'DICT'
+fluid
+{
+    type        faultPressure;
+    fractures   (faultA faultB);
+    initial     0;
+    model       diffusion;
+    storage     1e-9;
+    transmissivity 1e-9;
+    wells { w { position (1900 -1526.7949192431123); pressure 5e6; } }
+}
+DICT
+sed -i "/^endTime\|^deltaT/d" "$d/system/controlDict"
+echo "times (1000 10000 100000);" >>"$d/system/controlDict"
+"$bin/splitFractureNodes" -case "$d" >"$d/log.splitFractureNodes" 2>&1 || fail "junctionFront: split"
+timeout 300 "$bin/frictionSolver" -case "$d" >"$d/log.frictionSolver" 2>&1 || fail "junctionFront: exit $?"
+[[ $(grep -c "^Time = .* converged" "$d/log.frictionSolver") == 3 ]] || fail "junctionFront: a step did not converge"
+/usr/bin/python3 - "$d/100000/fractures" <<'PY'
+import math, sys
+at = {}
+for f in ("faultA", "faultB"):
+    lines = open(f"{sys.argv[1]}/{f}.dat").read().splitlines()
+    h = lines[0][1:].split()
+    rows = [dict(zip(h, l.split())) for l in lines if not l.startswith("#")]
+    at[f] = [float(r["pressure"]) for r in rows
+             if math.hypot(float(r["x"]) - 2000, float(r["y"]) + 1700) < 1e-6]
+    assert at[f], f"no row of {f} at the junction"
+    if f == "faultA":  # both sides of the crossing, within 100 m, take the fluid
+        sides = [(float(r["x"]) - 2000, float(r["pressure"])) for r in rows
+                 if 1 < math.hypot(float(r["x"]) - 2000, float(r["y"]) + 1700) < 100]
+        assert any(x < 0 and p > 1e5 for x, p in sides) and any(x > 0 and p > 1e5 for x, p in sides), sides
+values = at["faultA"] + at["faultB"]
+assert max(values) - min(values) <= 1e-9 * max(values), values
+print(f"PASS: junctionFront: one pressure at the junction ({values[0]:.6g} Pa in {len(values)} rows), faultA pressurised on both sides")
+PY
+echo "PASS: pressure stability, 7 runs"
