@@ -292,7 +292,13 @@ parallelStuckSigterm)
     [[ -f $c/$t/uniform/frictionState && -f $c/$t/D ]] || fail "time folder $t is not whole"
   done
   echo "ended $((SECONDS - start)) s after the second SIGTERM, after time $(timeFolders "$c" | tail -1); restarting on 2 ranks"
-  restartAndCompare "$c"
+  # mpirun ends the stopped rank 0 with SIGCONT and SIGTERM before SIGKILL: resumed, it may
+  # finish its step and write that time as a first signal asks (a stop by signal adds its own
+  # time folder, whole: checked above), which the uninterrupted run does not write.
+  stopped=$(timeFolders "$c" | tail -1)
+  extra=$stopped
+  [[ -d $work/reference/case/$stopped ]] && extra=
+  restartAndCompare "$c" "$extra"
   ;;
 diskFull)
   [[ $(id -u) -eq 0 ]] || fail "needs root to mount a small tmpfs"

@@ -13,6 +13,8 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <ostream>
 #include <sstream>
 #include <thread>
@@ -65,7 +67,19 @@ Owner readOwner(int fd) {
   return o;
 }
 
-bool alive(long pid) { return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM; }
+// A process that has ended but that its parent has not reaped yet (a zombie: state Z in
+// /proc/<pid>/stat, e.g. a rank mpirun killed a moment ago) still answers kill(pid, 0); it
+// runs nothing and holds nothing, so it counts as gone.
+bool zombie(long pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto close = text.rfind(')');  // the state follows the command's name in parentheses
+  return close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z';
+}
+
+bool alive(long pid) {
+  return (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) && !zombie(pid);
+}
 
 std::string describe(const Owner& o) {
   return (o.program.empty() ? std::string("a run") : o.program) + " (process " +

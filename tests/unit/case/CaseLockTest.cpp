@@ -2,6 +2,9 @@
 // (by its flock, or by its pid when a file names a living process of this host), refused with
 // the owner named; taken over when the owner is gone; removed at the end and on a signal.
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <iterator>
+#include <thread>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -117,6 +120,32 @@ TEST_CASE("a lock left by a process that is gone is taken over", "[case][lock]")
   }
   CHECK_THAT(log.str(), Catch::Contains("taken over") && Catch::Contains(std::to_string(child)));
   CHECK_FALSE(fs::exists(f.lock()));
+}
+
+TEST_CASE("a lock left by a process that has ended but is not reaped is taken over",
+          "[case][lock]") {
+  // A rank mpirun has just killed may linger as a zombie until its parent reaps it: it still
+  // answers kill(pid, 0), runs nothing and holds nothing.
+  Folder f("zombie");
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) ::_exit(0);
+  // Until the child has ended (state Z), it is a living holder.
+  for (int i = 0; i < 2000; ++i) {
+    std::ifstream stat("/proc/" + std::to_string(child) + "/stat");
+    const std::string text((std::istreambuf_iterator<char>(stat)),
+                           std::istreambuf_iterator<char>());
+    if (text.find(") Z ") != std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  std::ofstream(f.lock()) << child << " " << host() << " frictionSolver\n";
+  std::ostringstream log;
+  {
+    CaseLock lock(f.dir.string(), "frictionSolver", log);
+    CHECK(readAll(f.lock()).rfind(std::to_string(::getpid()) + " ", 0) == 0);
+  }
+  ::waitpid(child, nullptr, 0);
+  CHECK_THAT(log.str(), Catch::Contains("taken over") && Catch::Contains(std::to_string(child)));
 }
 
 TEST_CASE("SIGTERM outside the time loop removes the lock", "[case][lock]") {
