@@ -6,7 +6,9 @@
 # the fault (model diffusion, backward Euler, substeps of 5 ms) instead of the closed form:
 # the same check; and that run stopped at t = 0.5 and restarted (startFrom latestTime) must
 # write the very bytes of the uninterrupted run (tables and restart states, the diffusion's
-# state included).
+# state included). Then the pressure given as data (rows "t x y p" taken from the closed-form
+# run's tables, shuffled within each time): the same pressures at every node and time, the same
+# check; a data row off the fault is refused naming its file and line.
 # Usage: viescaInjection.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$1 src=$2 work=$3
@@ -62,3 +64,52 @@ for t in 0.625 0.75 0.875 1; do
 done
 grep -q "pressureChange" diffusion/1/uniform/frictionState || { echo "FAIL: no diffusion state"; exit 1; }
 echo "PASS: the computed diffusion meets the bound; restarted at 0.5, $n files byte for byte"
+
+# The pressure as data at points at listed times.
+d=data
+mkdir -p "$d"
+cp -r runs/T0.1/0 runs/T0.1/constant runs/T0.1/system "$d"/
+/usr/bin/python3 - runs/T0.1 "$d/constant/p.dat" <<'PY'
+import os, random, sys
+case, out = sys.argv[1], sys.argv[2]
+times = sorted((float(t), t) for t in os.listdir(case) if t.replace(".", "", 1).isdigit() and float(t) > 0)
+random.seed(1)
+with open(out, "w") as f:
+    f.write("# t x y p: the closed form's pressure at the fault's nodes\n")
+    for _, name in times:
+        lines = open(os.path.join(case, name, "fractures", "fault.dat")).read().splitlines()
+        h = lines[0][1:].split()
+        rows = [l.split() for l in lines if not l.startswith("#")]
+        random.shuffle(rows)
+        for r in rows:
+            f.write(f"{name} {r[h.index('x')]} {r[h.index('y')]} {r[h.index('pressure')]}\n")
+PY
+/usr/bin/python3 - "$d/constant/effects" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+s = re.sub(r"    diffusivity 1;.*?\n    wells\s*\{.*?\n    \}\n", '    data "constant/p.dat";\n', s, flags=re.S)
+assert 'data "constant/p.dat"' in s and "wells" not in s, s
+open(sys.argv[1], "w").write(s)
+PY
+"$bin/frictionSolver" -case "$d" >"$d/log.frictionSolver" 2>&1
+/usr/bin/python3 viescaError.py "$d" --T 0.1 --alpha 1 --check
+/usr/bin/python3 - runs/T0.1 "$d" <<'PY'
+import os, sys
+ref, run = sys.argv[1], sys.argv[2]
+n = 0
+for t in ("0.0625", "0.5", "1"):
+    a = [l.split() for l in open(os.path.join(ref, t, "fractures", "fault.dat")) if not l.startswith("#")]
+    b = [l.split() for l in open(os.path.join(run, t, "fractures", "fault.dat")) if not l.startswith("#")]
+    assert len(a) == len(b) and a, (t, len(a), len(b))
+    for x, y in zip(a, b):
+        assert abs(float(x[9]) - float(y[9])) <= 1e-9 * 5e6, (t, x[9], y[9])  # pressure column
+        n += 1
+print(f"PASS: the data gives the closed form's pressure at {n} node-times")
+PY
+echo "1 0 3 1e6" >>"$d/constant/p.dat"
+if "$bin/frictionSolver" -case "$d" -overwrite >"$d/log.far" 2>&1; then
+  echo "FAIL: a data row 3 m off the fault was accepted"; exit 1
+fi
+grep -q "p.dat:$(wc -l <"$d/constant/p.dat"): the point (0 3 0) is 3 m from the nearest listed fracture" "$d/log.far" ||
+  { echo "FAIL: the message does not name the row: $(tail -2 "$d/log.far")"; exit 1; }
+echo "PASS: a data row off the fault is refused naming its line"

@@ -10,6 +10,8 @@
 //                                  // a field (FrictionField's forms: depth, points,
 //                                  // arclength); hydrostatic is the depth form, ρ_f g per m
 //       change     table ((0 0) (3600 5e6));  // optional: Δp(t) [Pa], the same at every node
+//       wells      { w { position (x y [z]); pressure SCHEDULE; | rate SCHEDULE; } }  // optional
+//       data       "constant/p.dat";       // optional: rows "t x y [z] p", Δp at points in time
 //   }
 //
 // p_f(x, t) = p₀(x) + Δp(t) at each control node of the listed fractures; it enters the
