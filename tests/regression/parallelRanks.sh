@@ -180,8 +180,11 @@ case $scenario in
         rc=$?
         ((rc == 4)) || fail "$name, $run: exit $rc, expected 4: $(grep -a "Factorisation\|error\|^End" "$c.log")"
         errors=$(grep -a "frictionSolver: error" "$c.log")
-        (($(wc -l <<<"$errors") == 1)) || fail "$name, $run: the error is not reported once: $errors"
-        grep -q "can move as a rigid body" <<<"$errors" || fail "$name, $run: no rigid-body diagnosis: $errors"
+        # On failure, the run's whole output: a lost or doubled message must be diagnosable.
+        (($(wc -l <<<"$errors") == 1)) ||
+          fail "$name, $run: the error is not reported once: $errors; the output: $(tail -n 30 "$c.log")"
+        grep -q "can move as a rigid body" <<<"$errors" ||
+          fail "$name, $run: no rigid-body diagnosis: $errors; the output: $(tail -n 30 "$c.log")"
         # The same words on every rank count (the status names the backend's verdict).
         [[ -z $diagnosis || ${errors#*: error: } == "$diagnosis" ]] ||
           fail "$name, $run: another diagnosis than cholmod's: $errors"
