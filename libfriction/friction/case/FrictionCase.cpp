@@ -916,7 +916,8 @@ void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& ke
           << own.caseName() << ".pvd\n";
     }
   }
-  auto vtk = std::make_unique<VtkSeries>(caseDir_, seriesName);
+  auto vtk = std::make_unique<VtkSeries>(caseDir_, seriesName,
+                                         time_->vtkBinary() ? VtkFormat::binary : VtkFormat::ascii);
   vtk->resume(keep, fractureNames, time_->writePrecision());
   if (time_->writeVTK()) vtk_ = std::move(vtk);
 
@@ -1677,7 +1678,9 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   // The VTK files first: the rename of the time folder commits the time. A run killed before
   // it restarts from the time before, which drops this time's VTK files and .pvd entry.
   if (time_->writeVTK()) {
-    if (!vtk_) vtk_ = std::make_unique<VtkSeries>(caseDir_);
+    if (!vtk_)
+      vtk_ = std::make_unique<VtkSeries>(caseDir_, "",
+                                         time_->vtkBinary() ? VtkFormat::binary : VtkFormat::ascii);
     // The total stress: C:ε(u) plus what the effects add (initialStress's σ⁰, porePressure's
     // −α_B Δp_b I); nothing to add without them.
     std::function<Eigen::Matrix3d(Index, const Point&)> offset;

@@ -1,4 +1,5 @@
-// VTK XML (ASCII) writers for ParaView: see VtkWriter.hpp.
+// VTK XML writers for ParaView (ASCII, or appended binary compressed with zlib): see
+// VtkWriter.hpp.
 //
 // Format notes (VTK file formats, XML "version 1.0"): cell offsets are the END of each cell's
 // connectivity (no leading 0); header_type only matters for binary data but is stated so
@@ -22,6 +23,8 @@
 
 #include "friction/core/InputFile.hpp"
 #include "friction/core/OutputError.hpp"
+
+#include <zlib.h>
 
 namespace friction {
 
@@ -65,18 +68,132 @@ double finite(double v) {
   return v;
 }
 
-void openArray(std::ostream& s, const char* type, const std::string& name, int components,
-               const char* extra = "") {
-  s << "        <DataArray type=\"" << type << "\"";
-  if (!name.empty()) s << " Name=\"" << name << "\"";
-  if (components > 1) s << " NumberOfComponents=\"" << components << "\"";
-  s << extra << " format=\"ascii\">\n";
-}
-void closeArray(std::ostream& s) { s << "        </DataArray>\n"; }
-
 const char* const kHeader = "<?xml version=\"1.0\"?>\n";
 const char* const kFileAttributes =
     " version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
+
+/// How a Float64 array's non-finite values are written: Finite maps them to numbers (finite()),
+/// KeepNan writes NaN as NaN (a tip's tractions) and the rest as Finite, Raw as they are.
+enum class Values { Finite, KeepNan, Raw };
+
+/// The DataArrays of one file, in ASCII inline or binary appended form. ASCII: the values
+/// inline, `perLine` per line, each line indented by 10 spaces (the files of before the binary
+/// form, byte for byte). Binary: an empty element with its offset into the appended block,
+/// whose data is VTK's zlib form: a header of UInt64 [blocks, block size, size of a partial
+/// last block (0: full), compressed size of each block], then the compressed blocks of at most
+/// 32 KiB of raw little-endian values each (vtkZLibDataCompressor's layout).
+class ArraySink {
+ public:
+  ArraySink(VtkFormat format, int precision) : format_(format), precision_(precision) {}
+
+  bool binary() const { return format_ == VtkFormat::binary; }
+  /// The <VTKFile> attributes: byte order and header type, and the compressor when binary.
+  std::string fileAttributes() const {
+    return std::string(kFileAttributes) + (binary() ? " compressor=\"vtkZLibDataCompressor\"" : "");
+  }
+
+  void floats(std::ostream& s, const std::string& name, int components,
+              const std::vector<double>& v, Values policy, const char* extra = "") {
+    open(s, "Float64", name, components, extra);
+    if (binary()) {
+      std::vector<double> out(v);
+      if (policy != Values::Raw)
+        for (double& x : out)
+          if (!(policy == Values::KeepNan && std::isnan(x))) x = finite(x);
+      append(s, out.data(), out.size() * sizeof(double));
+      return;
+    }
+    std::ostringstream line;
+    line.precision(precision_);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      line << (i % static_cast<std::size_t>(components) == 0 ? "          " : " ");
+      const double x = v[i];
+      if (policy == Values::Raw)
+        line << x;
+      else if (policy == Values::KeepNan && std::isnan(x))
+        line << "nan";
+      else
+        line << finite(x);
+      if ((i + 1) % static_cast<std::size_t>(components) == 0) line << "\n";
+    }
+    s << line.str();
+    close(s);
+  }
+
+  /// Integers: type "Int32", "Int64" or "UInt8"; `perLine` values per ASCII line.
+  void integers(std::ostream& s, const char* type, const std::string& name,
+                const std::vector<long long>& v, int perLine) {
+    open(s, type, name, 1, "");
+    if (binary()) {
+      const std::string t(type);
+      if (t == "Int64") {
+        std::vector<std::int64_t> out(v.begin(), v.end());
+        append(s, out.data(), out.size() * sizeof(std::int64_t));
+      } else if (t == "Int32") {
+        std::vector<std::int32_t> out(v.begin(), v.end());
+        append(s, out.data(), out.size() * sizeof(std::int32_t));
+      } else {
+        std::vector<std::uint8_t> out(v.begin(), v.end());
+        append(s, out.data(), out.size());
+      }
+      return;
+    }
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      s << (i % static_cast<std::size_t>(perLine) == 0 ? "          " : " ") << v[i];
+      if ((i + 1) % static_cast<std::size_t>(perLine) == 0 || i + 1 == v.size()) s << "\n";
+    }
+    close(s);
+  }
+
+  /// The end of the file: </VTKFile> after the appended block when binary.
+  void finish(std::ostream& s) const {
+    if (binary()) {
+      s << "  <AppendedData encoding=\"raw\">\n   _";
+      s.write(appended_.data(), static_cast<std::streamsize>(appended_.size()));
+      s << "\n  </AppendedData>\n";
+    }
+    s << "</VTKFile>\n";
+  }
+
+ private:
+  void open(std::ostream& s, const char* type, const std::string& name, int components,
+            const char* extra) {
+    s << "        <DataArray type=\"" << type << "\"";
+    if (!name.empty()) s << " Name=\"" << name << "\"";
+    if (components > 1) s << " NumberOfComponents=\"" << components << "\"";
+    if (binary())
+      s << extra << " format=\"appended\" offset=\"" << appended_.size() << "\"/>\n";
+    else
+      s << extra << " format=\"ascii\">\n";
+  }
+  static void close(std::ostream& s) { s << "        </DataArray>\n"; }
+
+  void append(std::ostream&, const void* data, std::size_t bytes) {
+    constexpr std::size_t kBlock = 32768;
+    const std::size_t blocks = (bytes + kBlock - 1) / kBlock;
+    std::vector<std::uint64_t> header{blocks, kBlock, bytes % kBlock};
+    std::string compressed;
+    const auto* raw = static_cast<const Bytef*>(data);
+    for (std::size_t b = 0; b < blocks; ++b) {
+      const std::size_t size = std::min(kBlock, bytes - b * kBlock);
+      uLongf length = compressBound(static_cast<uLong>(size));
+      std::string block(length, '\0');
+      if (compress2(reinterpret_cast<Bytef*>(block.data()), &length, raw + b * kBlock,
+                    static_cast<uLong>(size), Z_DEFAULT_COMPRESSION) != Z_OK)
+        throw std::runtime_error("VTK output: zlib could not compress a data block");
+      header.push_back(length);
+      compressed.append(block.data(), length);
+    }
+    // Little-endian hosts only (the file says byte_order="LittleEndian"; x86-64, aarch64).
+    appended_.append(reinterpret_cast<const char*>(header.data()),
+                     header.size() * sizeof(std::uint64_t));
+    appended_ += compressed;
+  }
+
+  VtkFormat format_;
+  int precision_;
+  std::string appended_;
+};
 
 /// The state coding for the file's comment: the junction code only where a row has it (a
 /// file without junctions reads as it always has).
@@ -100,7 +217,8 @@ int vtkStateCode(const std::string& state) {
 
 void writeVtu(const std::string& path, const LagrangeSpace& space,
               const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
-              const std::function<Eigen::Matrix3d(Index, const Point&)>& stressOffset) {
+              const std::function<Eigen::Matrix3d(Index, const Point&)>& stressOffset,
+              VtkFormat format) {
   if (u.size() != space.numDofs())
     throw std::invalid_argument("writeVtu: u has " + std::to_string(u.size()) +
                                 " values, the space " + std::to_string(space.numDofs()) + " dofs");
@@ -111,33 +229,31 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
   const int perCell = space.nodesPerCell();
   const int cellType = is3d ? (space.degree() == 1 ? kVtkTetra : kVtkQuadraticTetra)
                             : (space.degree() == 1 ? kVtkTriangle : kVtkQuadraticTriangle);
+  ArraySink sink(format, precision);
 
   std::ostringstream s;
   s.precision(precision);
-  s << kHeader << "<VTKFile type=\"UnstructuredGrid\"" << kFileAttributes << ">\n"
+  s << kHeader << "<VTKFile type=\"UnstructuredGrid\"" << sink.fileAttributes() << ">\n"
     << "  <UnstructuredGrid>\n"
     << "    <Piece NumberOfPoints=\"" << numNodes << "\" NumberOfCells=\"" << numCells << "\">\n";
 
   s << "      <PointData Vectors=\"displacement\">\n";
-  openArray(s, "Float64", "displacement", 3);
+  std::vector<double> values;
+  values.reserve(3 * static_cast<std::size_t>(numNodes));
   for (Index n = 0; n < numNodes; ++n) {
-    s << "          " << finite(u[space.dof(n, 0)]) << " " << finite(u[space.dof(n, 1)]);
-    if (is3d)
-      s << " " << finite(u[space.dof(n, 2)]) << "\n";
-    else
-      s << " 0\n";
+    values.push_back(u[space.dof(n, 0)]);
+    values.push_back(u[space.dof(n, 1)]);
+    values.push_back(is3d ? u[space.dof(n, 2)] : 0.0);
   }
-  closeArray(s);
+  sink.floats(s, "displacement", 3, values, Values::Finite);
   s << "      </PointData>\n";
 
   // Stress at the centroid: exact for P1 (constant per cell), the cell's mean value's best
   // single-point stand-in for P2.
   s << "      <CellData Tensors=\"stress\" Scalars=\"vonMises\">\n";
-  std::ostringstream vm, region;
-  vm.precision(precision);
-  openArray(s, "Float64", "stress", 6,
-            " ComponentName0=\"XX\" ComponentName1=\"YY\" ComponentName2=\"ZZ\""
-            " ComponentName3=\"XY\" ComponentName4=\"YZ\" ComponentName5=\"XZ\"");
+  std::vector<double> stress, vm;
+  std::vector<long long> region;
+  stress.reserve(6 * static_cast<std::size_t>(numCells));
   for (Index c = 0; c < numCells; ++c) {
     const auto t = mesh.cell(c);
     double sxx, syy, szz, sxy, syz = 0.0, sxz = 0.0;
@@ -148,8 +264,6 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
       if (stressOffset) sigma += stressOffset(c, centroid);
       sxx = sigma(0, 0), syy = sigma(1, 1), szz = sigma(2, 2);
       sxy = sigma(0, 1), syz = sigma(1, 2), sxz = sigma(0, 2);
-      s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
-        << finite(sxy) << " " << finite(syz) << " " << finite(sxz) << "\n";
     } else {
       // The 2D types and formulas as before the 3D branch existed: the files stay the same
       // byte for byte.
@@ -165,160 +279,138 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
         if (offset(2, 2) != 0.0) szz += offset(2, 2);
       }
       sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
-      s << "          " << finite(sxx) << " " << finite(syy) << " " << finite(szz) << " "
-        << finite(sxy) << " 0 0\n";
     }
+    stress.insert(stress.end(), {sxx, syy, szz, sxy, syz, sxz});
     const double normal =
         0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx));
     // 2D: the expression (and so the rounding) of the files written before 3D existed.
-    const double vonMises = is3d ? std::sqrt(normal + 3.0 * (sxy * sxy + syz * syz + sxz * sxz))
-                                 : std::sqrt(normal + 3.0 * sxy * sxy);
-    vm << "          " << finite(vonMises) << "\n";
-    const int r = static_cast<std::size_t>(c) < mesh.cellRegion.size()
-                      ? mesh.cellRegion[static_cast<std::size_t>(c)]
-                      : 0;
-    region << "          " << r << "\n";
+    vm.push_back(is3d ? std::sqrt(normal + 3.0 * (sxy * sxy + syz * syz + sxz * sxz))
+                      : std::sqrt(normal + 3.0 * sxy * sxy));
+    region.push_back(static_cast<std::size_t>(c) < mesh.cellRegion.size()
+                         ? mesh.cellRegion[static_cast<std::size_t>(c)]
+                         : 0);
   }
-  closeArray(s);
-  openArray(s, "Float64", "vonMises", 1);
-  s << vm.str();
-  closeArray(s);
-  openArray(s, "Int32", "region", 1);
-  s << region.str();
-  closeArray(s);
+  sink.floats(s, "stress", 6, stress, Values::Finite,
+              " ComponentName0=\"XX\" ComponentName1=\"YY\" ComponentName2=\"ZZ\""
+              " ComponentName3=\"XY\" ComponentName4=\"YZ\" ComponentName5=\"XZ\"");
+  sink.floats(s, "vonMises", 1, vm, Values::Finite);
+  sink.integers(s, "Int32", "region", region, 1);
   s << "      </CellData>\n";
 
   s << "      <Points>\n";
-  openArray(s, "Float64", "", 3);
+  values.clear();
   for (Index n = 0; n < numNodes; ++n) {
     const Point& x = space.point(n);
-    s << "          " << x.x() << " " << x.y() << " ";
-    if (is3d)
-      s << x.z() << "\n";
-    else
-      s << "0\n";
+    values.insert(values.end(), {x.x(), x.y(), is3d ? x.z() : 0.0});
   }
-  closeArray(s);
+  sink.floats(s, "", 3, values, Values::Raw);
   s << "      </Points>\n";
 
   s << "      <Cells>\n";
-  openArray(s, "Int64", "connectivity", 1);
+  std::vector<long long> connectivity, offsets, types;
   for (Index c = 0; c < numCells; ++c) {
-    s << "         ";
-    for (const Index n : space.cellNodes(c)) s << " " << n;
-    s << "\n";
+    for (const Index n : space.cellNodes(c)) connectivity.push_back(n);
+    offsets.push_back(static_cast<long long>(c + 1) * perCell);
+    types.push_back(cellType);
   }
-  closeArray(s);
-  openArray(s, "Int64", "offsets", 1);
-  for (Index c = 0; c < numCells; ++c)
-    s << "          " << static_cast<long long>(c + 1) * perCell << "\n";
-  closeArray(s);
-  openArray(s, "UInt8", "types", 1);
-  for (Index c = 0; c < numCells; ++c) s << "          " << cellType << "\n";
-  closeArray(s);
+  sink.integers(s, "Int64", "connectivity", connectivity, perCell);
+  sink.integers(s, "Int64", "offsets", offsets, 1);
+  sink.integers(s, "UInt8", "types", types, 1);
   s << "      </Cells>\n"
     << "    </Piece>\n"
-    << "  </UnstructuredGrid>\n"
-    << "</VTKFile>\n";
+    << "  </UnstructuredGrid>\n";
+  sink.finish(s);
   writeTextAtomic(path, s.str());
 }
 
 namespace {
 
-// A Float64 point-data array of one value per row, NaN written as "nan": a tip has no
-// traction, and VTK's ASCII reader (9.1) and ParaView read "nan" as NaN.
+// A Float64 point-data array of one value per row, NaN kept: a tip has no traction, and VTK's
+// ASCII reader (9.1) and ParaView read "nan" as NaN.
 template <class Value>
-void rowArray(std::ostream& s, const char* name, const std::vector<FractureRow>& rows,
-              const Value& value) {
-  openArray(s, "Float64", name, 1);
-  for (const FractureRow& r : rows) {
-    const double v = value(r);
-    if (std::isnan(v))
-      s << "          nan\n";
-    else
-      s << "          " << finite(v) << "\n";
-  }
-  closeArray(s);
+void rowArray(ArraySink& sink, std::ostream& s, const char* name,
+              const std::vector<FractureRow>& rows, const Value& value) {
+  std::vector<double> v;
+  v.reserve(rows.size());
+  for (const FractureRow& r : rows) v.push_back(value(r));
+  sink.floats(s, name, 1, v, Values::KeepNan);
 }
 
 // A Float64 point-data array of one 3-vector per row, components as rowArray's values.
 template <class Value>
-void rowVectorArray(std::ostream& s, const char* name, const std::vector<FractureRow>& rows,
-                    const Value& value) {
-  openArray(s, "Float64", name, 3);
+void rowVectorArray(ArraySink& sink, std::ostream& s, const char* name,
+                    const std::vector<FractureRow>& rows, const Value& value) {
+  std::vector<double> v;
+  v.reserve(3 * rows.size());
   for (const FractureRow& r : rows) {
-    const Eigen::Vector3d v = value(r);
-    s << "         ";
-    for (int i = 0; i < 3; ++i) {
-      if (std::isnan(v[i]))
-        s << " nan";
-      else
-        s << " " << finite(v[i]);
-    }
-    s << "\n";
+    const Eigen::Vector3d x = value(r);
+    v.insert(v.end(), {x[0], x[1], x[2]});
   }
-  closeArray(s);
+  sink.floats(s, name, 3, v, Values::KeepNan);
 }
 
-void stateArray(std::ostream& s, const std::vector<FractureRow>& rows) {
-  openArray(s, "Int32", "state", 1);
-  for (const FractureRow& r : rows) s << "          " << vtkStateCode(r.state) << "\n";
-  closeArray(s);
+void stateArray(ArraySink& sink, std::ostream& s, const std::vector<FractureRow>& rows) {
+  std::vector<long long> v;
+  for (const FractureRow& r : rows) v.push_back(vtkStateCode(r.state));
+  sink.integers(s, "Int32", "state", v, 1);
 }
 
 void writeFracturePolyline(const std::string& path, const std::vector<FractureRow>& rows,
-                           int precision) {
+                           int precision, VtkFormat format) {
   const std::size_t n = rows.size();
+  ArraySink sink(format, precision);
   std::ostringstream s;
   s.precision(precision);
   s << kHeader << "<!-- fracture table as a polyline; point array state: " << stateLegend(rows)
     << " (no traction: nan) -->\n"
-    << "<VTKFile type=\"PolyData\"" << kFileAttributes << ">\n"
+    << "<VTKFile type=\"PolyData\"" << sink.fileAttributes() << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\""
     << (n > 0 ? 1 : 0) << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
     << "      <PointData Scalars=\"ST\">\n";
-  rowArray(s, "s", rows, [](const FractureRow& r) { return r.s; });
-  rowArray(s, "slip", rows, [](const FractureRow& r) { return r.slip[0]; });
-  rowArray(s, "slipIncrement", rows, [](const FractureRow& r) { return r.slipIncrement[0]; });
-  rowArray(s, "sigmaN", rows, [](const FractureRow& r) { return r.sigmaN; });
-  rowArray(s, "tau", rows, [](const FractureRow& r) { return r.tau[0]; });
-  rowArray(s, "ST", rows, [](const FractureRow& r) { return r.ST; });
-  rowArray(s, "residual", rows, [](const FractureRow& r) { return r.residual[0]; });
+  rowArray(sink, s, "s", rows, [](const FractureRow& r) { return r.s; });
+  rowArray(sink, s, "slip", rows, [](const FractureRow& r) { return r.slip[0]; });
+  rowArray(sink, s, "slipIncrement", rows, [](const FractureRow& r) { return r.slipIncrement[0]; });
+  rowArray(sink, s, "sigmaN", rows, [](const FractureRow& r) { return r.sigmaN; });
+  rowArray(sink, s, "tau", rows, [](const FractureRow& r) { return r.tau[0]; });
+  rowArray(sink, s, "ST", rows, [](const FractureRow& r) { return r.ST; });
+  rowArray(sink, s, "residual", rows, [](const FractureRow& r) { return r.residual[0]; });
   if (!rows.empty() && rows.front().hasOpening)
-    rowArray(s, "opening", rows, [](const FractureRow& r) { return r.opening; });
+    rowArray(sink, s, "opening", rows, [](const FractureRow& r) { return r.opening; });
   if (!rows.empty() && rows.front().hasPressure) {
-    rowArray(s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
-    rowArray(s, "sigmaNEffective", rows, [](const FractureRow& r) { return r.sigmaNEffective; });
-    rowArray(s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
+    rowArray(sink, s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
+    rowArray(sink, s, "sigmaNEffective", rows,
+             [](const FractureRow& r) { return r.sigmaNEffective; });
+    rowArray(sink, s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
   }
-  stateArray(s, rows);
+  stateArray(sink, s, rows);
   s << "      </PointData>\n";
 
   s << "      <Points>\n";
-  openArray(s, "Float64", "", 3);
+  std::vector<double> points;
   for (const FractureRow& r : rows)
-    s << "          " << r.position.x() << " " << r.position.y() << " 0\n";
-  closeArray(s);
+    points.insert(points.end(), {r.position.x(), r.position.y(), 0.0});
+  sink.floats(s, "", 3, points, Values::Raw);
   s << "      </Points>\n";
 
   s << "      <Lines>\n";
-  openArray(s, "Int64", "connectivity", 1);
-  for (std::size_t i = 0; i < n; ++i) s << "          " << i << "\n";
-  closeArray(s);
-  openArray(s, "Int64", "offsets", 1);
-  if (n > 0) s << "          " << n << "\n";
-  closeArray(s);
+  std::vector<long long> connectivity, offsets;
+  for (std::size_t i = 0; i < n; ++i) connectivity.push_back(static_cast<long long>(i));
+  if (n > 0) offsets.push_back(static_cast<long long>(n));
+  sink.integers(s, "Int64", "connectivity", connectivity, 1);
+  sink.integers(s, "Int64", "offsets", offsets, 1);
   s << "      </Lines>\n"
     << "    </Piece>\n"
-    << "  </PolyData>\n"
-    << "</VTKFile>\n";
+    << "  </PolyData>\n";
+  sink.finish(s);
   writeTextAtomic(path, s.str());
 }
 
 // The fault surface of a 3D fracture: see writeFractureVtp.
 void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& rows, int precision,
-                       const std::vector<std::array<Index, 6>>& triangles, int nodesPerTriangle) {
+                       const std::vector<std::array<Index, 6>>& triangles, int nodesPerTriangle,
+                       VtkFormat format) {
+  ArraySink sink(format, precision);
   if (nodesPerTriangle != 3 && nodesPerTriangle != 6)
     throw std::invalid_argument("writeFractureVtp: " + std::to_string(nodesPerTriangle) +
                                 " nodes per triangle (expected 3 or 6)");
@@ -346,7 +438,7 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
     << "<!-- fault surface (P2: four triangles per fault triangle, at its edge midpoints); point "
        "array state: "
     << stateLegend(rows) << " (no traction: nan) -->\n"
-    << "<VTKFile type=\"PolyData\"" << kFileAttributes << ">\n"
+    << "<VTKFile type=\"PolyData\"" << sink.fileAttributes() << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n
     << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\""
@@ -355,25 +447,26 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
   const auto inXyz = [](const std::array<double, 2>& c, const FractureRow& r) {
     return (c[0] * r.tangent[0] + c[1] * r.tangent[1]).eval();
   };
-  rowVectorArray(s, "normal", rows, [](const FractureRow& r) { return r.normal; });
-  rowVectorArray(s, "slip", rows, [&](const FractureRow& r) { return inXyz(r.slip, r); });
-  rowArray(s, "slipMagnitude", rows,
+  rowVectorArray(sink, s, "normal", rows, [](const FractureRow& r) { return r.normal; });
+  rowVectorArray(sink, s, "slip", rows, [&](const FractureRow& r) { return inXyz(r.slip, r); });
+  rowArray(sink, s, "slipMagnitude", rows,
            [](const FractureRow& r) { return std::hypot(r.slip[0], r.slip[1]); });
-  rowVectorArray(s, "slipIncrement", rows,
+  rowVectorArray(sink, s, "slipIncrement", rows,
                  [&](const FractureRow& r) { return inXyz(r.slipIncrement, r); });
-  rowArray(s, "sigmaN", rows, [](const FractureRow& r) { return r.sigmaN; });
-  rowVectorArray(s, "traction", rows, [&](const FractureRow& r) { return inXyz(r.tau, r); });
-  rowArray(s, "tauMagnitude", rows,
+  rowArray(sink, s, "sigmaN", rows, [](const FractureRow& r) { return r.sigmaN; });
+  rowVectorArray(sink, s, "traction", rows, [&](const FractureRow& r) { return inXyz(r.tau, r); });
+  rowArray(sink, s, "tauMagnitude", rows,
            [](const FractureRow& r) { return std::hypot(r.tau[0], r.tau[1]); });
-  rowArray(s, "ST", rows, [](const FractureRow& r) { return r.ST; });
-  rowArray(s, "residual", rows,
+  rowArray(sink, s, "ST", rows, [](const FractureRow& r) { return r.ST; });
+  rowArray(sink, s, "residual", rows,
            [](const FractureRow& r) { return std::hypot(r.residual[0], r.residual[1]); });
   if (!rows.empty() && rows.front().hasOpening)
-    rowArray(s, "opening", rows, [](const FractureRow& r) { return r.opening; });
+    rowArray(sink, s, "opening", rows, [](const FractureRow& r) { return r.opening; });
   if (!rows.empty() && rows.front().hasPressure) {
-    rowArray(s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
-    rowArray(s, "sigmaNEffective", rows, [](const FractureRow& r) { return r.sigmaNEffective; });
-    rowArray(s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
+    rowArray(sink, s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
+    rowArray(sink, s, "sigmaNEffective", rows,
+             [](const FractureRow& r) { return r.sigmaNEffective; });
+    rowArray(sink, s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
     // The slip and τ along strike and down dip (strikeDipBasis(), FieldWriter.hpp).
     const auto along = [](const FractureRow& r, const std::array<double, 2>& v, bool dipward) {
       Eigen::Vector3d strike, dip;
@@ -381,43 +474,48 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
       const Eigen::Vector3d x = v[0] * r.tangent[0] + v[1] * r.tangent[1];
       return x.dot(dipward ? dip : strike);
     };
-    rowArray(s, "slipStrike", rows, [&](const FractureRow& r) { return along(r, r.slip, false); });
-    rowArray(s, "slipDip", rows, [&](const FractureRow& r) { return along(r, r.slip, true); });
-    rowArray(s, "tauStrike", rows, [&](const FractureRow& r) { return along(r, r.tau, false); });
-    rowArray(s, "tauDip", rows, [&](const FractureRow& r) { return along(r, r.tau, true); });
+    rowArray(sink, s, "slipStrike", rows,
+             [&](const FractureRow& r) { return along(r, r.slip, false); });
+    rowArray(sink, s, "slipDip", rows,
+             [&](const FractureRow& r) { return along(r, r.slip, true); });
+    rowArray(sink, s, "tauStrike", rows,
+             [&](const FractureRow& r) { return along(r, r.tau, false); });
+    rowArray(sink, s, "tauDip", rows, [&](const FractureRow& r) { return along(r, r.tau, true); });
   }
-  stateArray(s, rows);
+  stateArray(sink, s, rows);
   s << "      </PointData>\n";
 
   s << "      <Points>\n";
-  openArray(s, "Float64", "", 3);
+  std::vector<double> points;
   for (const FractureRow& r : rows)
-    s << "          " << r.position.x() << " " << r.position.y() << " " << r.position.z() << "\n";
-  closeArray(s);
+    points.insert(points.end(), {r.position.x(), r.position.y(), r.position.z()});
+  sink.floats(s, "", 3, points, Values::Raw);
   s << "      </Points>\n";
 
   s << "      <Polys>\n";
-  openArray(s, "Int64", "connectivity", 1);
-  for (const auto& c : cells) s << "          " << c[0] << " " << c[1] << " " << c[2] << "\n";
-  closeArray(s);
-  openArray(s, "Int64", "offsets", 1);
-  for (std::size_t c = 0; c < cells.size(); ++c) s << "          " << 3 * (c + 1) << "\n";
-  closeArray(s);
+  std::vector<long long> connectivity, offsets;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    connectivity.insert(connectivity.end(), {cells[c][0], cells[c][1], cells[c][2]});
+    offsets.push_back(static_cast<long long>(3 * (c + 1)));
+  }
+  sink.integers(s, "Int64", "connectivity", connectivity, 3);
+  sink.integers(s, "Int64", "offsets", offsets, 1);
   s << "      </Polys>\n"
     << "    </Piece>\n"
-    << "  </PolyData>\n"
-    << "</VTKFile>\n";
+    << "  </PolyData>\n";
+  sink.finish(s);
   writeTextAtomic(path, s.str());
 }
 
 }  // namespace
 
 void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision,
-                      const std::vector<std::array<Index, 6>>& triangles, int nodesPerTriangle) {
+                      const std::vector<std::array<Index, 6>>& triangles, int nodesPerTriangle,
+                      VtkFormat format) {
   if (triangles.empty())
-    writeFracturePolyline(path, rows, precision);
+    writeFracturePolyline(path, rows, precision, format);
   else
-    writeFaultSurface(path, rows, precision, triangles, nodesPerTriangle);
+    writeFaultSurface(path, rows, precision, triangles, nodesPerTriangle, format);
 }
 
 void writePvd(const std::string& path, const std::vector<PvdTime>& times, int precision) {
@@ -437,8 +535,10 @@ void writePvd(const std::string& path, const std::vector<PvdTime>& times, int pr
   writeTextAtomic(path, s.str());
 }
 
-VtkSeries::VtkSeries(std::string caseDir, std::string caseName)
-    : vtkDir_((fs::path(caseDir) / "VTK").string()), caseName_(std::move(caseName)) {
+VtkSeries::VtkSeries(std::string caseDir, std::string caseName, VtkFormat format)
+    : vtkDir_((fs::path(caseDir) / "VTK").string()),
+      caseName_(std::move(caseName)),
+      format_(format) {
   if (caseName_.empty()) {
     // "cases/paperBenchmark/" and "." must give the folder's own name too.
     const fs::path p = fs::absolute(fs::path(caseDir)).lexically_normal();
@@ -457,6 +557,36 @@ std::string VtkSeries::vtuPath(const std::string& timeName) const {
 
 std::string VtkSeries::vtpPath(const std::string& fracture, const std::string& timeName) const {
   return (fs::path(vtkDir_) / "fractures" / (fracture + "_" + timeName + ".vtp")).string();
+}
+
+std::string VtkSeries::fracturePvdPath(const std::string& fracture) const {
+  return (fs::path(vtkDir_) / "fractures" / (fracture + ".pvd")).string();
+}
+
+void VtkSeries::writeCollections(int precision) const {
+  // Time values need enough digits to stay distinct and ordered even when the files'
+  // precision is low.
+  precision = std::max(precision, 12);
+  std::vector<PvdTime> all;
+  all.reserve(times_.size());
+  // Each fracture's own series: its .vtp of every time, by the name write() gave its part.
+  std::map<std::string, std::vector<PvdTime>> perFracture;
+  std::vector<std::string> order;
+  for (const auto& nt : times_) {
+    all.push_back(nt.second);
+    const PvdTime& t = nt.second;
+    for (std::size_t k = 1; k < t.files.size(); ++k) {
+      const std::string name = k < t.names.size() ? t.names[k] : "";
+      const std::string prefix = "fractures/";
+      if (name.empty() || t.files[k].compare(0, prefix.size(), prefix) != 0) continue;
+      if (!perFracture.count(name)) order.push_back(name);
+      perFracture[name].push_back(PvdTime{t.time, {t.files[k].substr(prefix.size())}, {name}});
+    }
+  }
+  // The fractures' first: the case's .pvd, written last, never names a file not yet there.
+  for (const std::string& name : order)
+    writePvd(fracturePvdPath(name), perFracture[name], precision);
+  writePvd(pvdPath(), all, precision);
 }
 
 namespace {
@@ -542,10 +672,16 @@ int VtkSeries::resume(const std::function<bool(const std::string&)>& keep,
     for (const std::string& f : fractures) sweep(vtp, f, ".vtp");
   removed += removeTemporaryFiles(vtk.string()) + removeTemporaryFiles(vtp.string());
 
+  // The fractures' own collections go with the case's: rewritten from the kept times, or
+  // removed (this layout's names only) where the kept times have none of that fracture.
+  for (const std::string& f : fractures) {
+    bool listed = false;
+    for (const auto& nt : times_)
+      for (std::size_t k = 1; k < nt.second.names.size(); ++k) listed |= nt.second.names[k] == f;
+    if (!listed && fs::remove(fracturePvdPath(f), ec)) ++removed;
+  }
   if (!times_.empty()) {
-    std::vector<PvdTime> all;
-    for (const auto& nt : times_) all.push_back(nt.second);
-    writePvd(pvdPath(), all, std::max(precision, 12));
+    writeCollections(precision);
   } else if (fs::remove(pvdPath(), ec)) {
     ++removed;
   }
@@ -568,13 +704,13 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
   entry.time = time;
   std::vector<std::string> written;
   try {
-    writeVtu(vtuPath(timeName), space, assembler, u, precision, stressOffset);
+    writeVtu(vtuPath(timeName), space, assembler, u, precision, stressOffset, format_);
     written.push_back(vtuPath(timeName));
     entry.files.push_back(fs::path(vtuPath(timeName)).filename().string());
     entry.names.push_back("mesh");
     for (const Fracture& f : fractures) {
       writeFractureVtp(vtpPath(f.name, timeName), f.rows, precision, f.triangles,
-                       f.nodesPerTriangle);
+                       f.nodesPerTriangle, format_);
       written.push_back(vtpPath(f.name, timeName));
       entry.files.push_back("fractures/" + fs::path(vtpPath(f.name, timeName)).filename().string());
       entry.names.push_back(f.name);
@@ -593,12 +729,7 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
     }
   if (!replaced) times_.emplace_back(timeName, entry);
 
-  std::vector<PvdTime> all;
-  all.reserve(times_.size());
-  for (const auto& nt : times_) all.push_back(nt.second);
-  // Time values need enough digits to stay distinct and ordered even when the files'
-  // precision is low (resume() writes the same).
-  writePvd(pvdPath(), all, std::max(precision, 12));
+  writeCollections(precision);
 }
 
 }  // namespace friction

@@ -1,5 +1,5 @@
-// VtkWriter: ParaView-ready output in VTK's XML formats, written as ASCII by hand (no VTK
-// library in C++):
+// VtkWriter: ParaView-ready output in VTK's XML formats, written by hand (no VTK library in
+// C++), as ASCII or as appended binary compressed with zlib (VtkFormat; ParaView's own form):
 //  * writeVtu: the displacement and the stress on the SPLIT mesh (.vtu, an unstructured
 //    grid). The fracture nodes are duplicated (coincident points), so the jump of the
 //    displacement across a fracture shows when the mesh is warped by "displacement".
@@ -13,6 +13,8 @@
 //        <case>/VTK/<caseName>_<time>.vtu
 //        <case>/VTK/fractures/<fracture>_<time>.vtp
 //        <case>/VTK/<caseName>.pvd            (rewritten after every time)
+//        <case>/VTK/fractures/<fracture>.pvd  (each fracture's own series: ParaView shows
+//                                              the fault, which the volume hides)
 //
 // Every file is written atomically (temporary file beside the target, then rename), like
 // DictionaryWriter::writeAtomic: ParaView, or a crash, sees the old file or the new one whole.
@@ -43,13 +45,19 @@ constexpr int kVtkQuadraticTriangle = 22;
 constexpr int kVtkTetra = 10;
 constexpr int kVtkQuadraticTetra = 24;
 
+/// How the data arrays are written: `ascii`, numbers as text (writePrecision digits), or
+/// `binary`, VTK's appended raw form compressed by zlib (blocks of 32 KiB, UInt64 headers,
+/// vtkZLibDataCompressor), full double precision, 5-15 times smaller.
+enum class VtkFormat { ascii, binary };
+
 /// Integer code of a fracture-node state in the .vtp "state" array: 0 stick, 1 slip,
 /// 2 open, 3 tip, 4 junction (a branch's end held at a junction). Throws std::invalid_argument for
 /// any other string (the solver writes only these).
 int vtkStateCode(const std::string& state);
 
 /// Write the displacement and stress of `u` on the mesh of `space` (2D or 3D) as a VTK XML
-/// unstructured grid (ASCII) at `path`; the folder must exist (OutputError otherwise, naming
+/// unstructured grid at `path` (`format`: ascii by default for this function; VtkSeries writes
+/// binary unless told otherwise); the folder must exist (OutputError otherwise, naming
 /// path).
 ///  * points: every node of `space` (P2: the vertices, then the edge midpoints), (x, y, z)
 ///    [m], z = 0 in 2D;
@@ -72,9 +80,11 @@ int vtkStateCode(const std::string& state);
 /// block to the in-plane stress and its zz entry to Material::outOfPlaneStress's σ_zz.
 void writeVtu(const std::string& path, const LagrangeSpace& space,
               const ElasticityAssembler& assembler, const Eigen::VectorXd& u, int precision,
-              const std::function<Eigen::Matrix3d(Index, const Point&)>& stressOffset = {});
+              const std::function<Eigen::Matrix3d(Index, const Point&)>& stressOffset = {},
+              VtkFormat format = VtkFormat::ascii);
 
-/// Write one fracture's rows (FieldWriter.hpp) as VTK XML poly data (ASCII) at `path`.
+/// Write one fracture's rows (FieldWriter.hpp) as VTK XML poly data at `path` (`format` as
+/// writeVtu's).
 ///  * 2D (`triangles` empty): the points (x, y, 0) [m] in row order (arclength order) joined by
 ///    one VTK_POLY_LINE, and point data s [m], slip [m], slipIncrement [m], sigmaN [Pa],
 ///    tau [Pa], ST [-], residual [Pa] (components [0] of the rows' arrays).
@@ -87,13 +97,13 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 ///    (3, x y z: slip₁ t₁ + slip₂ t₂), slipMagnitude [m], slipIncrement [m] (3, x y z),
 ///    sigmaN [Pa], traction [Pa] (3, the tangential traction τ in x y z), tauMagnitude [Pa],
 ///    ST [-], residual [Pa] (|D|).
-/// Both: Float64, NaN written as "nan" at tips, which have no traction, and state (Int32:
-/// 0 stick, 1 slip, 2 open, 3 tip, 4 junction; see vtkStateCode). The file also says the state
-/// coding in an XML comment. No rows: an empty data set (no points, no cells). The folder must
-/// exist.
+/// Both: Float64, NaN written as "nan" (binary: NaN) at tips, which have no traction, and state
+/// (Int32: 0 stick, 1 slip, 2 open, 3 tip, 4 junction; see vtkStateCode). The file also says the
+/// state coding in an XML comment. No rows: an empty data set (no points, no cells). The folder
+/// must exist.
 void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision,
                       const std::vector<std::array<Index, 6>>& triangles = {},
-                      int nodesPerTriangle = 3);
+                      int nodesPerTriangle = 3, VtkFormat format = VtkFormat::ascii);
 
 /// One time of a .pvd collection.
 struct PvdTime {
@@ -118,7 +128,8 @@ class VtkSeries {
  public:
   /// `caseDir`: the case folder; `caseName`: the base name of the .vtu and .pvd files
   /// (default: the case folder's own name).
-  explicit VtkSeries(std::string caseDir, std::string caseName = "");
+  explicit VtkSeries(std::string caseDir, std::string caseName = "",
+                     VtkFormat format = VtkFormat::binary);
 
   /// One fracture for write(): its name (file name and ParaView block name), table and, in
   /// 3D, its triangles as row indices (writeFractureVtp; empty in 2D).
@@ -130,9 +141,10 @@ class VtkSeries {
   };
 
   /// Write the .vtu of (space, assembler, u) (see writeVtu), one .vtp per fracture (see
-  /// writeFractureVtp) and then the .pvd. `time`: the time value [s or load parameter];
-  /// `timeName`: the time folder's name (TimeControl::timeName), used in the file names.
-  /// Throws OutputError naming the file if a folder or file cannot be written.
+  /// writeFractureVtp), in the series' format, and then each fracture's .pvd and the case's.
+  /// `time`: the time value [s or load parameter]; `timeName`: the time folder's name
+  /// (TimeControl::timeName), used in the file names. Throws OutputError naming the file if a
+  /// folder or file cannot be written.
   void write(double time, const std::string& timeName, const LagrangeSpace& space,
              const ElasticityAssembler& assembler, const Eigen::VectorXd& u,
              const std::vector<Fracture>& fractures, int precision,
@@ -154,12 +166,18 @@ class VtkSeries {
   std::string vtuPath(const std::string& timeName) const;
   /// <case>/VTK/fractures/<fracture>_<timeName>.vtp
   std::string vtpPath(const std::string& fracture, const std::string& timeName) const;
+  /// <case>/VTK/fractures/<fracture>.pvd: that fracture's .vtp files alone, per time
+  std::string fracturePvdPath(const std::string& fracture) const;
   const std::string& caseName() const { return caseName_; }
 
  private:
   std::string vtkDir_;
   std::string caseName_;
+  VtkFormat format_;
   std::vector<std::pair<std::string, PvdTime>> times_;  ///< by time name, in write order
+
+  /// Write the case's .pvd and each fracture's from times_.
+  void writeCollections(int precision) const;
 };
 
 }  // namespace friction

@@ -110,6 +110,7 @@ TimeControl::TimeControl(const Dictionary& d) {
   writePrecision_ = static_cast<int>(d.getIntOr("writePrecision", 8, {1, 17}));
   timePrecisionAsked_ = static_cast<int>(d.getIntOr("timePrecision", 6, {1, 17}));
   writeVTK_ = d.getBoolOr("writeVTK", true);
+  vtkBinary_ = d.getChoiceOr("vtkFormat", {"binary", "ascii"}, "binary") == "binary";
   origin_ = startTime_;
   if (mode_ != Steps::uniform) setUpSequence();
   plan();

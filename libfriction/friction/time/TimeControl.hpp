@@ -7,6 +7,7 @@
 //   writeControl timeStep | runTime;      writeInterval 1;
 //   writePrecision 8;                     timePrecision 6;
 //   writeVTK    yes;                      // also VTK/ files for ParaView (default yes)
+//   vtkFormat   binary;                   // their data: binary (zlib, default) | ascii
 // Time is a load parameter (quasi-static): only its ratios to the load tables matter.
 //
 // Steps are counted in 64 bits and limited to maxSteps; time-folder names get as many
@@ -58,6 +59,8 @@ class TimeControl {
   bool rereadStopAt(const std::string& controlDictPath);
   int writePrecision() const { return writePrecision_; }
   bool writeVTK() const { return writeVTK_; }
+  /// vtkFormat: the VTK files' data compressed binary (true, the default) or ASCII.
+  bool vtkBinary() const { return vtkBinary_; }
 
   /// Continue a run whose state was saved at `time` as step `step` (a restart). Returns the
   /// first step to compute; numSteps() + 1 when `time` is already endTime. When `time` is a
@@ -122,6 +125,7 @@ class TimeControl {
   double writeInterval_ = 1;
   int writePrecision_ = 8, timePrecisionAsked_ = 6, timePrecision_ = 6;
   bool writeVTK_ = true;
+  bool vtkBinary_ = true;
   SourceLocation deltaTWhere_;  ///< for errors found after reading (a restart)
 
   Steps mode_ = Steps::uniform;

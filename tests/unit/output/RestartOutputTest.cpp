@@ -86,6 +86,14 @@ TEST_CASE("VtkSeries::resume keeps the .pvd entries and files up to the restart 
   const fs::path expected = dir / "expected.pvd";
   writePvd(expected.string(), {all[0], all[1]}, 12);
   CHECK(readText(vtk / "case.pvd") == readText(expected));
+  // So is each fracture's own collection: its files of the kept times, part 0.
+  for (const std::string f : {"f", "g&h"}) {
+    std::vector<PvdTime> own;
+    for (const std::string n : {"0.1", "0.2"})
+      own.push_back(PvdTime{std::stod(n), {f + "_" + n + ".vtp"}, {f}});
+    writePvd(expected.string(), own, 12);
+    CHECK(readText(vtk / "fractures" / (f + ".pvd")) == readText(expected));
+  }
   fs::remove_all(dir.parent_path());
 }
 
@@ -97,8 +105,10 @@ TEST_CASE("VtkSeries::resume with nothing kept removes the collection, and empty
   const PvdTime t = pvdTime(0.5, "0.5");
   for (const std::string& f : t.files) std::ofstream(vtk / f) << "x";
   writePvd((vtk / "case.pvd").string(), {t}, 12);
+  writePvd((vtk / "fractures" / "f.pvd").string(), {PvdTime{0.5, {"f_0.5.vtp"}, {"f"}}}, 12);
   VtkSeries series(dir.string());
-  CHECK(series.resume([](const std::string&) { return false; }, {"f", "g&h"}, 8) == 4);
+  // The three files of 0.5, the case's .pvd and fracture f's.
+  CHECK(series.resume([](const std::string&) { return false; }, {"f", "g&h"}, 8) == 5);
   CHECK_FALSE(fs::exists(vtk));
   // And without any VTK folder it does nothing.
   CHECK(series.resume([](const std::string&) { return false; }, {"f"}, 8) == 0);

@@ -126,7 +126,10 @@ TEST_CASE("VTK output of a linear field on a split mesh reads back in VTK with e
           "[output][vtk]") {
   const int degree = GENERATE(1, 2);
   const bool planeStress = GENERATE(false, true);
-  INFO("degree " << degree << ", planeStress " << planeStress);
+  // Both data forms: the same checks read either back exactly (17 digits in ASCII).
+  const VtkFormat format = GENERATE(VtkFormat::binary, VtkFormat::ascii);
+  INFO("degree " << degree << ", planeStress " << planeStress << ", "
+                 << (format == VtkFormat::binary ? "binary" : "ascii"));
 
   const SplitMesh split = splitGrid();
   const LagrangeSpace space(split.mesh, degree);
@@ -140,10 +143,11 @@ TEST_CASE("VTK output of a linear field on a split mesh reads back in VTK with e
   REQUIRE(space.numNodes() == wantPoints);
   REQUIRE(space.numCells() == 32);
 
-  const fs::path dir = freshTempDir("p" + std::to_string(degree) + (planeStress ? "s" : "e"));
+  const fs::path dir = freshTempDir("p" + std::to_string(degree) + (planeStress ? "s" : "e") +
+                                    (format == VtkFormat::binary ? "b" : "a"));
   const fs::path caseDir = dir / "myCase";
   fs::create_directories(caseDir);
-  VtkSeries series(caseDir.string());
+  VtkSeries series(caseDir.string(), "", format);
   CHECK(series.caseName() == "myCase");
   // 17 digits: the checks compare against exact values at round-off level.
   for (const double t : {0.5, 1.0}) {
@@ -164,6 +168,19 @@ TEST_CASE("VTK output of a linear field on a split mesh reads back in VTK with e
   CHECK(series.pvdPath() == (caseDir / "VTK" / "myCase.pvd").string());
   const std::string pvd = readFile(caseDir / "VTK" / "myCase.pvd");
   CHECK(countOf(pvd, "<DataSet ") == 4);  // 2 times x (mesh + 1 fracture)
+  // The fracture's own series: its two files, part 0, at their times.
+  const std::string own = readFile(caseDir / "VTK" / "fractures" / "crack.pvd");
+  CHECK(countOf(own, "<DataSet ") == 2);
+  CHECK(own.find("timestep=\"0.5\" group=\"\" part=\"0\" name=\"crack\" file=\"crack_0.5.vtp\"") !=
+        std::string::npos);
+  CHECK(own.find("timestep=\"1\" group=\"\" part=\"0\" name=\"crack\" file=\"crack_1.vtp\"") !=
+        std::string::npos);
+  // The data's form is the one asked for.
+  const std::string vtu = readFile(caseDir / "VTK" / "myCase_1.vtu");
+  CHECK((vtu.find("format=\"appended\"") != std::string::npos) == (format == VtkFormat::binary));
+  CHECK((vtu.find("compressor=\"vtkZLibDataCompressor\"") != std::string::npos) ==
+        (format == VtkFormat::binary));
+  CHECK((vtu.find("format=\"ascii\"") != std::string::npos) == (format == VtkFormat::ascii));
   // No temporary files left beside the targets.
   for (const auto& e : fs::recursive_directory_iterator(caseDir / "VTK"))
     CHECK(e.path().filename().string().rfind(".", 0) != 0);
@@ -199,6 +216,13 @@ TEST_CASE("VTK writers refuse what they cannot write and unknown fracture states
   const std::string empty = readFile(dir / "empty.vtp");
   CHECK(empty.find("NumberOfPoints=\"0\"") != std::string::npos);
   CHECK(empty.find("NumberOfLines=\"0\"") != std::string::npos);
+  // Binary too: empty arrays (a zlib header of no blocks) and the file closed after them.
+  writeFractureVtp((dir / "emptyBinary.vtp").string(), {}, 8, {}, 3, VtkFormat::binary);
+  const std::string emptyBinary = readFile(dir / "emptyBinary.vtp");
+  CHECK(emptyBinary.find("NumberOfPoints=\"0\"") != std::string::npos);
+  CHECK(emptyBinary.find("<AppendedData encoding=\"raw\">") != std::string::npos);
+  CHECK(emptyBinary.size() > 11);
+  CHECK(emptyBinary.compare(emptyBinary.size() - 11, 11, "</VTKFile>\n") == 0);
 
   // Names with XML specials stay well-formed attribute values.
   writePvd((dir / "a.pvd").string(), {{0.25, {"a&b.vtu", "x\"y.vtp"}, {"mesh", "<f>"}}}, 8);
@@ -235,7 +259,8 @@ Eigen::VectorXd linearField3d(const LagrangeSpace& space, double t) {
 TEST_CASE("VTK output of a linear field on tetrahedra reads back in VTK with exact values",
           "[output][vtk][3d]") {
   const int degree = GENERATE(1, 2);
-  INFO("degree " << degree);
+  const VtkFormat format = GENERATE(VtkFormat::binary, VtkFormat::ascii);
+  INFO("degree " << degree << ", " << (format == VtkFormat::binary ? "binary" : "ascii"));
 
   Mesh mesh = test::unitCubeMesh(2, 0.3);
   // Regions 1 2 3 by cell number (readVtk.py --dim 3 expects 1 + c % 3).
@@ -259,8 +284,9 @@ TEST_CASE("VTK output of a linear field on tetrahedra reads back in VTK with exa
   REQUIRE(mesh.numCells() == 48);
   REQUIRE(space.numNodes() == wantPoints);
 
-  const fs::path dir = freshTempDir("tet" + std::to_string(degree));
-  VtkSeries series((dir / "box").string());
+  const fs::path dir =
+      freshTempDir("tet" + std::to_string(degree) + (format == VtkFormat::binary ? "b" : "a"));
+  VtkSeries series((dir / "box").string(), "", format);
   for (const double t : {0.5, 1.0}) {
     std::ostringstream name;
     name << t;
