@@ -11,11 +11,11 @@
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
-#include "friction/dict/NumberRows.hpp"
 #include "friction/effect/Effect.hpp"
 #include "friction/flow/ClosedForms.hpp"
 #include "friction/flow/FaultDiffusion.hpp"
 #include "friction/flow/FaultFlowMesh.hpp"
+#include "friction/flow/PointData.hpp"
 #include "friction/flow/StepSchedule.hpp"
 #include "friction/fracture/FractureSystem.hpp"
 #include "friction/fracture/SplitMesh.hpp"
@@ -140,7 +140,8 @@ class FaultPressure : public Effect {
     if (!wells_.empty() || diffusion_)
       radius_ = d.getScalarOr("wellRadius", -1.0, Bounds::positive());
     maxDistance_ = d.getScalarOr("maxDistance", -1.0, Bounds::positive());
-    if (d.found("data")) readData(d, caseDir);
+    if (d.found("data"))
+      data_ = PointData::read(d, "data", caseDir, dim, "p", "pressure change [Pa]");
     if (diffusion_) {
       options_.scheme = timeSchemeNamed(
           d.getChoiceOr("scheme", {"backwardEuler", "crankNicolson"}, "backwardEuler"));
@@ -161,9 +162,7 @@ class FaultPressure : public Effect {
     if (change_.components() > 0)
       s << ", plus " << (change_.isConstant() ? "a constant change" : "a change in time (table)");
     if (!wells_.empty()) s << ", " << wells_.size() << (wells_.size() == 1 ? " well" : " wells");
-    if (!dataTimes_.empty())
-      s << ", data from " << dataFile_ << " at " << dataTimes_.size()
-        << (dataTimes_.size() == 1 ? " time" : " times");
+    if (!data_.empty()) s << ", " << data_.describe();
     if (diffusion_)
       s << ", diffusion computed on the fault (storage " << storage_ << " m/Pa, transmissivity "
         << transmissivity_ << " m3/(Pa s), diffusivity " << alpha_ << " m2/s, "
@@ -192,7 +191,7 @@ class FaultPressure : public Effect {
               << ") from min " << v.minCoeff() << " to max " << v.maxCoeff() << " Pa over "
               << v.size() << " nodes\n";
     }
-    if (wells_.empty() && !diffusion_ && dataTimes_.empty()) return;
+    if (wells_.empty() && !diffusion_ && data_.empty()) return;
     bindFlow(c);
   }
 
@@ -240,7 +239,7 @@ class FaultPressure : public Effect {
       } else {
         for (const Well& w : wells_) v += closedForm(w, nodes[k], t);
       }
-      if (!dataTimes_.empty()) v += dataAt(k, t);
+      if (!data_.empty()) v += dataAt(k, t);
       p[static_cast<Eigen::Index>(k)] += v;
     }
   }
@@ -336,7 +335,7 @@ class FaultPressure : public Effect {
         }
       }
     }
-    if (!dataTimes_.empty()) bindData(c, *mesh, maxDistance);
+    if (!data_.empty()) bindData(c, *mesh, maxDistance);
     if (!diffusion_) return;
     flow_ = std::make_unique<FaultDiffusion>(*mesh, FlowCoefficient(storage_),
                                              FlowCoefficient(transmissivity_), options_, where_);
@@ -356,81 +355,35 @@ class FaultPressure : public Effect {
           << (dim_ == 2 ? " segments" : " triangles") << "\n";
   }
 
-  /// `data "file";`: rows "t x y [z] p" [s, m, Pa], a pressure change given at points at listed
-  /// times (a reservoir simulator's export): grouped by time, in any order within a time.
-  void readData(const Dictionary& d, const std::string& caseDir) {
-    const std::string text = readValuesFile(d, "data", caseDir, dataFile_);
-    const NumberRows rows = parseNumberRows(
-        dataFile_, text, static_cast<std::size_t>(dim_ + 2),
-        std::string("expected ") +
-            (dim_ == 2 ? "four numbers 't x y p'" : "five numbers 't x y z p'") +
-            " (time [s], position [m], pressure change [Pa])",
-        false, "t", "no rows: expected lines 't x y" + std::string(dim_ == 2 ? "" : " z") + " p'");
-    for (std::size_t r = 0; r < rows.rows.size(); ++r) {
-      const auto& row = rows.rows[r];
-      if (!dataTimes_.empty() && row[0] < dataTimes_.back())
-        throw InputError(SourceLocation{dataFile_, rows.lines[r]},
-                         "time " + formatNumber(row[0]) + " before the previous row's " +
-                             formatNumber(dataTimes_.back()) +
-                             ": list the rows of each time together, times increasing");
-      if (dataTimes_.empty() || row[0] > dataTimes_.back()) {
-        dataTimes_.push_back(row[0]);
-        dataRows_.emplace_back();
-      }
-      Point x = Point::Zero();
-      for (int c = 0; c < dim_; ++c) x[c] = row[static_cast<std::size_t>(1 + c)];
-      dataRows_.back().push_back({x, row[static_cast<std::size_t>(dim_ + 1)], rows.lines[r]});
-    }
-  }
-
   /// Every data row must lie on a listed fracture (within maxDistance: a row far from every
   /// fault is a file of another place or unit); each control node then takes, per time, the
   /// value of the nearest row of that time.
   void bindData(const EffectContext& c, const FaultFlowMesh& mesh, double maxDistance) {
-    for (const auto& rows : dataRows_)
-      for (const DataRow& r : rows) {
+    for (std::size_t j = 0; j < data_.times().size(); ++j)
+      for (const PointData::Row& r : data_.rows(j)) {
         const FaultFlowMesh::Location at = mesh.locate(r.x);
         if (at.distance > maxDistance)
-          throw InputError(SourceLocation{dataFile_, r.line},
-                           "the point " + describePoint(r.x) + " is " + formatNumber(at.distance) +
-                               " m from the nearest listed fracture (at " +
-                               describePoint(at.closest) + "): data rows must lie on a fault, " +
-                               "within maxDistance " + formatNumber(maxDistance) +
-                               " m (default: half the fault's mean edge length)");
+          data_.fail(r, "the point " + describePoint(r.x) + " is " + formatNumber(at.distance) +
+                            " m from the nearest listed fracture (at " + describePoint(at.closest) +
+                            "): data rows must lie on a fault, " + "within maxDistance " +
+                            formatNumber(maxDistance) +
+                            " m (default: half the fault's mean edge length)");
       }
-    dataAt_.assign(dataTimes_.size(),
-                   Eigen::VectorXd::Zero(static_cast<Eigen::Index>(c.nodes.size())));
-    for (std::size_t j = 0; j < dataTimes_.size(); ++j)
-      for (std::size_t k = 0; k < c.nodes.size(); ++k) {
-        if (!on_[k]) continue;
-        double best = std::numeric_limits<double>::infinity();
-        for (const DataRow& r : dataRows_[j]) {
-          const double d2 = (r.x - Point(c.nodes[k].position)).squaredNorm();
-          if (d2 < best) best = d2, dataAt_[j][static_cast<Eigen::Index>(k)] = r.p;
-        }
-      }
+    std::vector<Point> x;
+    for (const ControlNode& n : c.nodes) x.push_back(n.position);
+    dataAt_ = data_.nearestValues(x);
   }
 
   /// Node k's data at time t: linear between the listed times, constant beyond them.
   double dataAt(std::size_t k, double t) const {
     const Eigen::Index i = static_cast<Eigen::Index>(k);
-    if (t <= dataTimes_.front()) return dataAt_.front()[i];
-    if (t >= dataTimes_.back()) return dataAt_.back()[i];
-    const std::size_t j = static_cast<std::size_t>(
-        std::upper_bound(dataTimes_.begin(), dataTimes_.end(), t) - dataTimes_.begin());
-    const double a = dataAt_[j - 1][i], b = dataAt_[j][i];
-    return a + (t - dataTimes_[j - 1]) / (dataTimes_[j] - dataTimes_[j - 1]) * (b - a);
+    const PointData::Bracket b = data_.bracket(t);
+    const double lower = dataAt_[b.lower][i], upper = dataAt_[b.upper][i];
+    return b.weight == 0.0 ? lower : lower + b.weight * (upper - lower);
   }
 
-  struct DataRow {
-    Point x;
-    double p;
-    int line;
-  };
-  std::string dataFile_;
-  std::vector<double> dataTimes_;               ///< [s], increasing
-  std::vector<std::vector<DataRow>> dataRows_;  ///< per time
-  std::vector<Eigen::VectorXd> dataAt_;         ///< per time, per control node [Pa]
+  PointData data_;                       ///< `data "file";`: Δp at points at listed times
+  std::vector<Eigen::VectorXd> dataAt_;  ///< per listed time, per control node [Pa]
 
   static std::string describePoint(const Point& x) {
     std::ostringstream s;

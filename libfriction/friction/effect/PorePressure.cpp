@@ -12,6 +12,7 @@
 #include "friction/effect/Effect.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fe/MaterialMap.hpp"
+#include "friction/flow/PointData.hpp"
 #include "friction/fracture/FractureSystem.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/law/FrictionField.hpp"
@@ -55,10 +56,16 @@ class PorePressure : public Effect {
                             TimeFunction::read(entries.subDict(key), "change", 1), -1});
       }
     }
+    if (d.found("data")) {
+      data_ = PointData::read(d, "data", caseDir, dim, "p", "pressure change [Pa]");
+      maxDistance_ = d.getScalarOr("maxDistance", -1.0, Bounds::positive());
+    }
   }
   std::string type() const override { return "porePressure"; }
   bool givesFracturePressure() const override { return true; }
-  bool givesStressOffset() const override { return change_.components() > 0 || !regions_.empty(); }
+  bool givesStressOffset() const override {
+    return change_.components() > 0 || !regions_.empty() || !data_.empty();
+  }
 
   std::string describe() const override {
     std::ostringstream s;
@@ -69,6 +76,7 @@ class PorePressure : public Effect {
     };
     if (change_.components() > 0) s << ", everywhere " << form(change_);
     for (const RegionChange& r : regions_) s << ", in region " << r.key << " " << form(r.change);
+    if (!data_.empty()) s << ", " << data_.describe();
     s << "; one way (the pressure is given); the fractures without a pressure of their own "
          "take p_b";
     return s.str();
@@ -89,6 +97,7 @@ class PorePressure : public Effect {
     for (std::size_t c = 0; c < mesh.cellRegion.size(); ++c)
       for (std::size_t i = 0; i < regions_.size(); ++i)
         if (mesh.cellRegion[c] == regions_[i].number) cellChange_[c] = static_cast<int>(i);
+    if (!data_.empty()) setData(mesh);
   }
 
   void bind(const EffectContext& c) override {
@@ -104,6 +113,11 @@ class PorePressure : public Effect {
         regionLoad_.push_back(assembler_->pressureLoad([this, i](Index cell, const Point&) {
           return cellChange_[static_cast<std::size_t>(cell)] == static_cast<int>(i) ? alpha_ : 0.0;
         }));
+      // The data's loads, one per listed time (the load is linear in Δp_b).
+      dataLoad_.clear();
+      for (const Eigen::VectorXd& v : cellData_)
+        dataLoad_.push_back(assembler_->pressureLoad(
+            [this, &v](Index cell, const Point&) { return alpha_ * v[cell]; }));
     }
     bindFractures(c);
   }
@@ -117,6 +131,14 @@ class PorePressure : public Effect {
       const double dp = regions_[i].change(t)[0];
       if (dp != 0.0) F += dp * regionLoad_[i];
     }
+    if (!dataLoad_.empty()) {
+      const PointData::Bracket b = data_.bracket(t);
+      const Eigen::VectorXd& lower = dataLoad_[b.lower];
+      if (b.weight == 0.0)
+        F += lower;
+      else
+        F += lower + b.weight * (dataLoad_[b.upper] - lower);
+    }
   }
 
   void addFracturePressure(const std::vector<ControlNode>& nodes, const std::vector<std::string>&,
@@ -125,11 +147,16 @@ class PorePressure : public Effect {
     Eigen::VectorXd region(static_cast<Eigen::Index>(regions_.size()));
     for (std::size_t i = 0; i < regions_.size(); ++i)
       region[static_cast<Eigen::Index>(i)] = regions_[i].change(t)[0];
+    const PointData::Bracket b = data_.bracket(t);
     for (std::size_t k = 0; k < nodes.size() && k < on_.size(); ++k) {
       if (!on_[k]) continue;
       const Eigen::Index i = static_cast<Eigen::Index>(k);
       p[i] += initialAt_[i] + everywhere;
       if (regions_.size()) p[i] += regionWeight_.row(i).dot(region);
+      if (!nodeData_.empty()) {
+        const double lower = nodeData_[b.lower][i], upper = nodeData_[b.upper][i];
+        p[i] += lower + b.weight * (upper - lower);
+      }
     }
   }
 
@@ -161,11 +188,56 @@ class PorePressure : public Effect {
     const std::size_t c = static_cast<std::size_t>(cell);
     if (c < cellChange_.size() && cellChange_[c] >= 0)
       dp += regions_[static_cast<std::size_t>(cellChange_[c])].change(t)[0];
+    if (!cellData_.empty()) {
+      const PointData::Bracket b = data_.bracket(t);
+      const double lower = cellData_[b.lower][cell], upper = cellData_[b.upper][cell];
+      dp += lower + b.weight * (upper - lower);
+    }
     return dp;
   }
 
-  /// p_b0 at the control nodes of the fractures without a pressure of their own, and the
-  /// weights of the regions' changes there.
+  /// The data's Δp_b per cell and listed time: the value of the nearest row to the cell's
+  /// centroid. A row farther than maxDistance from every centroid lies outside the body (a file
+  /// in other units or coordinates): refused naming its line.
+  void setData(const Mesh& mesh) {
+    std::vector<Point> centroid(static_cast<std::size_t>(mesh.numCells()), Point::Zero());
+    double diameter = 0;  // the largest cell's: its longest edge
+    for (Index c = 0; c < mesh.numCells(); ++c) {
+      const auto v = mesh.cell(c);
+      for (Index a : v) {
+        const Point& x = mesh.points[static_cast<std::size_t>(a)];
+        centroid[static_cast<std::size_t>(c)] += x / static_cast<double>(v.size());
+        for (Index b : v)
+          diameter = std::max(diameter, (x - mesh.points[static_cast<std::size_t>(b)]).norm());
+      }
+    }
+    // Every point of a cell lies within its diameter of its centroid, so a row inside the body
+    // is never refused by the default.
+    const double maxDistance = maxDistance_ > 0 ? maxDistance_ : diameter;
+    const NearestPoint cells(centroid);
+    for (std::size_t j = 0; j < data_.times().size(); ++j)
+      for (const PointData::Row& r : data_.rows(j)) {
+        double d2 = 0;
+        const std::size_t c = cells.nearest(r.x, d2);
+        if (std::sqrt(d2) > maxDistance)
+          data_.fail(r, "the point " + pointText(r.x) + " is " + formatNumber(std::sqrt(d2)) +
+                            " m from the nearest cell centroid (at " + pointText(centroid[c]) +
+                            "): data rows must lie in the body, within maxDistance " +
+                            formatNumber(maxDistance) +
+                            " m (default: the mesh's largest cell diameter); check the file's "
+                            "units and coordinates");
+      }
+    cellData_ = data_.nearestValues(centroid);
+  }
+
+  static std::string pointText(const Point& x) {
+    std::ostringstream s;
+    s << "(" << x.x() << " " << x.y() << " " << x.z() << ")";
+    return s.str();
+  }
+
+  /// p_b0 at the control nodes of the fractures without a pressure of their own, the weights of
+  /// the regions' changes there, and the data's Δp_b there per listed time.
   void bindFractures(const EffectContext& c) {
     const std::size_t n = c.nodes.size();
     on_.assign(n, 0);
@@ -188,10 +260,11 @@ class PorePressure : public Effect {
               << v.size() << " nodes\n";
     }
     // Weights: the share of each region's cells in the measure of the cells around a node (on
-    // either side: the Ω⁺ and Ω⁻ copies).
+    // either side: the Ω⁺ and Ω⁻ copies); the data's Δp_b is the mean over them by measure.
     regionWeight_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n),
                                           static_cast<Eigen::Index>(regions_.size()));
-    if (regions_.empty() || !assembler_) return;
+    nodeData_.assign(cellData_.size(), Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n)));
+    if ((regions_.empty() && cellData_.empty()) || !assembler_) return;
     const LagrangeSpace& V = assembler_->space();
     std::vector<Index> control(static_cast<std::size_t>(V.numNodes()), -1);
     for (std::size_t k = 0; k < n; ++k)
@@ -209,10 +282,15 @@ class PorePressure : public Effect {
         if (k < 0) continue;
         total[k] += measure;
         if (r >= 0) regionWeight_(k, r) += measure;
+        for (std::size_t j = 0; j < cellData_.size(); ++j)
+          nodeData_[j][k] += measure * cellData_[j][cell];
       }
     }
     for (Eigen::Index k = 0; k < regionWeight_.rows(); ++k)
-      if (total[k] > 0) regionWeight_.row(k) /= total[k];
+      if (total[k] > 0) {
+        regionWeight_.row(k) /= total[k];
+        for (Eigen::VectorXd& v : nodeData_) v[k] /= total[k];
+      }
   }
 
   int dim_ = 2;
@@ -228,6 +306,11 @@ class PorePressure : public Effect {
   std::vector<char> on_;                     ///< per control node: it takes p_b
   Eigen::VectorXd initialAt_;                ///< p_b0 per control node [Pa]
   Eigen::MatrixXd regionWeight_;             ///< per control node and region entry
+  PointData data_;                           ///< `data "file";`: Δp_b at points at listed times
+  double maxDistance_ = -1;                  ///< [m]; < 0: the largest cell diameter
+  std::vector<Eigen::VectorXd> cellData_;    ///< per listed time, Δp_b per cell [Pa]
+  std::vector<Eigen::VectorXd> dataLoad_;    ///< per listed time, ∫ α_B Δp_b div φ_i
+  std::vector<Eigen::VectorXd> nodeData_;    ///< per listed time, Δp_b per control node [Pa]
 };
 
 }  // namespace

@@ -8,11 +8,14 @@
 //  * The fracture pressure: p_b0 + Δp_b at the nodes of fractures without a pressure of their
 //    own, Δp_b of a region weighted by the measure of its cells around the node.
 //  * Bad keys are InputErrors naming them.
+//  * `data`: Δp_b at points at listed times gives the answers of `change` and `regions` when it
+//    holds their values; far and malformed rows are refused naming the file and line.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <sstream>
 #include <string>
 
+#include "../dict/DictTestSupport.hpp"
 #include "../fe/FeTestMeshes.hpp"
 #include "friction/core/InputError.hpp"
 #include "friction/dict/Dictionary.hpp"
@@ -30,17 +33,19 @@ namespace {
 const std::vector<std::string> kNoFractures;
 
 std::unique_ptr<Effect> effect(const std::string& text, int dim,
-                               const std::vector<std::string>& fractures = kNoFractures) {
+                               const std::vector<std::string>& fractures = kNoFractures,
+                               const std::string& caseDir = ".") {
   const Dictionary d = Dictionary::parse(text, "constant/effects");
-  auto e = Effect::New("rock", d, fractures, ".", dim);
+  auto e = Effect::New("rock", d, fractures, caseDir, dim);
   d.checkAllRead();
   return e;
 }
 
 /// The message of the InputError the effect's dictionary (and setMesh, on `mesh`) raises.
-std::string errorOf(const std::string& text, const Mesh* mesh = nullptr) {
+std::string errorOf(const std::string& text, const Mesh* mesh = nullptr,
+                    const std::string& caseDir = ".") {
   try {
-    auto e = effect(text, 2);
+    auto e = effect(text, 2, kNoFractures, caseDir);
     if (mesh) e->setMesh(*mesh);
   } catch (const InputError& e) {
     return e.what();
@@ -56,12 +61,13 @@ struct Confined {
   int cells = 0;
 };
 Confined confinedLayer(int dim, int degree, const Material& material, const std::string& text,
-                       const Eigen::Vector3d& exact) {
+                       const Eigen::Vector3d& exact, const std::string& caseDir = ".") {
   SplitMesh split;
   split.mesh = dim == 2 ? test::unitSquareMesh(4, 0.3) : test::unitCubeMesh(3, 0.3);
   const LagrangeSpace V(split.mesh, degree);
   const ElasticityAssembler a(V, material);
-  auto e = effect(text, dim);
+  auto e = effect(text, dim, kNoFractures, caseDir);
+  e->setMesh(split.mesh);
   std::ostringstream log;
   const std::vector<ControlNode> nodes;
   e->bind(EffectContext{split, nodes, kNoFractures, log, &a});
@@ -96,6 +102,26 @@ Confined confinedLayer(int dim, int degree, const Material& material, const std:
     ++result.cells;
   }
   return result;
+}
+
+/// Rows "t x y [z] p" of a uniform value at each listed time, on a grid of 3 points per side
+/// of the unit square or cube (corners included: inside the body).
+std::string uniformRows(int dim, const std::vector<std::pair<double, double>>& table) {
+  std::ostringstream s;
+  s << "# t x y" << (dim == 3 ? " z" : "") << " p\n";
+  for (const auto& [t, p] : table)
+    for (int i = 0; i < (dim == 3 ? 27 : 9); ++i) {
+      s << t << " " << (i % 3) * 0.5 << " " << (i / 3 % 3) * 0.5;
+      if (dim == 3) s << " " << (i / 9) * 0.5;
+      s << " " << p << "\n";
+    }
+  return s.str();
+}
+
+Point centroidOf(const Mesh& m, Index c) {
+  Point x = Point::Zero();
+  for (Index v : m.cell(c)) x += m.points[static_cast<std::size_t>(v)] / (m.dim + 1);
+  return x;
 }
 
 }  // namespace
@@ -261,4 +287,185 @@ TEST_CASE("porePressure: bad keys are InputErrors naming them", "[effect][porePr
              Catch::Contains("region 1 has two entries, 'reservoir' and 'region1'"));
   CHECK(errorOf("type porePressure; biotCoefficient 1; regions { region2 { change 1; } }",
                 &layered) == "(no InputError)");
+}
+
+TEST_CASE("porePressure: data giving a uniform change at listed times is the change's table",
+          "[effect][porePressure]") {
+  // The same table as `change` (three times; t = 1 lies between the first two): the cells all
+  // take the listed values, so the loads and stress offsets are those of `change` up to the
+  // round-off of scaling the load before or after the assembly (a few ulp of each entry), and
+  // the confined layer meets its known answer as closely as with `change` (see above).
+  dicttest::TempDir dir;
+  const std::vector<std::pair<double, double>> table = {{0, 0}, {2, 4e6}, {4, -1e6}};
+  dir.write("constant/p2.dat", uniformRows(2, table));
+  dir.write("constant/p3.dat", uniformRows(3, table));
+  const std::string change =
+      "type porePressure; biotCoefficient 0.8; change table ((0 0) (2 4e6) (4 -1e6));";
+  const double alpha = 0.8, dp = 2e6, nu = 0.25;
+  const double lateral = -alpha * dp * (1 - 2 * nu) / (1 - nu);
+  const Material strain = Material::fromYoungPoisson(10e9, nu);
+  for (int dim : {2, 3}) {
+    const std::string data = "type porePressure; biotCoefficient 0.8; data \"constant/p" +
+                             std::to_string(dim) + ".dat\";";
+    SplitMesh split;
+    split.mesh = dim == 2 ? test::unitSquareMesh(4, 0.3) : test::unitCubeMesh(3, 0.3);
+    const LagrangeSpace V(split.mesh, 2);
+    const ElasticityAssembler a(V, strain);
+    auto byChange = effect(change, dim);
+    auto byData = effect(data, dim, kNoFractures, dir.path().string());
+    CHECK(byData->givesStressOffset());
+    CHECK_THAT(byData->describe(),
+               Catch::Contains("data from " + (dir.path() / "constant").string() + "/p" +
+                               std::to_string(dim) + ".dat at 3 times"));
+    std::ostringstream log;
+    const std::vector<ControlNode> nodes;
+    for (auto* e : {byChange.get(), byData.get()}) {
+      e->setMesh(split.mesh);
+      e->bind(EffectContext{split, nodes, kNoFractures, log, &a});
+    }
+    for (double t : {-1.0, 1.0, 3.0, 9.0}) {
+      Eigen::VectorXd Fc = Eigen::VectorXd::Zero(V.numDofs()), Fd = Fc;
+      byChange->addLoad(a, t, Fc);
+      byData->addLoad(a, t, Fd);
+      CHECK((Fd - Fc).norm() <= 1e-14 * std::max(Fc.norm(), 1.0));
+      double worst = 0;
+      for (Index c = 0; c < V.numCells(); ++c)
+        worst = std::max(worst, (byData->stressOffset(c, Point::Zero(), t) -
+                                 byChange->stressOffset(c, Point::Zero(), t))
+                                    .cwiseAbs()
+                                    .maxCoeff());
+      CHECK(worst <= 1e-14 * 4e6);
+    }
+    const Confined c =
+        dim == 3 ? confinedLayer(3, 1, strain, data, {lateral, lateral, 0}, dir.path().string())
+                 : confinedLayer(2, 1, strain, data, {lateral, 0, lateral}, dir.path().string());
+    CHECK(c.cells > 20);
+    CHECK(c.worst <= 1e-9 * alpha * dp);
+  }
+}
+
+TEST_CASE("porePressure: data that differ per region give the regions' answer, added to change",
+          "[effect][porePressure]") {
+  dicttest::TempDir dir;
+  SECTION("loads and stresses") {
+    // The two-region square of above; one row per cell at its centroid (a reservoir
+    // simulator's cell-centred export), −4e6 in the reservoir, 0 in the caprock, from t = 1.
+    SplitMesh split;
+    split.mesh = test::unitSquareMesh(6, 0.3);
+    Mesh& m = split.mesh;
+    for (Index c = 0; c < m.numCells(); ++c)
+      m.cellRegion[static_cast<std::size_t>(c)] = centroidOf(m, c).y() < 0.5 ? 1 : 2;
+    m.regionNames = {{1, "reservoir"}, {2, "caprock"}};
+    std::ostringstream rows;
+    rows.precision(17);
+    for (double t : {0.0, 1.0})
+      for (Index c = m.numCells() - 1; c >= 0; --c) {  // any order within a time
+        const Point x = centroidOf(m, c);
+        const bool reservoir = m.cellRegion[static_cast<std::size_t>(c)] == 1;
+        rows << t << " " << x.x() << " " << x.y() << " " << (reservoir ? -4e6 * t : 0.0) << "\n";
+      }
+    dir.write("p.dat", rows.str());
+    const LagrangeSpace V(m, 2);
+    const ElasticityAssembler a(V, Material::fromYoungPoisson(10e9, 0.25));
+    auto byRegions = effect(
+        "type porePressure; biotCoefficient 0.5; regions { reservoir { change table ((0 0) (1 "
+        "-4e6)); } }",
+        2);
+    auto byData = effect("type porePressure; biotCoefficient 0.5; data \"p.dat\";", 2, kNoFractures,
+                         dir.path().string());
+    std::ostringstream log;
+    const std::vector<ControlNode> nodes;
+    for (auto* e : {byRegions.get(), byData.get()}) {
+      e->setMesh(m);
+      e->bind(EffectContext{split, nodes, kNoFractures, log, &a});
+    }
+    for (double t : {0.25, 2.0}) {
+      Eigen::VectorXd Fr = Eigen::VectorXd::Zero(V.numDofs()), Fd = Fr;
+      byRegions->addLoad(a, t, Fr);
+      byData->addLoad(a, t, Fd);
+      CHECK(Fr.norm() > 0);
+      CHECK((Fd - Fr).norm() <= 1e-14 * Fr.norm());
+      for (Index c = 0; c < m.numCells(); ++c)
+        CHECK(byData->stressOffset(c, Point::Zero(), t)(0, 0) ==
+              Approx(byRegions->stressOffset(c, Point::Zero(), t)(0, 0)).margin(1e-14 * 4e6));
+    }
+  }
+  SECTION("fracture pressure") {
+    // The split four-triangle mesh of the fracture test above: region 1 (cells 2, 3) changes by
+    // −6e5 at t = 1, given per cell; both effects add 3e5 everywhere.
+    SplitMesh split;
+    split.mesh = test::splitFourTriangleMesh();
+    std::ostringstream rows;
+    rows.precision(17);
+    for (double t : {0.0, 1.0})
+      for (Index c = 0; c < split.mesh.numCells(); ++c) {
+        const Point x = centroidOf(split.mesh, c);
+        const bool region1 = split.mesh.cellRegion[static_cast<std::size_t>(c)] == 1;
+        rows << t << " " << x.x() << " " << x.y() << " " << (region1 ? -6e5 * t : 0.0) << "\n";
+      }
+    dir.write("p.dat", rows.str());
+    const LagrangeSpace V(split.mesh, 1);
+    const ElasticityAssembler a(V, Material::fromYoungPoisson(10e9, 0.25));
+    const std::vector<std::string> fractures = {"fault"};
+    const std::string common =
+        "type porePressure; biotCoefficient 0.7; initial 1e6; change "
+        "table ((0 0) (1 3e5)); ";
+    auto byRegions =
+        effect(common + "regions { region1 { change table ((0 0) (1 -6e5)); } }", 2, fractures);
+    auto byData = effect(common + "data \"p.dat\";", 2, fractures, dir.path().string());
+    std::vector<ControlNode> nodes(2);
+    nodes[0].plus = 2, nodes[0].minus = 6, nodes[0].position = Point(0, 0.5, 0);
+    nodes[1].plus = 3, nodes[1].minus = 7, nodes[1].position = Point(1, 0.5, 0);
+    std::ostringstream log;
+    Eigen::VectorXd pr = Eigen::VectorXd::Zero(2), pd = pr;
+    byRegions->bind(EffectContext{split, nodes, fractures, log, &a, {0}});
+    byData->bind(EffectContext{split, nodes, fractures, log, &a, {0}});
+    byRegions->addFracturePressure(nodes, fractures, 0.5, pr);
+    byData->addFracturePressure(nodes, fractures, 0.5, pd);
+    // Region 1 weighs 2/3 at (0, ½) and 1/3 at (1, ½) (the fracture test above).
+    CHECK(pr[0] == Approx(1e6 + 1.5e5 - 2.0 / 3 * 3e5).epsilon(1e-14));
+    CHECK(pd[0] == Approx(pr[0]).epsilon(1e-14));
+    CHECK(pd[1] == Approx(pr[1]).epsilon(1e-14));
+    CHECK(pd[1] != Approx(pd[0]));
+  }
+}
+
+TEST_CASE("porePressure: data rows outside the body or malformed are refused naming the line",
+          "[effect][porePressure]") {
+  dicttest::TempDir dir;
+  const Mesh square = test::unitSquareMesh(4);  // cells of diameter √2/4 ≈ 0.354 m
+  const std::string file = (dir.path() / "p.dat").string();
+  const std::string key = "type porePressure; biotCoefficient 1; data \"p.dat\";";
+  const auto errorFor = [&](const std::string& rows, const std::string& extra = "") {
+    dir.write("p.dat", rows);
+    return errorOf(key + extra, &square, dir.path().string());
+  };
+  // Inside, and on the boundary: accepted.
+  CHECK(errorFor("0 0 0 1\n0 1 1 2\n1 0.5 0.5 3\n") == "(no InputError)");
+  // 3 m above the square (the wrong unit or origin): refused at its line, by default and
+  // within an explicit maxDistance; a larger maxDistance lets it pass.
+  const std::string far = "0 0.5 0.5 1\n# a comment\n0 0.5 3 2\n";
+  CHECK_THAT(errorFor(far), Catch::StartsWith(file + ":3: the point (0.5 3 0) is ") &&
+                                Catch::Contains("m from the nearest cell centroid") &&
+                                Catch::Contains("data rows must lie in the body") &&
+                                Catch::Contains("default: the mesh's largest cell diameter"));
+  CHECK_THAT(errorFor(far, " maxDistance 1;"),
+             Catch::StartsWith(file + ":3:") && Catch::Contains("within maxDistance 1 m"));
+  CHECK(errorFor(far, " maxDistance 5;") == "(no InputError)");
+  // Malformed rows.
+  CHECK_THAT(errorFor("0 0.5 0.5 1\n0 0.5 0.5\n"),
+             Catch::StartsWith(file + ":2: expected four numbers 't x y p' (time [s], position "
+                                      "[m], pressure change [Pa]), got '0 0.5 0.5' (3 items)"));
+  CHECK_THAT(errorFor("0 0.5 0.5 1\n1 0.5 abc 1\n"),
+             Catch::StartsWith(file + ":2: expected four numbers") &&
+                 Catch::Contains("'abc' is not a number"));
+  CHECK_THAT(errorFor("1 0.5 0.5 1\n0 0.5 0.5 1\n"),
+             Catch::StartsWith(file + ":2: time 0 before the previous row's 1"));
+  CHECK_THAT(errorFor("# nothing\n"), Catch::StartsWith(file + ": no rows"));
+  // A missing file: at the key.
+  CHECK_THAT(errorOf("type porePressure; biotCoefficient 1;\ndata \"none.dat\";", &square,
+                     dir.path().string()),
+             Catch::StartsWith("constant/effects:2") && Catch::Contains("none.dat"));
+  CHECK_THAT(errorOf("type porePressure; biotCoefficient 1; maxDistance 1;"),
+             Catch::Contains("maxDistance"));
 }
