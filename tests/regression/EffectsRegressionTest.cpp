@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "CaseRunner.hpp"
@@ -212,4 +213,73 @@ TEST_CASE("steps whose loads did not change reuse the previous solution", "[regr
   stuck.edit("constant/fractureProperties", "frictionCoefficient 0.2;", "frictionCoefficient 2;");
   REQUIRE(stuck.solve() == 0);
   CHECK_THAT(stuck.log(), Catch::Contains("iterations 0 "));
+}
+
+TEST_CASE("steps whose fault pressure did not change reuse the previous solution",
+          "[regression][effects]") {
+  // The inclined crack's load ramped to t = 0.5 and then held, steps of 0.25. A faultPressure
+  // whose field is constant in time (`initial` alone) leaves the steps after 0.5 nothing new:
+  // 0.75 and 1 reuse 0.5's answer. One whose change goes on to t = 0.75 makes 0.75 a new
+  // step (solved) and only 1 a reused one: the pressure is part of what is compared.
+  const auto run = [](const std::string& label, const std::string& fluid) {
+    auto c = std::make_unique<Case>("inclinedCrack", label);
+    c->edit("0/D", "\\(1 1e7\\)", "(0.5 1e7)");
+    c->edit("system/controlDict", "deltaT +1;", "deltaT 0.25;");
+    writeText(c->dir() / "constant" / "effects",
+              std::string(kEffectsHeader) + "fluid { type faultPressure; fracture crack; " + fluid +
+                  " }\n");
+    const int rc = c->solve();
+    INFO(c->log());
+    REQUIRE(rc == 0);
+    return c;
+  };
+  // The times whose step reused the previous answer, from the log's step lines.
+  const auto reusedTimes = [](const Case& c) {
+    std::vector<std::string> times;
+    std::istringstream in(c.log());
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("Time = ", 0) != 0) continue;
+      INFO(line);
+      CHECK_THAT(line, Catch::Contains(" converged"));
+      if (line.find("loads unchanged: previous solution reused") == std::string::npos) continue;
+      CHECK_THAT(line, Catch::Contains("iterations 0 ") && Catch::Contains("backSubstitutions 0 "));
+      times.push_back(line.substr(7, line.find(' ', 7) - 7));
+    }
+    return times;
+  };
+  // The columns a reused step keeps: every one but slipIncrement (0 after a reused step).
+  const auto sameState = [](const Case& c, const std::string& a, const std::string& b) {
+    const Table x = c.namedTable(a, "crack"), y = c.namedTable(b, "crack");
+    REQUIRE(x.rows.size() == y.rows.size());
+    REQUIRE(x.columns == y.columns);
+    int slipping = 0;
+    for (std::size_t i = 0; i < x.rows.size(); ++i) {
+      CHECK(x.state[i] == y.state[i]);
+      slipping += x.state[i] == "slip";
+      for (const char* col : {"slip", "sigmaN", "tau", "pressure", "sigmaNEffective"}) {
+        const double u = x.at(i, col), v = y.at(i, col);
+        CHECK(((std::isnan(u) && std::isnan(v)) || u == v));
+      }
+      CHECK(y.at(i, "slipIncrement") == 0.0);
+    }
+    CHECK(slipping > 0);  // the crack slips: the reused answer is not a trivial one
+  };
+
+  const auto constant = run("effects-constant-pressure", "initial 1e6;");
+  CHECK(reusedTimes(*constant) == std::vector<std::string>{"0.75", "1"});
+  sameState(*constant, "0.5", "1");
+  CHECK(constant->namedTable("1", "crack").at(1, "pressure") == 1e6);
+
+  const auto ending =
+      run("effects-ending-pressure", "initial 1e6; change table ((0 0) (0.75 5e5));");
+  CHECK(reusedTimes(*ending) == std::vector<std::string>{"1"});
+  sameState(*ending, "0.75", "1");
+  CHECK(ending->namedTable("1", "crack").at(1, "pressure") == 1.5e6);
+  // 0.75 had a new pressure, so a new answer: the crack slipped further.
+  const Table before = ending->namedTable("0.5", "crack"),
+              after = ending->namedTable("0.75", "crack");
+  double grew = 0;
+  for (std::size_t i = 0; i < after.rows.size(); ++i)
+    grew = std::max(grew, std::abs(after.at(i, "slip")) - std::abs(before.at(i, "slip")));
+  CHECK(grew > 0);
 }

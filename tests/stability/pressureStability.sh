@@ -12,7 +12,12 @@
 #     (slip, then open) never shrinks;
 #  4. an opening (unilateral) at the well while the neighbouring part slips: both states
 #     present in one step;
-#  5. a pressure front crossing a junction (cases/fractureNetwork).
+#  5. a pressure front crossing a junction (cases/fractureNetwork);
+#  6. a well on a Dirichlet patch: the fault reaches the held outer boundary (one end there,
+#     or both: it crosses the body), 5 MPa held at (or one node from) that boundary, computed
+#     by diffusion: the pressure within [0, 5 MPa] and falling away from the well, the jump
+#     held at zero on the boundary, Coulomb elsewhere, slip of one sign near the well only and
+#     never shrinking.
 # Usage: pressureStability.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$1 src=$2 work=$3
@@ -23,10 +28,10 @@ cp -r "$src/cases/viescaInjection" "$work/base"
 fail() { echo "FAIL [pressureStability]: $*"; exit 1; }
 
 # A copy of the base case with the given effects' fluid entry and controlDict time keys.
-make() {  # make NAME FLUID_BODY TIME_KEYS [CONTACT]
-  local d=$work/$1
+make() {  # make NAME FLUID_BODY TIME_KEYS [CONTACT]   (BASE=folder: another base case)
+  local d=$work/$1 b=${BASE:-$work/base}
   mkdir -p "$d"
-  cp -r "$work/base/0" "$work/base/constant" "$work/base/system" "$d"/
+  cp -r "$b/0" "$b/constant" "$b/system" "$d"/
   /usr/bin/python3 - "$d/constant/effects" "$2" <<'PY'
 import sys, re
 path, body = sys.argv[1], sys.argv[2]
@@ -169,4 +174,107 @@ values = at["faultA"] + at["faultB"]
 assert max(values) - min(values) <= 1e-9 * max(values), values
 print(f"PASS: junctionFront: one pressure at the junction ({values[0]:.6g} Pa in {len(values)} rows), faultA pressurised on both sides")
 PY
-echo "PASS: pressure stability, 7 runs"
+
+# 6. A well on a Dirichlet patch. The base case's dictionaries on a square [-15, 15]^2 held on
+#    every side (0/D), its right side (and left, for the crossing fault) cut at y = 0 where the
+#    fault meets it, the fault from (xl, 0) to (15, 0) (xl = -10: a tip inside; xl = -15: it
+#    crosses the body, which it cuts in two held halves), h = 0.2 m along it.
+edgeMesh() {  # edgeMesh FOLDER XL
+  mkdir -p "$1/constant/mesh"
+  cp -r "$work/base/0" "$work/base/system" "$1"/
+  cp "$work/base/constant/"*Properties "$work/base/constant/effects" "$1/constant/"
+  cat >"$1/constant/mesh/edge.geo" <<'GEO'
+DefineConstant[ W = 15, xl = -10, h = 0.2, hFar = 3 ];
+General.NumThreads = 1;
+Mesh.RandomSeed = 1;
+Mesh.Algorithm = 6;
+Mesh.MeshSizeExtendFromBoundary = 0;
+Mesh.MeshSizeFromPoints = 0;
+Mesh.MeshSizeFromCurvature = 0;
+Point(1) = {-W, -W, 0}; Point(2) = {W, -W, 0}; Point(3) = {W, 0, 0};
+Point(4) = {W, W, 0}; Point(5) = {-W, W, 0}; Point(6) = {-W, 0, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5}; Line(5) = {5, 6};
+Line(6) = {6, 1};
+Curve Loop(1) = {1, 2, 3, 4, 5, 6}; Plane Surface(1) = {1};
+If (xl > -W)
+  Point(7) = {xl, 0, 0};
+  Line(7) = {7, 3};
+Else
+  Line(7) = {6, 3};
+EndIf
+Transfinite Curve{7} = Round((W - xl)/h) + 1;
+Curve{7} In Surface{1};
+Field[1] = Distance;
+Field[1].CurvesList = {7};
+Field[1].NumPointsPerCurve = 4*Round((W - xl)/h) + 1;
+Field[2] = Threshold;
+Field[2].InField = 1;
+Field[2].SizeMin = h;
+Field[2].SizeMax = hFar;
+Field[2].DistMin = 4*h;
+Field[2].DistMax = W/2;
+Background Field = 2;
+Physical Curve("bottom", 1) = {1};
+Physical Curve("right", 2) = {2, 3};
+Physical Curve("top", 3) = {4};
+Physical Curve("left", 4) = {5, 6};
+Physical Curve("fault", 5) = {7};
+Physical Surface("body", 1) = {1};
+GEO
+  (cd "$1/constant/mesh" && gmsh -2 -format msh41 -setnumber xl "$2" edge.geo -o viesca.msh \
+    >"$1/log.gmsh" 2>&1) || fail "gmsh: $(tail -n 3 "$1/log.gmsh")"
+}
+edgeMesh "$work/edgeTouch" -10
+edgeMesh "$work/edgeCross" -15
+# Per written time t (0.25, 0.5, 1 s): the pressure, from backward Euler with a lumped mass on
+# a chain of segments (a discrete maximum principle), lies in [0, 5 MPa], is 5 MPa at the well
+# and falls away from it; the nodes on the held sides (|x| = 15) keep a zero jump; every other
+# inner node meets Coulomb (|tau| <= mu |sigma'_n|, equal where it slips) under compression
+# (5 MPa < sigma'_0 = 10 MPa: nothing opens); the slipping nodes lie within the rupture of a
+# held pressure (2 lambda(0.1) sqrt(4 alpha t), the bound of run 2), all slip one way (tau_0
+# drives it) and no node's slip shrinks from one time to the next (the pressure only rises).
+edgeChecks='
+mu, dp = 0.6, 5e6
+maxSlip = max(abs(float(r["slip"])) for _, rows in tables for r in rows)
+assert maxSlip > 0, "no slip at all"
+previous = None
+for name, rows in tables:
+    t = float(name)
+    dist = [abs(float(r["x"]) - well[0]) for r in rows]
+    p = [float(r["pressure"]) for r in rows]
+    iw = min(range(len(rows)), key=lambda i: dist[i])
+    assert dist[iw] < 1e-9 and abs(p[iw] - dp) <= 1e-9 * dp, (name, rows[iw])
+    assert all(-1e-9 * dp <= v <= dp * (1 + 1e-12) for v in p), (name, min(p), max(p))
+    order = sorted(range(len(rows)), key=lambda i: dist[i])
+    assert all(p[b] <= p[a] + 1e-9 * dp for a, b in zip(order, order[1:])), (name, "p rises away from the well")
+    held = [r for r in rows if abs(abs(float(r["x"])) - 15) < 1e-9]
+    assert held and all(float(r["slip"]) == 0 and r["state"] == "stick" for r in held), (name, held)
+    slipping = [r for r in rows if r["state"] == "slip"]
+    assert len(slipping) >= 3, (name, states(rows))
+    for r in rows:
+        if r["state"] == "tip" or r in held:
+            continue
+        sn, tau = float(r["sigmaNEffective"]), abs(float(r["tau"]))
+        assert sn < 0 and tau <= mu * -sn * (1 + 1e-6), (name, r)
+        if r["state"] == "slip":
+            assert abs(tau - mu * -sn) <= 1e-6 * mu * -sn, (name, r)
+    reach = 2 * 3.6405 * (4 * 1.0 * t) ** 0.5
+    assert all(abs(float(r["x"]) - well[0]) <= reach for r in slipping), (name, reach)
+    signs = {float(r["slip"]) > 0 for r in rows if abs(float(r["slip"])) > 1e-9 * maxSlip}
+    assert len(signs) == 1, (name, "slip of both signs")
+    slip = {r["x"]: abs(float(r["slip"])) for r in rows}
+    if previous:
+        assert all(slip[x] >= previous[x] - 1e-9 * maxSlip for x in slip), (name, "slip shrank")
+    previous = slip
+'
+for run in "atBoundary edgeTouch (15 0)" "nextToBoundary edgeCross (-14.8 0)"; do
+  read -r name base well <<<"$run"
+  BASE=$work/$base make "$name" "    type faultPressure; fracture fault; initial 0;
+    model diffusion; storage 1e-9; transmissivity 1e-9;
+    wells { edge { position $well; pressure 5e6; } }" "times (0.25 0.5 1);"
+  grep -q "fracture node(s) lie on a Dirichlet patch: their jump is held at zero" \
+    "$work/$name/log.frictionSolver" || fail "$name: no note of the fault's nodes on the held patch"
+  check "$name" "well = tuple(float(v) for v in '$well'.strip('()').split())
+$edgeChecks"
+done
+echo "PASS: pressure stability, 9 runs"

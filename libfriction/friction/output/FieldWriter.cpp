@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <Eigen/Geometry>
+
 #include "friction/core/AtomicFile.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 #include "friction/fracture/SignConventions.hpp"
@@ -69,6 +71,17 @@ void strikeDipBasis(const Eigen::Vector3d& n, Eigen::Vector3d& strike, Eigen::Ve
   strike = Eigen::Vector3d(-dip.y(), dip.x(), 0).normalized();
 }
 
+std::array<double, 4> strikeDipValues(const FractureRow& r) {
+  Eigen::Vector3d strike, dip;
+  strikeDipBasis(r.normal, strike, dip);
+  // Ω⁺ is the hanging wall when n_Γ (from Ω⁺ to Ω⁻) points away from it: the jump and the
+  // traction are then the hanging wall's; else both change sign.
+  const double side = r.normal.dot(dip.cross(strike)) < 0 ? 1.0 : -1.0;
+  const Eigen::Vector3d slip = side * (r.slip[0] * r.tangent[0] + r.slip[1] * r.tangent[1]);
+  const Eigen::Vector3d tau = side * (r.tau[0] * r.tangent[0] + r.tau[1] * r.tangent[1]);
+  return {slip.dot(strike), slip.dot(dip), tau.dot(strike), tau.dot(dip)};
+}
+
 std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
   std::vector<double> v;
   if (dim != 3) {
@@ -102,17 +115,8 @@ std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
     v.push_back(r.pressure);
     v.push_back(r.sigmaNEffective);
     v.push_back(r.deltaCFS);
-    if (dim == 3) {
-      // The slip and τ on the fault's strike and down-dip directions (strikeDipBasis()).
-      Eigen::Vector3d strike, dip;
-      strikeDipBasis(r.normal, strike, dip);
-      const Eigen::Vector3d slip = r.slip[0] * r.tangent[0] + r.slip[1] * r.tangent[1];
-      const Eigen::Vector3d tau = r.tau[0] * r.tangent[0] + r.tau[1] * r.tangent[1];
-      v.push_back(slip.dot(strike));
-      v.push_back(slip.dot(dip));
-      v.push_back(tau.dot(strike));
-      v.push_back(tau.dot(dip));
-    }
+    if (dim == 3)  // the hanging wall's slip and τ on strike and down dip
+      for (const double x : strikeDipValues(r)) v.push_back(x);
   }
   return v;
 }

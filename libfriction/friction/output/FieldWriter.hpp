@@ -18,7 +18,7 @@
 //    comes before "state", in 2D and 3D; with a fluid pressure (fracturePressure,
 //    faultPressure), "pressure sigmaNEffective deltaCFS" (p, σ'_n = σ_n + p and the Coulomb
 //    failure stress change [Pa]) come after it, and in 3D "slipStrike slipDip tauStrike
-//    tauDip" (strikeDipBasis()).
+//    tauDip" (strikeDipValues()).
 #pragma once
 
 #include <array>
@@ -68,6 +68,16 @@ struct FractureRow {
 /// fault (|n_z| ≥ 1 − 1e-12) has neither: strike = e_x and dip = −e_y (rules stated in the
 /// README).
 void strikeDipBasis(const Eigen::Vector3d& n, Eigen::Vector3d& strike, Eigen::Vector3d& dip);
+
+/// The slip and τ of a 3D row on strikeDipBasis(row.normal): {slipStrike, slipDip, tauStrike,
+/// tauDip}, those of the hanging wall, whichever side n_Γ points to. The row's jump is Ω⁺
+/// minus Ω⁻ and its τ the traction on Ω⁺ (n_Γ points from Ω⁺ to Ω⁻), so they change sign with
+/// the side the splitting's orientation rule picks (which a rotation of the body can change);
+/// here they are the slip of the hanging wall relative to the footwall and the traction on
+/// the hanging wall. The hanging wall is the side dip × strike points to: the one above a
+/// dipping or horizontal fault, the one to the right of strike (seen from above) of a vertical
+/// fault.
+std::array<double, 4> strikeDipValues(const FractureRow& row);
 
 /// The numbers of a fracture table's row, in the file's order (the header comment above),
 /// without the state: 2D s x y slip slipIncrement sigmaN tau ST residual; 3D x y z nx ny nz

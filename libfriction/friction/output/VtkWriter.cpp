@@ -467,20 +467,12 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
     rowArray(sink, s, "sigmaNEffective", rows,
              [](const FractureRow& r) { return r.sigmaNEffective; });
     rowArray(sink, s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
-    // The slip and τ along strike and down dip (strikeDipBasis(), FieldWriter.hpp).
-    const auto along = [](const FractureRow& r, const std::array<double, 2>& v, bool dipward) {
-      Eigen::Vector3d strike, dip;
-      strikeDipBasis(r.normal, strike, dip);
-      const Eigen::Vector3d x = v[0] * r.tangent[0] + v[1] * r.tangent[1];
-      return x.dot(dipward ? dip : strike);
-    };
-    rowArray(sink, s, "slipStrike", rows,
-             [&](const FractureRow& r) { return along(r, r.slip, false); });
-    rowArray(sink, s, "slipDip", rows,
-             [&](const FractureRow& r) { return along(r, r.slip, true); });
-    rowArray(sink, s, "tauStrike", rows,
-             [&](const FractureRow& r) { return along(r, r.tau, false); });
-    rowArray(sink, s, "tauDip", rows, [&](const FractureRow& r) { return along(r, r.tau, true); });
+    // The hanging wall's slip and τ along strike and down dip (strikeDipValues(),
+    // FieldWriter.hpp), as in the tables.
+    const char* names[] = {"slipStrike", "slipDip", "tauStrike", "tauDip"};
+    for (std::size_t c = 0; c < 4; ++c)
+      rowArray(sink, s, names[c], rows,
+               [c](const FractureRow& r) { return strikeDipValues(r)[c]; });
   }
   stateArray(sink, s, rows);
   s << "      </PointData>\n";

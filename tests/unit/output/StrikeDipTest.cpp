@@ -1,10 +1,12 @@
 // strikeDipBasis (FieldWriter.hpp): the strike is horizontal and in the fault plane, the dip
 // points down the plane, both unit and orthogonal to each other and to n, and do not depend
 // on which side n points to (the fault dips to the strike's right); a horizontal fault takes
-// the stated rule (strike = x, dip = −y).
+// the stated rule (strike = x, dip = −y). strikeDipValues: the hanging wall's slip and τ on
+// that basis, the same whichever side n_Γ points to.
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "friction/fracture/SignConventions.hpp"
 #include "friction/output/FieldWriter.hpp"
 
 using namespace friction;
@@ -57,4 +59,61 @@ TEST_CASE("strike and down-dip vectors of dipping, vertical and horizontal fault
   strikeDipBasis(Eigen::Vector3d(0, 0, -1), strike, dip);
   CHECK(strike == Eigen::Vector3d::UnitX());
   CHECK(dip == -Eigen::Vector3d::UnitY());
+}
+
+namespace {
+
+// A row of normal n on the node's tangent basis, with the jump `slip` (Ω⁺ minus Ω⁻) and the
+// traction `tau` on Ω⁺ given as vectors [m, Pa].
+FractureRow rowOf(const Eigen::Vector3d& n, const Eigen::Vector3d& slip,
+                  const Eigen::Vector3d& tau) {
+  FractureRow r;
+  r.normal = n;
+  r.tangent = tangentBasis(n);
+  for (std::size_t c = 0; c < 2; ++c) {
+    r.slip[c] = slip.dot(r.tangent[c]);
+    r.tau[c] = tau.dot(r.tangent[c]);
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("strike and dip values are the hanging wall's, whichever side n points to",
+          "[output][strikeDip]") {
+  const double pi = std::acos(-1.0);
+  // A normal fault dipping 60° to the azimuth a, its hanging wall (above) moving down dip by
+  // 2 mm and along strike by 1 mm, the traction on it opposite (Coulomb).
+  for (double azimuth : {0.0, 100.0, 150.0, 250.0}) {
+    CAPTURE(azimuth);
+    const double d = 60 * pi / 180, a = azimuth * pi / 180;
+    const Eigen::Vector3d up(std::sin(d) * std::cos(a), std::sin(d) * std::sin(a), std::cos(d));
+    Eigen::Vector3d strike, dip;
+    strikeDipBasis(up, strike, dip);
+    const Eigen::Vector3d hangingSlip = 1e-3 * strike + 2e-3 * dip, hangingTau = -3e6 * dip;
+    // n_Γ down (from the hanging wall: Ω⁺ is the hanging wall) and up (Ω⁺ the footwall, whose
+    // jump and traction are the opposite ones).
+    const std::array<double, 4> down = strikeDipValues(rowOf(-up, hangingSlip, hangingTau));
+    const std::array<double, 4> upward = strikeDipValues(rowOf(up, -hangingSlip, -hangingTau));
+    const std::array<double, 4> expected = {1e-3, 2e-3, 0, -3e6};
+    for (std::size_t c = 0; c < 4; ++c) {
+      const double scale = c < 2 ? 1e-3 : 3e6;
+      CHECK(std::abs(down[c] - expected[c]) < 1e-12 * scale);
+      CHECK(std::abs(upward[c] - expected[c]) < 1e-12 * scale);
+    }
+  }
+  // A vertical fault: the hanging wall is the side to the right of strike (seen from above).
+  const Eigen::Vector3d n(0, 1, 0);  // strike +x (azimuth 0°), right of it: −y
+  Eigen::Vector3d strike, dip;
+  strikeDipBasis(n, strike, dip);
+  REQUIRE(strike == Eigen::Vector3d::UnitX());
+  const Eigen::Vector3d slip = 1e-3 * strike;  // the −y side moves along +x
+  CHECK(strikeDipValues(rowOf(n, slip, Eigen::Vector3d::Zero()))[0] == Approx(1e-3).epsilon(1e-12));
+  CHECK(strikeDipValues(rowOf(-n, -slip, Eigen::Vector3d::Zero()))[0] ==
+        Approx(1e-3).epsilon(1e-12));
+  // A horizontal fault: the hanging wall is the side above.
+  CHECK(strikeDipValues(rowOf(Eigen::Vector3d(0, 0, -1), 1e-3 * Eigen::Vector3d::UnitX(),
+                              Eigen::Vector3d::Zero()))[0] == Approx(1e-3).epsilon(1e-12));
+  CHECK(strikeDipValues(rowOf(Eigen::Vector3d(0, 0, 1), -1e-3 * Eigen::Vector3d::UnitX(),
+                              Eigen::Vector3d::Zero()))[0] == Approx(1e-3).epsilon(1e-12));
 }
