@@ -49,8 +49,8 @@ where that part of g is smooth.
 
 lambda is the root of the bounded-stress condition: near X = 1 the slip is
 D ~ K sqrt(1 - X^2) with K = sum_n n b_n - c_1 4 / pi - c_3 8 / (3 pi) (the limits of
-D_1 / sqrt(1 - X^2) and D_3 / sqrt(1 - X^2) at X = 1; K is a stress intensity), and lambda makes K = 0, so that D vanishes as (1 - X)^{3/2}. Solved by
-bisection on K(lambda). It agrees with the paper's closed condition
+D_1 / sqrt(1 - X^2) and D_3 / sqrt(1 - X^2) at X = 1; K is a stress intensity), and lambda
+makes K = 0, so that D vanishes as (1 - X)^{3/2}. Solved by bisection on K(lambda). It agrees with the paper's closed condition
 T = (2/pi) int_0^{pi/2} erfc(lambda sin theta) d theta (viescaError.lambdaOf) to 1e-10.
 
 Checks (--check): the truncation (N against 2N modes); the same slip from the crack's Green's
@@ -125,7 +125,8 @@ class SlipShape:
         X = self._erfcArg
         c1, c3 = _kinkCoefficients(lam)
         smooth = _erfc(lam * X) + c1 * X + c3 * X**3 - self.T
-        return (8 / (self.n * math.pi)) * ((smooth * numpy.sin(self._theta) * self._w) @ self._basis)
+        weights = smooth * numpy.sin(self._theta) * self._w
+        return (8 / (self.n * math.pi)) * (weights @ self._basis)
 
     def stressIntensity(self, lam):
         """K(lambda) = lim D / sqrt(1 - X^2) at X = 1 (0 for the benchmark's lambda)."""
@@ -195,6 +196,7 @@ def muPrimeOf(E, nu, planeStress=False):
 
 def selfCheck():
     """The checks of the module docstring; returns the list of failures (printed as it goes)."""
+    sys.dont_write_bytecode = True  # no __pycache__ in the case folder
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     from viescaError import lambdaOf
 
