@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # cases/viescaInjection on a coarser mesh (h = 0.1 m): for T = 0.1, 0.5 and 0.9 the slipping
 # half-length a(t) of every written time must lie within h/2 + 0.5 % of Viesca (2021)'s
-# λ(T) √(4αt) (viescaError.py --check, run by the case's Allrun), and the summary must hold
-# every time of the three runs. Then T = 0.1 again with the pressure computed by diffusion on
-# the fault (model diffusion, backward Euler, substeps of 5 ms) instead of the closed form:
-# the same check; and that run stopped at t = 0.5 and restarted (startFrom latestTime) must
-# write the very bytes of the uninterrupted run (tables and restart states, the diffusion's
-# state included). Then the pressure given as data (rows "t x y p" taken from the closed-form
-# run's tables, shuffled within each time): the same pressures at every node and time, the same
-# check; a data row off the fault is refused naming its file and line.
+# λ(T) √(4αt), and the slip profile within h/(2a) + 1.5 % (largest and L2 error, relative) of
+# the crack equation's (viescaSlip.py) (viescaError.py --check, run by the case's Allrun); the
+# summary must hold every time of the three runs, with its slip errors. The check must reject
+# a slip 2x too large, half as large or of the wrong sign (the tables of T = 0.9 so edited).
+# Then T = 0.1 again with the pressure computed by diffusion on the fault (model diffusion,
+# backward Euler, substeps of 5 ms) instead of the closed form: the same check; and that run
+# stopped at t = 0.5 and restarted (startFrom latestTime) must write the very bytes of the
+# uninterrupted run (tables and restart states, the diffusion's state included). Then the
+# pressure given as data (rows "t x y p" taken from the closed-form run's tables, shuffled
+# within each time): the same pressures at every node and time, the same check; a data row
+# off the fault is refused naming its file and line.
 # Usage: viescaInjection.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$1 src=$2 work=$3
@@ -37,6 +40,28 @@ PY
 rows=$(grep -vc '^#' postProcessing/viesca.dat)
 [[ $rows == 29 ]] || { echo "FAIL: postProcessing/viesca.dat has $rows rows, expected 29 (9 + 11 + 9 times)"; exit 1; }
 echo "PASS: a(t) within h/2 + 0.5 % of lambda(T) sqrt(4 alpha t) at 29 times, T = 0.1, 0.5, 0.9"
+awk '!/^#/ && !(NF == 10 && $8 > 0 && $9 > 0 && $8 <= $10 && $9 <= $10) {bad = bad " " NR}
+     END {if (bad) {print "FAIL: viesca.dat rows without slip errors in their bound:" bad; exit 1}}' \
+  postProcessing/viesca.dat
+echo "PASS: the slip profile within h/(2a) + 1.5 % of the crack equation's at the 29 times" \
+  "(largest error $(awk '!/^#/ && $8 > m {m = $8} END {print m}' postProcessing/viesca.dat))"
+# The check fails where it must: the T = 0.9 tables with the slip doubled, halved, negated.
+for factor in 2 0.5 -1; do
+  d=wrongSlip$factor
+  rm -rf "$d"
+  cp -r runs/T0.9 "$d"
+  for f in "$d"/[0-9]*/fractures/fault.dat; do
+    awk -v k="$factor" 'NR == 1 {for (i = 1; i <= NF; i++) if ($i == "slip") c = i - 1; print; next}
+      /^#/ {print; next} {$c = $c * k; print}' "$f" >"$f.new"
+    mv "$f.new" "$f"
+  done
+  if /usr/bin/python3 viescaError.py "$d" --T 0.9 --alpha 1 --check >"$d/log.viescaError"; then
+    echo "FAIL: a slip multiplied by $factor passed the check"; exit 1
+  fi
+  n=$(grep -o "slip error" "$d/log.viescaError" | wc -l)
+  [[ $n == 9 ]] || { echo "FAIL: slip x $factor: $n of 9 times rejected"; exit 1; }
+done
+echo "PASS: a slip doubled, halved or of the wrong sign is rejected at all 9 times"
 
 # The computed diffusion, uninterrupted and restarted.
 sed -e 's|^    diffusivity 1; .*|    model diffusion; storage 1e-9; transmissivity 1e-9; maxStep 0.005;|' \
@@ -92,7 +117,7 @@ assert 'data "constant/p.dat"' in s and "wells" not in s, s
 open(sys.argv[1], "w").write(s)
 PY
 "$bin/frictionSolver" -case "$d" >"$d/log.frictionSolver" 2>&1
-/usr/bin/python3 viescaError.py "$d" --T 0.1 --alpha 1 --check
+/usr/bin/python3 viescaError.py "$d" --T 0.1 --alpha 1 --dp 5e6 --check
 /usr/bin/python3 - runs/T0.1 "$d" <<'PY'
 import os, sys
 ref, run = sys.argv[1], sys.argv[2]
