@@ -360,7 +360,52 @@ TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties ent
        "E 1e9;\nlambda 1;",
        "lambda 1;",
        {"keys 'E'", "and 'lambda'",
-        "belong to alternatives: give E and nu, or lambda and mu, not both"}},
+        "belong to alternatives: give E and nu, lambda and mu, or K and G, not both"}},
+      // Keys and types users bring from other codes: refused with the way forward.
+      {"planeStrain",
+       "constant/mechanicalProperties",
+       "planeStress +no;",
+       "planeStrain yes;",
+       "planeStrain yes;",
+       {"unknown key 'planeStrain'", "plane strain is the default in 2D (planeStress no)",
+        "'planeStress yes;' for a thin plate"}},
+      {"youngModulus",
+       "constant/mechanicalProperties",
+       "lambda +1;",
+       "youngModulus 1e9;",
+       "youngModulus 1e9;",
+       {"unknown key 'youngModulus'", "libfriction names it 'E'", "or K and G"}},
+      {"cohesionUnderCoulomb",
+       "constant/fractureProperties",
+       "frictionCoefficient +0.2;",
+       "frictionCoefficient 0.2;\n    cohesion 1e6;",
+       "cohesion 1e6;",
+       {"unknown key 'cohesion'", "law coulomb has no cohesion; use law coulombCohesion"}},
+      {"frictionAngleField",
+       "constant/fractureProperties",
+       "frictionCoefficient +0.2;",
+       "frictionAngle { type depth; value 30; gradient 0; }",
+       "frictionAngle {",
+       {"key 'frictionAngle'", "a field is given as frictionCoefficient"}},
+      {"frictionAngleRange",
+       "constant/fractureProperties",
+       "frictionCoefficient +0.2;",
+       "frictionAngle 90;",
+       "frictionAngle 90;",
+       {"key 'frictionAngle'", "in [0, 90)"}},
+      {"roller",
+       "0/D",
+       "left +\\{ type free; \\}",
+       "left { type roller; }",
+       "left { type roller; }",
+       {"unknown type 'roller'",
+        "'type fixedDisplacement; components (x); value (0 0);' with the held directions"}},
+      {"rollerWithoutValue",
+       "0/D",
+       "bottom +\\{ type fixedDisplacement; value \\(0 0\\); \\}",
+       "bottom { type fixedDisplacement; components (y); }",
+       "bottom { type fixedDisplacement; components (y); }",
+       {"missing key 'value' in patch 'bottom'", "e.g. value (0 0)"}},
       {"decimalComma",
        "constant/mechanicalProperties",
        "mu +1;",
@@ -761,5 +806,35 @@ TEST_CASE("a FIFO or a device that a case names is refused at once, naming who n
     refused("splitFractureNodes",
             {at("system/meshDict", lineOf(c.dir() / "system/meshDict", "\"constant/fifo\"")),
              "key 'mesh': cannot open '", "constant/fifo", fifoIs});
+  }
+}
+
+TEST_CASE(
+    "keys other codes use: K and G, frictionAngle give the runs of lambda, mu and "
+    "frictionCoefficient",
+    "[regression][errors]") {
+  Case plain("paperBenchmark", "foreign-keys-plain");
+  split(plain);
+  REQUIRE(plain.solve() == 0);
+  Case other("paperBenchmark", "foreign-keys-other");
+  split(other);
+  // λ = μ = 1: K = λ + 2μ/3, G = μ; μ_f = 0.2 = tan(11.309932474020215°).
+  other.edit("constant/mechanicalProperties", "lambda +1;", "K 1.6666666666666667;");
+  other.edit("constant/mechanicalProperties", "mu +1;", "G 1;");
+  other.edit("constant/fractureProperties", "frictionCoefficient +0.2;",
+             "frictionAngle 11.309932474020215;");
+  REQUIRE(other.solve() == 0);
+  CHECK_THAT(other.log(), Catch::Contains("frictionCoefficient 0.2"));
+  const auto a = plain.table("1", "fracture");
+  const auto b = other.table("1", "fracture");
+  REQUIRE(a.size() == b.size());
+  double scale = 0;
+  for (const auto& r : a) scale = std::max(scale, std::abs(r.slip));
+  REQUIRE(scale > 0);
+  // λ from K − 2G/3 and μ_f from tan differ from 1 and 0.2 in the last bit: the slips agree
+  // to round-off (the solver's tolerance 1e-10 is far above it).
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    CHECK(std::abs(a[i].slip - b[i].slip) <= 1e-9 * scale);
+    CHECK(a[i].state == b[i].state);
   }
 }

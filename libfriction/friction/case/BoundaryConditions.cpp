@@ -39,6 +39,32 @@ Point outwardTriangleNormal(const Mesh& mesh, const MeshTopology& topology, Inde
   return n;
 }
 
+/// Patch types other codes have (OpenFOAM's solid solvers, GEOS, PyLith) refused with the form
+/// they take here, before the list of valid types.
+void foreignType(const Dictionary& p, int dim) {
+  if (!p.found("type") || p.isDict("type")) return;
+  const std::string type = p.getWord("type");
+  const std::string zero = dim == 2 ? "(0 0)" : "(0 0 0)";
+  const std::string roller =
+      "a roller (or symmetry plane) is 'type fixedDisplacement; components (x); "
+      "value " +
+      zero + ";' with the held directions in components";
+  std::string advice;
+  if (type == "roller" || type == "slip" || type == "symmetryPlane" || type == "symmetry")
+    advice = roller;
+  else if (type == "fixedValue" || type == "displacement" || type == "dirichlet")
+    advice = "a prescribed displacement is 'type fixedDisplacement; value " + zero + ";'";
+  else if (type == "zeroGradient" || type == "tractionFree" || type == "neumann")
+    advice = "a traction-free patch is 'type free;'";
+  else if (type == "tractionDisplacement")
+    advice =
+        "OpenFOAM's tractionDisplacement is 'type traction; traction (...);' or "
+        "'type pressure; pressure p;' here";
+  if (!advice.empty())
+    p.fail("type", "key 'type': unknown type '" + type + "': " + advice +
+                       " (valid types are: " + joinWords(BoundaryConditions::typeNames()) + ")");
+}
+
 }  // namespace
 
 BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
@@ -62,9 +88,15 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
       Patch patch;
       patch.name = name;
       patch.label = it->second;
+      foreignType(p, dim);
       const std::string type = p.getChoice("type", typeNames());
       if (type == "fixedDisplacement") {
         patch.type = Type::fixedDisplacement;
+        if (!p.found("value"))
+          p.fail("value", std::string("missing key 'value' in ") + "patch '" + name +
+                              "': the displacement [m] of the held components, e.g. value " +
+                              (dim == 2 ? "(0 0)" : "(0 0 0)") +
+                              "; (a roller: components (x) and value 0, which holds x at 0)");
         patch.value = TimeFunction::read(p, "value", dim);
         if (p.found("components")) {
           const std::vector<std::string> c = p.getWordList("components");

@@ -317,7 +317,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
     if (!c.isConstant())
       log << ", " << f.law->cohesionKey() << " [Pa] " << c.describe();
     else if (c.value() > 0)
-      log << ", threshold " << c.value() << " Pa";
+      log << ", " << f.law->cohesionKey() << " " << c.value() << " Pa";
     if (opening_) log << ", contact " << (f.unilateral ? "unilateral" : "bilateral");
     log << "\n";
   }

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
@@ -70,6 +71,9 @@ struct Dictionary::Impl {
   std::unordered_map<std::string, std::size_t> index;
   /// Keys the program asked about: the valid keys offered in "did you mean" suggestions.
   mutable std::set<std::string> asked;
+  /// Keys other programs use that this one does not read, with the way forward
+  /// (Dictionary::advise): what checkAllRead says when one is there.
+  mutable std::map<std::string, std::string> advice;
 
   static Impl& of(Dictionary& d) { return *d.impl_; }
   static const Impl& of(const Dictionary& d) { return *d.impl_; }
@@ -832,6 +836,8 @@ void checkRead(const Dictionary::Impl& root, const Dictionary::Impl& d,
                                       " is never used (the program checks that it is there "
                                       "but does not read it)");
       std::string msg = "unknown key '" + showInvisible(e.key) + "' in " + d.scope;
+      if (const auto a = d.advice.find(e.key); a != d.advice.end())
+        throw InputError(e.where, msg + ": " + a->second);
       if (!invisibleCharacters(e.key).empty()) {
         // In an editor the key looks like a valid one; say what hides in it.
         msg += ", " + invisibleText(e.key);
@@ -1210,6 +1216,10 @@ std::size_t Dictionary::alternative(const std::vector<std::vector<std::string>>&
 }
 
 void Dictionary::markAllRead() const { impl_->setRead(true); }
+
+void Dictionary::advise(const std::string& key, const std::string& advice) const {
+  impl_->advice[key] = advice;
+}
 
 void Dictionary::set(const std::string& key, std::vector<Value> items, SourceLocation where) {
   DictEntry e;

@@ -188,6 +188,10 @@ class Dictionary {
   /// Mark everything in this dictionary (recursively) as read, e.g. for a block that
   /// belongs to another program.
   void markAllRead() const;
+  /// A key that users bring from other codes and this dictionary does not read: if it is
+  /// there, checkAllRead says "unknown key 'K' in <scope>: <advice>" (the way forward) instead
+  /// of guessing a spelling.
+  void advise(const std::string& key, const std::string& advice) const;
 
   // ---- building (used by tests and by code that assembles dictionaries) ----
   /// Add or replace a value entry.

@@ -1,6 +1,9 @@
 // Material: isotropic linear elasticity, 3D, plane strain or plane stress (docs/method.md §1).
 #include "friction/fe/Material.hpp"
 
+#include <initializer_list>
+#include <utility>
+
 #include "friction/core/Assert.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
@@ -17,10 +20,34 @@ Material Material::read(const Dictionary& dict, int dim) {
 }
 
 Material Material::readConstants(const Dictionary& dict, bool planeStress) {
-  if (dict.alternative({{"E", "nu"}, {"lambda", "mu"}}) == 0) {
+  // The names other codes give these constants: the way forward rather than a spelling guess.
+  for (const auto& [key, use] :
+       std::initializer_list<std::pair<const char*, const char*>>{{"youngModulus", "E"},
+                                                                  {"YoungModulus", "E"},
+                                                                  {"poissonRatio", "nu"},
+                                                                  {"PoissonRatio", "nu"},
+                                                                  {"bulkModulus", "K"},
+                                                                  {"shearModulus", "G"},
+                                                                  {"lameLambda", "lambda"}})
+    // At once, not at the end: the pair it belongs to would be reported missing first.
+    if (dict.found(key))
+      dict.fail(key, std::string("unknown key '") + key + "': libfriction names it '" + use +
+                         "'; the constants are E and nu, lambda and mu, or K and G (bulk and "
+                         "shear moduli) [Pa]");
+  dict.advise("planeStrain",
+              "plane strain is the default in 2D (planeStress no); remove the key, or write "
+              "'planeStress yes;' for a thin plate");
+  const std::size_t form = dict.alternative({{"E", "nu"}, {"lambda", "mu"}, {"K", "G"}});
+  if (form == 0) {
     const double E = dict.getScalar("E", Bounds::positive());
     const double nu = dict.getScalar("nu", {-1.0, 0.5, true, true});
     return fromYoungPoisson(E, nu, planeStress);
+  }
+  if (form == 2) {
+    // K and G (GEOS's bulk and shear moduli): λ = K − 2G/3, μ = G.
+    const double K = dict.getScalar("K", Bounds::positive());
+    const double G = dict.getScalar("G", Bounds::positive());
+    return fromLame(K - 2.0 * G / 3.0, G, planeStress);
   }
   const double mu = dict.getScalar("mu", Bounds::positive());
   const double lambda = dict.getScalar("lambda");

@@ -15,12 +15,14 @@ class Dictionary;
 
 class Material {
  public:
-  /// From constant/mechanicalProperties: 'E' and 'nu', or 'lambda' and 'mu' (alternatives:
-  /// keys of both pairs are an error that says so), and 'planeStress' (default no). Range
+  /// From constant/mechanicalProperties: 'E' and 'nu', 'lambda' and 'mu', or 'K' and 'G' (bulk
+  /// and shear moduli) (alternatives: keys of two pairs are an error that says so), and
+  /// 'planeStress' (default no); other codes' names (youngModulus, planeStrain, ...) are
+  /// refused with the name to use. Range
   /// checks are InputErrors naming file:line and key. `dim` is the mesh's dimension (2 or 3):
   /// in 3D the key 'planeStress' is refused (every strain component is resolved there).
   static Material read(const Dictionary& dict, int dim = 2);
-  /// The constants alone ('E' and 'nu', or 'lambda' and 'mu', with the same checks as read()),
+  /// The constants alone (the pairs of read(), with the same checks),
   /// for a dictionary that does not hold 'planeStress' (one region's entry of MaterialMap).
   static Material readConstants(const Dictionary& dict, bool planeStress);
   /// From Young's modulus E [Pa] (> 0) and Poisson's ratio ν (−1 < ν < 1/2). Range checks

@@ -86,11 +86,11 @@ MaterialMap MaterialMap::read(const Dictionary& dict, const Mesh& mesh) {
     dict.fail("regions",
               "key 'regions': expected a sub-dictionary of one entry per mesh region, e.g. "
               "regions { reservoir { E 10e9; nu 0.25; } caprock { E 30e9; nu 0.3; } }");
-  for (const char* key : {"E", "nu", "lambda", "mu"})
+  for (const char* key : {"E", "nu", "lambda", "mu", "K", "G"})
     if (dict.found(key))
       dict.fail(key, "key '" + std::string(key) +
                          "' together with 'regions': give the material once for the whole "
-                         "body (E, nu or lambda, mu here) or per region inside 'regions', not "
+                         "body (E, nu or lambda, mu or K, G here) or per region inside 'regions', not "
                          "both");
   if (mesh.dim == 3 && dict.found("planeStress"))
     dict.fail("planeStress",

@@ -1,6 +1,8 @@
 // Friction laws and their selection table.
 #include "friction/law/FrictionLaw.hpp"
 
+#include <cmath>
+
 #include "friction/dict/Dictionary.hpp"
 
 namespace friction {
@@ -14,6 +16,18 @@ struct LawInput {
   int dim;
   FrictionField field(const std::string& key, Bounds bounds) const {
     return FrictionField::read(d, key, bounds, caseDir, dim);
+  }
+  /// μ_f: frictionCoefficient (a number or a field), or frictionAngle φ [degrees] as other
+  /// codes take it (a number in [0, 90): μ_f = tan φ).
+  FrictionField mu() const {
+    if (d.alternative({{"frictionCoefficient"}, {"frictionAngle"}}) == 0)
+      return field("frictionCoefficient", Bounds::nonNegative());
+    if (d.isDict("frictionAngle"))
+      d.fail("frictionAngle",
+             "key 'frictionAngle': expected a number of degrees in [0, 90); a field is given as "
+             "frictionCoefficient (μ_f = tan φ)");
+    const double phi = d.getScalar("frictionAngle", Bounds{0.0, 90.0, false, true});
+    return FrictionField(std::tan(phi * M_PI / 180.0));
   }
 };
 
@@ -30,17 +44,23 @@ const LawEntry lawTable[] = {
      }},
     {"tresca",
      [](const LawInput& in) -> std::unique_ptr<FrictionLaw> {
+       in.d.advise("cohesion",
+                   "law tresca's bound is its 'threshold' g [Pa] (|τ| ≤ g); a cohesion with "
+                   "friction is law coulombCohesion");
        return std::make_unique<Tresca>(in.field("threshold", Bounds::positive()));
      }},
     {"coulomb",
      [](const LawInput& in) -> std::unique_ptr<FrictionLaw> {
-       return std::make_unique<Coulomb>(in.field("frictionCoefficient", Bounds::nonNegative()));
+       // A cohesion needs the other law: say which, not "unknown key".
+       in.d.advise("cohesion",
+                   "law coulomb has no cohesion; use law coulombCohesion (|τ| ≤ c − μ_f σ'_n, "
+                   "keys frictionCoefficient and cohesion)");
+       return std::make_unique<Coulomb>(in.mu());
      }},
     {"coulombCohesion",
      [](const LawInput& in) -> std::unique_ptr<FrictionLaw> {
-       return std::make_unique<CoulombCohesion>(
-           in.field("frictionCoefficient", Bounds::nonNegative()),
-           in.field("cohesion", Bounds::nonNegative()));
+       return std::make_unique<CoulombCohesion>(in.mu(),
+                                                in.field("cohesion", Bounds::nonNegative()));
      }},
 };
 

@@ -276,8 +276,9 @@ class GmshParser {
     }
     if (fileType != 0)
       s_.fail("this is a binary gmsh file (file-type " + std::to_string(fileType) +
-              " in $MeshFormat): expected an ASCII file (file-type 0); save it with gmsh -2 "
-              "-format msh41 without -bin, or Mesh.Binary = 0");
+              " in $MeshFormat): expected an ASCII file (file-type 0); mesh it again without -bin "
+              "(gmsh -3 -format msh41 for a volume mesh, gmsh -2 for a 2D one), or with "
+              "Mesh.Binary = 0 in the .geo");
     const int formatLine = openLine;
     if (!s_.next())
       s_.fail("missing $EndMeshFormat: the file ends inside $MeshFormat (opened at line " +

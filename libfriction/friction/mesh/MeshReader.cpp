@@ -56,7 +56,8 @@ void rejectBinary(const std::string& path, const std::string& text) {
   const int line = 1 + static_cast<int>(std::count(text.data(), nul, '\n'));
   throw InputError(SourceLocation{path, line},
                    "this is a binary file: expected a text mesh (FreeFEM .msh, or gmsh .msh "
-                   "written as ASCII: gmsh -2 -format msh41, without -bin)");
+                   "written as ASCII: gmsh -format msh41 without -bin, with -3 for a volume mesh "
+                   "or -2 for a 2D one)");
 }
 
 }  // namespace

@@ -323,10 +323,9 @@ maxIterations 10;
 TEST_CASE("keys of two alternatives are named as alternatives", "[dict][alternatives]") {
   SECTION("E with lambda") {
     const Dictionary d = Dictionary::parse("E 1e9;\nnu 0.3;\nlambda 1;\n", "mech");
-    CHECK(
-        inputErrorOf([&] { Material::read(d); }) ==
-        "mech:3: keys 'E' (line 1) and 'lambda' in mech belong to alternatives: give E and nu, or "
-        "lambda and mu, not both");
+    CHECK(inputErrorOf([&] { Material::read(d); }) ==
+          "mech:3: keys 'E' (line 1) and 'lambda' in mech belong to alternatives: give E and nu, "
+          "lambda and mu, or K and G, not both");
   }
   SECTION("a mix: lambda with nu") {
     const Dictionary d = Dictionary::parse("nu 0.3;\nlambda 1;\nmu 1;\n", "mech");
@@ -337,7 +336,7 @@ TEST_CASE("keys of two alternatives are named as alternatives", "[dict][alternat
   SECTION("neither") {
     const Dictionary d = Dictionary::parse("planeStress no;\n", "mech");
     CHECK(inputErrorOf([&] { Material::read(d); }) ==
-          "mech: missing keys in mech: give E and nu, or lambda and mu");
+          "mech: missing keys in mech: give E and nu, lambda and mu, or K and G");
   }
   SECTION("one pair, complete or not") {
     const Material m = Material::read(Dictionary::parse("E 2.6;\nnu 0.3;\n", "mech"));
@@ -422,4 +421,25 @@ TEST_CASE("a fracturePressure values file is read strictly, line by line", "[dic
           "constant/effects:4: keys 'pressure' (line 3) and 'values' in constant/effects are "
           "alternatives: give pressure, or values, not both");
   }
+}
+
+TEST_CASE("K and G are the third pair of constants; other codes' names get the way forward",
+          "[dict][material]") {
+  // K = 5/3 GPa, G = 1 GPa: λ = K − 2G/3 = 1 GPa, μ = 1 GPa, so E = 2.5 GPa and ν = 0.25.
+  const Dictionary d = Dictionary::parse("K 1.6666666666666667e9;\nG 1e9;\n", "mech");
+  const Material m = Material::read(d);
+  CHECK(std::abs(m.youngModulus() - 2.5e9) <= 1e-6);
+  CHECK(std::abs(m.poissonRatio() - 0.25) <= 1e-15);
+  CHECK_THAT(inputErrorOf([&] { Material::read(Dictionary::parse("K -1;\nG 1;\n", "mech")); }),
+             StartsWith("mech:1: key 'K'"));
+  CHECK(inputErrorOf(
+            [&] { Material::read(Dictionary::parse("shearModulus 1e9;\nK 1e9;\n", "mech")); }) ==
+        "mech:1: unknown key 'shearModulus': libfriction names it 'G'; the constants are "
+        "E and nu, lambda and mu, or K and G (bulk and shear moduli) [Pa]");
+  // advise(): checkAllRead gives the advice instead of a spelling guess.
+  const Dictionary e = Dictionary::parse("nu 0.2;\nplaneStrain yes;\n", "mech");
+  e.getScalar("nu");
+  e.advise("planeStrain", "write planeStress no");
+  CHECK(inputErrorOf([&] { e.checkAllRead(); }) ==
+        "mech:2: unknown key 'planeStrain' in mech: write planeStress no");
 }

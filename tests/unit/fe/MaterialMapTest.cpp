@@ -116,7 +116,7 @@ TEST_CASE("fe material map: mistakes are InputErrors with line and key", "[fe][m
   // Both forms.
   CHECK(errorOf("E 1e9;\nnu 0.2;\nregions { default { E 1e9; nu 0.2; } }\n", mesh) ==
         "mech:1: key 'E' together with 'regions': give the material once for the whole body (E, "
-        "nu or lambda, mu here) or per region inside 'regions', not both");
+        "nu or lambda, mu or K, G here) or per region inside 'regions', not both");
   // planeStress inside a region.
   CHECK(errorOf("regions\n{\n  default\n  {\n    E 1e9;\n    nu 0.2;\n    planeStress yes;\n  "
                 "}\n}\n",
