@@ -119,6 +119,35 @@ TEST_CASE("initial stress alone reproduces the boundary-loaded inclined crack",
   CHECK(crackError(b, 4.3301e6 - 0.4 * 2.5e6) <= 2.5 / 16);
 }
 
+TEST_CASE("an in-situ stress with its own traction on a face again is noted as a double load",
+          "[regression][effects]") {
+  const std::string effects =
+      std::string(kEffectsHeader) + "inSitu { type initialStress; stress (0 -1e7 0); }\n";
+  // The top keeps its pressure table ((0 0) (1 1e7)): at endTime it is σ⁰·n, the same load.
+  Case twice("inclinedCrack", "effects-crack-twice");
+  writeText(twice.dir() / "constant" / "effects", effects);
+  REQUIRE(twice.solve() == 0);
+  CHECK_THAT(twice.log(),
+             Catch::Contains("Note: patch 'top' applies the in-situ traction σ⁰·n (initialStress) "
+                             "again"));
+  // The same traction written as a traction, and the other patches: only the top is named.
+  Case traction("inclinedCrack", "effects-crack-twice-traction");
+  traction.edit("0/D", "top +\\{[^}]*\\}", "top { type traction; traction (0 -1e7); }");
+  writeText(traction.dir() / "constant" / "effects", effects);
+  REQUIRE(traction.solve() == 0);
+  CHECK_THAT(traction.log(), Catch::Contains("Note: patch 'top' applies the in-situ traction"));
+  CHECK_THAT(traction.log(), !Catch::Contains("Note: patch 'right'"));
+  // Half of it is a load of its own (a change), not a repeat: no note; nor without σ⁰.
+  Case change("inclinedCrack", "effects-crack-change");
+  change.edit("0/D", "top +\\{[^}]*\\}", "top { type traction; traction (0 -5e6); }");
+  writeText(change.dir() / "constant" / "effects", effects);
+  REQUIRE(change.solve() == 0);
+  CHECK_THAT(change.log(), !Catch::Contains("Note: patch"));
+  Case plain("inclinedCrack", "effects-crack-plain");
+  REQUIRE(plain.solve() == 0);
+  CHECK_THAT(plain.log(), !Catch::Contains("Note: patch"));
+}
+
 TEST_CASE("a uniform fracture pressure acts through the effective normal stress",
           "[regression][effects]") {
   Case c("inclinedCrack", "effects-crack-pressure");

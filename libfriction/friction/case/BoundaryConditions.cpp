@@ -124,17 +124,23 @@ BoundaryConditions::BoundaryConditions(const Dictionary& dict, const Mesh& mesh,
           patch.components =
               set == (1u << dim) - 1 ? FixedComponents::all : static_cast<FixedComponents>(set);
         }
-      } else if (type == "traction") {
-        patch.type = Type::traction;
-        patch.value = TimeFunction::read(p, "traction", dim);
-      } else if (type == "pressure") {
-        patch.type = Type::pressure;
-        patch.value = TimeFunction::read(p, "pressure", 1);
+      } else if (type == "traction" || type == "pressure") {
+        if (type == "traction") {
+          patch.type = Type::traction;
+          patch.value = TimeFunction::read(p, "traction", dim);
+        } else {
+          patch.type = Type::pressure;
+          patch.value = TimeFunction::read(p, "pressure", 1);
+        }
         // Outward normal of each edge: away from the third vertex of the triangle it bounds
-        // (of the last triangle, in mesh order, if two have it).
+        // (of the last triangle, in mesh order, if two have it). The pressure's traction uses
+        // it; both types use it and the facets' centres to compare with an in-situ stress.
         const auto topology = mesh.topology();
         for (Index e = 0; e < mesh.numFacets(); ++e) {
           if (mesh.facetLabel[e] != patch.label) continue;
+          Point centre = Point::Zero();
+          for (int k = 0; k < dim; ++k) centre += mesh.points[mesh.facetVertex(e, k)];
+          patch.facetCentre.push_back(centre / dim);
           if (dim == 3) {
             patch.outwardNormal.push_back(outwardTriangleNormal(mesh, *topology, e, name));
             continue;
@@ -243,6 +249,32 @@ Eigen::VectorXd BoundaryConditions::neumannLoad(const LagrangeSpace& space, doub
     }
   }
   return F;
+}
+
+std::vector<std::string> BoundaryConditions::tractionsOfInSitu(
+    const std::function<Eigen::Matrix3d(const Point&)>& sigma0, double t) const {
+  std::vector<std::string> doubled;
+  for (const Patch& p : patches_) {
+    if ((p.type != Type::traction && p.type != Type::pressure) || p.facetCentre.empty()) continue;
+    const std::vector<double> v = p.value(t);
+    bool same = true, loaded = false;
+    for (std::size_t f = 0; f < p.facetCentre.size() && same; ++f) {
+      const Point& n = p.outwardNormal[f];
+      const Eigen::Vector3d inSitu = sigma0(p.facetCentre[f]) * n;
+      Eigen::Vector3d applied = Eigen::Vector3d::Zero();
+      if (p.type == Type::pressure)
+        applied = -v[0] * n;
+      else
+        for (std::size_t k = 0; k < v.size() && k < 3; ++k)
+          applied[static_cast<Eigen::Index>(k)] = v[k];
+      const double scale = inSitu.norm();
+      loaded |= scale > 0;
+      // Equal to 1 %: the same load written twice, not a coincidence of two loads.
+      same = scale > 0 && (applied - inSitu).norm() <= 0.01 * scale;
+    }
+    if (same && loaded) doubled.push_back(p.name);
+  }
+  return doubled;
 }
 
 }  // namespace friction

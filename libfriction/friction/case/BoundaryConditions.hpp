@@ -20,6 +20,7 @@
 // opposite vertex).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,7 @@ class BoundaryConditions {
     /// pressure: outward unit normal per facet of the patch (edge in 2D, z = 0; triangle in
     /// 3D), in mesh facet order.
     std::vector<Point> outwardNormal;
+    std::vector<Point> facetCentre;  ///< traction and pressure patches: per facet
   };
 
   /// Read 0/D's boundaryField against the patches of the (split) mesh; vectors have
@@ -61,6 +63,11 @@ class BoundaryConditions {
   void fix(DirichletConditions& dirichlet) const;
   /// Set the Dirichlet values at time t.
   void setValues(DirichletConditions& dirichlet, double t) const;
+  /// The traction and pressure patches whose load at time t equals the in-situ traction
+  /// σ⁰(x)·n at every facet (to 1 %, σ⁰·n ≠ 0): the boundary conditions act on the change from
+  /// the in-situ state, so such a patch applies the in-situ load a second time.
+  std::vector<std::string> tractionsOfInSitu(
+      const std::function<Eigen::Matrix3d(const Point&)>& sigma0, double t) const;
   /// Whether the Neumann loads at t differ from those at t0 (tables only change in time).
   bool loadsChange(double t0, double t) const;
   /// Nodal force vector of the tractions and pressures at time t on `space` [N per m in 2D,

@@ -351,6 +351,21 @@ void FrictionCase::printSettings(std::ostream& log) const {
     log << "Effect " << name << ": switched off (active no)\n";
   log << "Not simulated (not in the case): " << (off.empty() ? std::string("-") : joinWords(off))
       << "\n";
+  // A load written twice: an in-situ stress and the same traction on a face.
+  bool inSitu = false;
+  for (const auto& e : effects_) inSitu |= e->givesStressOffset() && e->type() == "initialStress";
+  if (inSitu && bcs_)
+    for (const std::string& patch : bcs_->tractionsOfInSitu(
+             [this](const Point& x) {
+               Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
+               for (const auto& e : effects_) s += e->initialStress(x);
+               return s;
+             },
+             time_->endTime()))
+      log << "Note: patch '" << patch << "' applies the in-situ traction σ⁰·n (initialStress) "
+          << "again: the boundary conditions act on the change from the in-situ state, so the "
+          << "body carries it twice; to keep the in-situ load alone make the patch 'type free;' "
+          << "(or give only the change)\n";
 }
 
 FactorStatus FrictionCase::setup(std::ostream& log) {
