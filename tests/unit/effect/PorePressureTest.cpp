@@ -471,8 +471,9 @@ TEST_CASE("porePressure: data rows outside the body or malformed are refused nam
              Catch::Contains("maxDistance"));
 }
 
-TEST_CASE("porePressure: data script takes the caller's field; a uniform one is the change's table",
-          "[effect][porePressure][givenField]") {
+TEST_CASE(
+    "porePressure: data script takes the caller's field, a uniform one gives the change's table",
+    "[effect][porePressure][givenField]") {
   // The FreeFEM plug-in's pressure = P, pressureTimes = T (GivenField.hpp): Δp_b per vertex at
   // listed times, each cell the mean of its vertices'. A uniform field holding the table's
   // values gives the loads and stress offsets of `change` up to the round-off of scaling the
