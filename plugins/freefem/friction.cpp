@@ -14,7 +14,8 @@
 //     after the unsplit vertices), the regions kept, the patches' boundary edges (triangles)
 //     with their labels and both faces of each fracture with the fracture's label.
 //   int status = frictionSolve("case" [, Vh, ux[], uy[] (, uz[])] [, overwrite = true,
-//                              fracture = "name", table = T, slip = s]);
+//                              fracture = "name", table = T, slip = s,
+//                              pressure = P, pressureTimes = times]);
 //     frictionSolver on the case: the same log, time folders, VTK files and restart. Returns
 //     frictionSolver's exit code when the run went through (0 converged, 3 a step did not);
 //     every other outcome (bad input, a failed factorisation, an output error, a stop by
@@ -26,6 +27,13 @@
 //     <time>/fractures/<name>.dat (FieldWriter.hpp) followed by the state as a number (0
 //     stick, 1 slip, 2 open, 3 tip, 4 junction), at full precision; slip (real[int]) the slip
 //     (3D: its magnitude). `fracture` names the fracture (needed when the case has several).
+//     pressure (real[int,int]) gives the rock's pore-pressure change Δp_b [Pa] to the case's
+//     porePressure effect, which must say `data script;`: one row per vertex of the mesh
+//     frictionSplit returned (its numbering) or of the unsplit mesh (a copy of a split node then
+//     takes its node's value), told apart by the row count; one column per time of
+//     pressureTimes (real[int], [s], strictly increasing). Each cell takes the mean of its
+//     vertices' values, linear in time between the listed times and constant beyond
+//     (GivenField.hpp).
 //
 // `overwrite` is -overwrite of both tools: without it an existing constant/splitMesh, a mesh
 // file that holds another mesh, or time folders of an earlier run are refused. What a call
@@ -51,6 +59,7 @@
 #include "friction/core/InputError.hpp"
 #include "friction/core/InputFile.hpp"
 #include "friction/core/Suggest.hpp"
+#include "friction/effect/GivenField.hpp"
 #include "friction/mesh/MeshReader.hpp"
 
 // FreeFEM's headers after ours: they bring macros and names into the global namespace.
@@ -342,7 +351,7 @@ template <int d, bool withField>
 class FrictionSolve : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 4;
+  static const int n_name_param = 6;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression caseDir, space = nullptr;
@@ -370,10 +379,36 @@ class FrictionSolve : public E_F0mps {
 
 template <int d, bool withField>
 basicAC_F0::name_and_type FrictionSolve<d, withField>::name_param[] = {
-    {"overwrite", &typeid(bool)},
-    {"fracture", &typeid(string*)},
-    {"table", &typeid(KNM<double>*)},
-    {"slip", &typeid(KN<double>*)}};
+    {"overwrite", &typeid(bool)},        {"fracture", &typeid(string*)},
+    {"table", &typeid(KNM<double>*)},    {"slip", &typeid(KN<double>*)},
+    {"pressure", &typeid(KNM<double>*)}, {"pressureTimes", &typeid(KN<double>*)}};
+
+// pressure = P, pressureTimes = T: the rock's pore-pressure change for the case's porePressure
+// (`data script;`), checked here as far as the call alone allows (both given, the times, the
+// columns, finite values); the rows against the split mesh when the case is read, before
+// anything is written.
+friction::GivenField givenPressure(const std::string& program, const KNM<double>* P,
+                                   const KN<double>* T) {
+  const std::string use =
+      "pressure = P (the rock's pore-pressure change [Pa], a real[int,int] with one row per "
+      "vertex and one column per time) and pressureTimes = T (their times [s], a real[int])";
+  if (!P) fail(program, "pressureTimes: given without pressure; expected both, " + use);
+  if (!T) fail(program, "pressure: given without pressureTimes; expected both, " + use);
+  friction::GivenField f;
+  f.caller = program;
+  f.name = "pressure";
+  f.timesName = "pressureTimes";
+  for (long j = 0; j < T->N(); ++j) f.times.push_back((*T)[j]);
+  f.values.resize(P->N(), P->M());
+  for (long i = 0; i < P->N(); ++i)
+    for (long j = 0; j < P->M(); ++j) f.values(i, j) = (*P)(i, j);
+  try {
+    f.check();
+  } catch (const friction::InputError& e) {
+    fail(program, e.what());
+  }
+  return f;
+}
 
 // The displacement of the last step into the FreeFEM space Vh: its mesh must be the split
 // mesh (same vertices in the same order), its element the case's (P1: a node per vertex; P2:
@@ -438,6 +473,10 @@ AnyType FrictionSolve<d, withField>::operator()(Stack stack) const {
   const std::string fracture = nargs[1] ? *GetAny<string*>((*nargs[1])(stack)) : "";
   KNM<double>* table = nargs[2] ? GetAny<KNM<double>*>((*nargs[2])(stack)) : nullptr;
   KN<double>* slip = nargs[3] ? GetAny<KN<double>*>((*nargs[3])(stack)) : nullptr;
+  KNM<double>* pressure = nargs[4] ? GetAny<KNM<double>*>((*nargs[4])(stack)) : nullptr;
+  KN<double>* pressureTimes = nargs[5] ? GetAny<KN<double>*>((*nargs[5])(stack)) : nullptr;
+  if (pressure || pressureTimes)
+    how.given[friction::kPorePressureChange] = givenPressure(program, pressure, pressureTimes);
 
   // What the call asks for is checked before the run, so that a bad call writes nothing: the
   // fespace against the case's elementOrder, the fracture against system/meshDict.

@@ -136,7 +136,8 @@ std::string listNames(const std::vector<std::string>& names) {
 
 FrictionCase::~FrictionCase() = default;
 
-FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
+FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
+    : caseDir_(caseDir) {
   if (!fs::exists(caseDir))
     throw InputError(caseDir,
                      "the case folder does not exist (expected a folder with system/, "
@@ -229,6 +230,24 @@ FrictionCase::FrictionCase(const std::string& caseDir) : caseDir_(caseDir) {
     }
     ed.checkAllRead();
   }
+  // Fields the caller gives (the FreeFEM plug-in's pressure): checked, on the split mesh's
+  // vertices, and each taken by the effect that asks for it; one that asks and gets none
+  // refuses here, and so does the case for a field that no effect takes.
+  GivenFields onSplit;
+  for (const auto& [key, field] : given) {
+    field.check();
+    onSplit.emplace(key, field.onSplitMesh(split_));
+  }
+  std::set<std::string> taken;
+  for (const auto& e : effects_)
+    for (const std::string& key : e->takeGivenFields(onSplit, split_.mesh)) taken.insert(key);
+  for (const auto& [key, field] : given)
+    if (!taken.count(key))
+      throw InputError(effectsPath, field.caller + " was given " + givenFieldMeaning(key) + " (" +
+                                        field.name +
+                                        "), and no active effect of the case takes it: add to "
+                                        "constant/effects " +
+                                        givenFieldTaker(key));
 
   const Dictionary sol = readCaseFile(caseDir, "system/frictionSolution");
   order_ = elementOrderOf(sol);

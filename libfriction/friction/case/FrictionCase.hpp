@@ -67,7 +67,10 @@ struct StepResult {
 class FrictionCase {
  public:
   /// Reads and validates every dictionary and the split mesh (InputError on any problem).
-  explicit FrictionCase(const std::string& caseDir);
+  /// `given`: fields the program running the case hands to its effects (GivenField.hpp; the
+  /// FreeFEM plug-in's pressure); each must be taken by an effect whose entry asks for it
+  /// (InputError naming constant/effects and what to add otherwise).
+  explicit FrictionCase(const std::string& caseDir, const GivenFields& given = {});
   /// elementOrder of caseDir/system/frictionSolution (1 or 2; InputError as the constructor
   /// gives it), before the case is read as a whole: the FreeFEM plug-in's frictionOrder.
   static int elementOrder(const std::string& caseDir);

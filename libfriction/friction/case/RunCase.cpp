@@ -122,7 +122,8 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     log << options.program;
     if (parallel::size() > 1) log << " (" << parallel::size() << " ranks)";
     log << "\n";
-    parallel::agree([&] { owned = std::make_unique<FrictionCase>(caseDir); }, exitStatusOf);
+    parallel::agree([&] { owned = std::make_unique<FrictionCase>(caseDir, options.given); },
+                    exitStatusOf);
     FrictionCase& c = *owned;
     // One run at a time writes a case: the lock before anything is written or removed. Rank 0
     // writes every file, so it holds it; the agreement tells the others whether it got it.

@@ -9,6 +9,8 @@
 #include <memory>
 #include <string>
 
+#include "friction/effect/GivenField.hpp"
+
 namespace friction {
 
 class FrictionCase;
@@ -20,6 +22,9 @@ struct RunCaseOptions {
   std::string program = "frictionSolver";
   /// How the caller asks for `overwrite`, for the messages that suggest it.
   std::string overwriteHint = "frictionSolver -overwrite";
+  /// Fields the caller hands to the case's effects (GivenField.hpp): the FreeFEM plug-in's
+  /// pressure; frictionSolver gives none.
+  GivenFields given;
 };
 
 /// Runs the case in caseDir; the log goes to `log`, errors to `err` as

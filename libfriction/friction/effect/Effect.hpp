@@ -40,6 +40,7 @@
 #include <Eigen/Core>
 
 #include "friction/core/Types.hpp"
+#include "friction/effect/GivenField.hpp"
 #include "friction/time/TimeFunction.hpp"
 
 namespace friction {
@@ -89,6 +90,15 @@ class Effect {
   /// Called once when the case is read, before any work: an effect that names parts of the
   /// mesh (regions) resolves and checks them here (InputError naming the key).
   virtual void setMesh(const Mesh& /*mesh*/) {}
+  /// Called once when the case is read, after setMesh: the fields the program running the
+  /// case gives it (GivenField.hpp; rows per vertex of `mesh`, the split mesh), maybe none. An
+  /// effect whose entry says its values come from the caller (porePressure's `data script;`)
+  /// takes its field here and returns the field's key; InputError naming its own key when the
+  /// field is not given. The default takes none: the case refuses a field no effect takes.
+  virtual std::vector<std::string> takeGivenFields(const GivenFields& /*given*/,
+                                                   const Mesh& /*mesh*/) {
+    return {};
+  }
   /// True if the effect gives a fluid pressure on the fractures: the tables and the fault's
   /// VTK then carry p and σ'_n.
   virtual bool givesFracturePressure() const { return false; }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "friction/core/Assert.hpp"
+#include "friction/core/InputError.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/effect/Effect.hpp"
@@ -57,14 +58,25 @@ class PorePressure : public Effect {
       }
     }
     if (d.found("data")) {
-      data_ = PointData::read(d, "data", caseDir, dim, "p", "pressure change [Pa]");
-      maxDistance_ = d.getScalarOr("maxDistance", -1.0, Bounds::positive());
+      dataWhere_ = d.location("data");
+      // The word script (unquoted) says the program running the case gives the values
+      // (GivenField.hpp); a file of that name is "./script".
+      const auto& v = d.values("data");
+      script_ = v.size() == 1 && v[0].isWord() && v[0].text == "script";
+      if (!script_) {
+        data_ = PointData::read(d, "data", caseDir, dim, "p", "pressure change [Pa]");
+        maxDistance_ = d.getScalarOr("maxDistance", -1.0, Bounds::positive());
+      } else if (d.found("maxDistance")) {
+        d.fail("maxDistance",
+               "key 'maxDistance': applies to a data file only (data script gives the values "
+               "at the mesh's vertices); remove it");
+      }
     }
   }
   std::string type() const override { return "porePressure"; }
   bool givesFracturePressure() const override { return true; }
   bool givesStressOffset() const override {
-    return change_.components() > 0 || !regions_.empty() || !data_.empty();
+    return change_.components() > 0 || !regions_.empty() || !data_.empty() || script_;
   }
 
   std::string describe() const override {
@@ -77,6 +89,7 @@ class PorePressure : public Effect {
     if (change_.components() > 0) s << ", everywhere " << form(change_);
     for (const RegionChange& r : regions_) s << ", in region " << r.key << " " << form(r.change);
     if (!data_.empty()) s << ", " << data_.describe();
+    if (script_) s << ", data from " << (given_.empty() ? "the script" : given_);
     s << "; one way (the pressure is given); the fractures without a pressure of their own "
          "take p_b";
     return s.str();
@@ -100,8 +113,22 @@ class PorePressure : public Effect {
     if (!data_.empty()) setData(mesh);
   }
 
+  std::vector<std::string> takeGivenFields(const GivenFields& given, const Mesh& mesh) override {
+    if (!script_) return {};
+    const auto at = given.find(kPorePressureChange);
+    if (at == given.end()) throw scriptMissing();
+    const GivenField& f = at->second;
+    f.check();
+    FRICTION_ASSERT(f.values.rows() == mesh.numPoints(), "a given field per split-mesh vertex");
+    dataTimes_ = f.times;
+    cellData_ = f.cellMeans(mesh);
+    given_ = f.describe();
+    return {kPorePressureChange};
+  }
+
   void bind(const EffectContext& c) override {
     if (!meshSet_) setMesh(c.split.mesh);
+    if (script_ && cellData_.empty()) throw scriptMissing();
     assembler_ = c.assembler;
     FRICTION_ASSERT(assembler_ || !givesStressOffset(), "porePressure needs the split assembler");
     // The loads of a unit change, assembled once: a step scales and adds them.
@@ -132,7 +159,7 @@ class PorePressure : public Effect {
       if (dp != 0.0) F += dp * regionLoad_[i];
     }
     if (!dataLoad_.empty()) {
-      const PointData::Bracket b = data_.bracket(t);
+      const PointData::Bracket b = PointData::bracketOf(dataTimes_, t);
       const Eigen::VectorXd& lower = dataLoad_[b.lower];
       if (b.weight == 0.0)
         F += lower;
@@ -147,7 +174,7 @@ class PorePressure : public Effect {
     Eigen::VectorXd region(static_cast<Eigen::Index>(regions_.size()));
     for (std::size_t i = 0; i < regions_.size(); ++i)
       region[static_cast<Eigen::Index>(i)] = regions_[i].change(t)[0];
-    const PointData::Bracket b = data_.bracket(t);
+    const PointData::Bracket b = PointData::bracketOf(dataTimes_, t);
     for (std::size_t k = 0; k < nodes.size() && k < on_.size(); ++k) {
       if (!on_[k]) continue;
       const Eigen::Index i = static_cast<Eigen::Index>(k);
@@ -189,7 +216,7 @@ class PorePressure : public Effect {
     if (c < cellChange_.size() && cellChange_[c] >= 0)
       dp += regions_[static_cast<std::size_t>(cellChange_[c])].change(t)[0];
     if (!cellData_.empty()) {
-      const PointData::Bracket b = data_.bracket(t);
+      const PointData::Bracket b = PointData::bracketOf(dataTimes_, t);
       const double lower = cellData_[b.lower][cell], upper = cellData_[b.upper][cell];
       dp += lower + b.weight * (upper - lower);
     }
@@ -227,7 +254,17 @@ class PorePressure : public Effect {
                             " m (default: the mesh's largest cell diameter); check the file's "
                             "units and coordinates");
       }
+    dataTimes_ = data_.times();
     cellData_ = data_.nearestValues(centroid);
+  }
+
+  /// `data script;` in a run the caller gave no values (frictionSolver on the command line).
+  InputError scriptMissing() const {
+    return InputError(dataWhere_,
+                      "key 'data': 'script' says the program running the case gives the rock's "
+                      "pore-pressure change, and this run was given none; run the case from its "
+                      "FreeFEM script with frictionSolve(\"case\", pressure = P, pressureTimes "
+                      "= T), or give the change by a file (data \"file\"), change or regions");
   }
 
   static std::string pointText(const Point& x) {
@@ -307,7 +344,11 @@ class PorePressure : public Effect {
   Eigen::VectorXd initialAt_;                ///< p_b0 per control node [Pa]
   Eigen::MatrixXd regionWeight_;             ///< per control node and region entry
   PointData data_;                           ///< `data "file";`: Δp_b at points at listed times
+  bool script_ = false;                      ///< `data script;`: Δp_b given by the caller
+  SourceLocation dataWhere_;                 ///< where the case says `data`
+  std::string given_;                        ///< the given field, for the log
   double maxDistance_ = -1;                  ///< [m]; < 0: the largest cell diameter
+  std::vector<double> dataTimes_;            ///< the data's listed times [s] (file or caller)
   std::vector<Eigen::VectorXd> cellData_;    ///< per listed time, Δp_b per cell [Pa]
   std::vector<Eigen::VectorXd> dataLoad_;    ///< per listed time, ∫ α_B Δp_b div φ_i
   std::vector<Eigen::VectorXd> nodeData_;    ///< per listed time, Δp_b per control node [Pa]

@@ -14,15 +14,20 @@
 //                                            // points at listed times (flow/PointData.hpp)
 //       maxDistance     50;                  // data: farthest row from a cell centroid [m]
 //                                            // (default: the mesh's largest cell diameter)
+//       // or: data script;  (the word, unquoted): Δp_b at the mesh's vertices at listed times,
+//       //   given by the program running the case (GivenField.hpp; the FreeFEM plug-in's
+//       //   frictionSolve("case", pressure = P, pressureTimes = T)); each cell takes the mean of
+//       //   its vertices' values; a run given none (frictionSolver) is refused naming the key
 //   }
 //
 // One way: the pressure is given, the deformation does not change it.
 // p_b(x, t) = p_b0(x) + Δp_b(x, t), Δp_b = change(t) + the change of the cell's region (0 in
 // regions not listed) + the data's, constant in each cell. The data: each cell takes, per
-// listed time, the value of the row of that time nearest its centroid, linear in time between
-// the listed times and constant beyond; a row farther than maxDistance from every centroid
-// lies outside the body (wrong units or coordinates) and is refused naming its line. Its load
-// is assembled once per listed time (the load is linear in Δp_b) and two are combined per step.
+// listed time, the value of the row of that time nearest its centroid (data script: the mean
+// of its vertices' values), linear in time between the listed times and constant beyond; a row
+// farther than maxDistance from every centroid lies outside the body (wrong units or coordinates)
+// and is refused naming its line. Its load is assembled once per listed time (the load is linear in
+// Δp_b) and two are combined per step.
 //
 // The initial state is in equilibrium with the in-situ stress (as initialStress: the boundary
 // conditions act on the perturbation; σ⁰ of initialStress is the total in-situ stress, so it

@@ -129,17 +129,17 @@ std::vector<Eigen::VectorXd> PointData::nearestValues(const std::vector<Point>& 
   return out;
 }
 
-PointData::Bracket PointData::bracket(double t) const {
+PointData::Bracket PointData::bracketOf(const std::vector<double>& times, double t) {
   Bracket b;
-  if (times_.empty() || t <= times_.front()) return b;
-  if (t >= times_.back()) {
-    b.lower = b.upper = times_.size() - 1;
+  if (times.empty() || t <= times.front()) return b;
+  if (t >= times.back()) {
+    b.lower = b.upper = times.size() - 1;
     return b;
   }
   b.upper =
-      static_cast<std::size_t>(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin());
+      static_cast<std::size_t>(std::upper_bound(times.begin(), times.end(), t) - times.begin());
   b.lower = b.upper - 1;
-  b.weight = (t - times_[b.lower]) / (times_[b.upper] - times_[b.lower]);
+  b.weight = (t - times[b.lower]) / (times[b.upper] - times[b.lower]);
   return b;
 }
 

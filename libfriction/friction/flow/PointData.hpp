@@ -70,7 +70,10 @@ class PointData {
   /// Per listed time, the value of its nearest row at each of `points`.
   std::vector<Eigen::VectorXd> nearestValues(const std::vector<Point>& points) const;
   /// Where t lies among the listed times (see Bracket).
-  Bracket bracket(double t) const;
+  Bracket bracket(double t) const { return bracketOf(times_, t); }
+  /// Where t lies among `times` (increasing; values given at them from elsewhere, e.g. a
+  /// GivenField's).
+  static Bracket bracketOf(const std::vector<double>& times, double t);
 
   /// An InputError at the row's file:line.
   [[noreturn]] void fail(const Row& row, const std::string& what) const;

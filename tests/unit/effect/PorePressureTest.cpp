@@ -20,6 +20,7 @@
 #include "friction/core/InputError.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/effect/Effect.hpp"
+#include "friction/effect/GivenField.hpp"
 #include "friction/fe/DirichletConditions.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fracture/FractureSystem.hpp"
@@ -468,4 +469,144 @@ TEST_CASE("porePressure: data rows outside the body or malformed are refused nam
              Catch::StartsWith("constant/effects:2") && Catch::Contains("none.dat"));
   CHECK_THAT(errorOf("type porePressure; biotCoefficient 1; maxDistance 1;"),
              Catch::Contains("maxDistance"));
+}
+
+TEST_CASE(
+    "porePressure: data script takes the caller's field, a uniform one gives the change's table",
+    "[effect][porePressure][givenField]") {
+  // The FreeFEM plug-in's pressure = P, pressureTimes = T (GivenField.hpp): Δp_b per vertex at
+  // listed times, each cell the mean of its vertices'. A uniform field holding the table's
+  // values gives the loads and stress offsets of `change` up to the round-off of scaling the
+  // load before or after the assembly (as `data` above), at, between and beyond the times.
+  const std::string change =
+      "type porePressure; biotCoefficient 0.8; change table ((0 0) (2 4e6) (4 -1e6));";
+  const std::string script = "type porePressure; biotCoefficient 0.8; data script;";
+  const Material strain = Material::fromYoungPoisson(10e9, 0.25);
+  for (int dim : {2, 3}) {
+    SplitMesh split;
+    split.mesh = dim == 2 ? test::unitSquareMesh(4, 0.3) : test::unitCubeMesh(3, 0.3);
+    const LagrangeSpace V(split.mesh, 2);
+    const ElasticityAssembler a(V, strain);
+    auto byChange = effect(change, dim);
+    auto byScript = effect(script, dim);
+    CHECK(byScript->givesStressOffset());
+    byScript->setMesh(split.mesh);
+    // No field given (frictionSolver on the command line): refused naming the key.
+    try {
+      byScript->takeGivenFields({}, split.mesh);
+      FAIL("no InputError");
+    } catch (const InputError& e) {
+      CHECK_THAT(e.what(), Catch::StartsWith("constant/effects:1: key 'data': 'script' says the "
+                                             "program running the case gives") &&
+                               Catch::Contains("frictionSolve(\"case\", pressure = P"));
+    }
+    GivenField f;
+    f.caller = "frictionSolve";
+    f.name = "pressure";
+    f.timesName = "pressureTimes";
+    f.times = {0, 2, 4};
+    f.values.resize(split.mesh.numPoints(), 3);
+    f.values.col(0).setConstant(0);
+    f.values.col(1).setConstant(4e6);
+    f.values.col(2).setConstant(-1e6);
+    CHECK(byScript->takeGivenFields({{kPorePressureChange, f}}, split.mesh) ==
+          std::vector<std::string>{kPorePressureChange});
+    CHECK_THAT(byScript->describe(),
+               Catch::Contains("data from frictionSolve's pressure at 3 times"));
+    std::ostringstream log;
+    const std::vector<ControlNode> nodes;
+    byChange->setMesh(split.mesh);
+    for (auto* e : {byChange.get(), byScript.get()})
+      e->bind(EffectContext{split, nodes, kNoFractures, log, &a});
+    for (double t : {-1.0, 1.0, 2.0, 3.0, 9.0}) {
+      Eigen::VectorXd Fc = Eigen::VectorXd::Zero(V.numDofs()), Fs = Fc;
+      byChange->addLoad(a, t, Fc);
+      byScript->addLoad(a, t, Fs);
+      if (t > 0) CHECK(Fc.norm() > 0);  // (before the first time: nothing, in both)
+      CHECK((Fs - Fc).norm() <= 1e-14 * Fc.norm());
+      double worst = 0;
+      for (Index c = 0; c < V.numCells(); ++c)
+        worst = std::max(worst, (byScript->stressOffset(c, Point::Zero(), t) -
+                                 byChange->stressOffset(c, Point::Zero(), t))
+                                    .cwiseAbs()
+                                    .maxCoeff());
+      CHECK(worst <= 1e-14 * 4e6);
+    }
+  }
+  CHECK_THAT(errorOf(script + " maxDistance 1;"),
+             Catch::Contains("key 'maxDistance': applies to a data file only"));
+  // A file named script: in quotes.
+  CHECK_THAT(errorOf("type porePressure; biotCoefficient 1; data \"script\";"),
+             Catch::Contains("script") && !Catch::Contains("'script' says"));
+}
+
+TEST_CASE("GivenField: checks, the unsplit mesh's numbering, the mean over each cell",
+          "[effect][givenField]") {
+  GivenField f;
+  f.caller = "frictionSolve";
+  f.name = "pressure";
+  f.timesName = "pressureTimes";
+  const auto error = [&f] {
+    try {
+      f.check();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no InputError)");
+  };
+  CHECK(error() ==
+        "pressureTimes: expected at least one time [s] (one per column of pressure), "
+        "got none");
+  f.times = {0, 1, 1};
+  f.values = Eigen::MatrixXd::Zero(4, 3);
+  CHECK(error() ==
+        "pressureTimes: entry 2 (1) does not follow entry 1 (1); expected times [s] "
+        "strictly increasing");
+  f.times = {0, 1};
+  CHECK(error() == "pressure: expected one column per time of pressureTimes (2), got 3 columns");
+  f.values = Eigen::MatrixXd::Zero(4, 2);
+  f.values(3, 1) = std::nan("");
+  CHECK(error() == "pressure: row 3, column 1 is nan; expected finite values");
+  f.values(3, 1) = 0;
+  CHECK(error() == "(no InputError)");
+
+  // A square of two triangles whose vertex 2 has a copy (split mesh vertex 4).
+  SplitMesh split;
+  split.mesh = test::unitSquareMesh(1);
+  REQUIRE(split.mesh.numPoints() == 4);
+  REQUIRE(split.mesh.numCells() == 2);
+  split.mesh.points.push_back(split.mesh.points[2]);
+  split.origin = {0, 1, 2, 3, 2};
+  for (Index& v : split.mesh.cellVertices)
+    if (v == 2) {
+      v = 4;  // the first cell with vertex 2 takes its copy
+      break;
+    }
+  f.values.col(1) << 1, 2, 3, 4;
+  const GivenField g = f.onSplitMesh(split);
+  REQUIRE(g.values.rows() == 5);
+  CHECK(g.values(4, 1) == 3);
+  CHECK(g.values.topRows(4) == f.values);
+  // A row per split-mesh vertex is taken as it is; another count is refused naming both.
+  CHECK(g.onSplitMesh(split).values == g.values);
+  f.values.conservativeResize(3, 2);
+  CHECK_THROWS_WITH(f.onSplitMesh(split),
+                    "pressure: expected one row per vertex of the split mesh (5) or of the "
+                    "unsplit mesh (4), got 3 rows");
+  // The mean over each cell of its vertices' values: the mean of a linear function is its value
+  // at the centroid; equal values give that value to the bit.
+  const Mesh m = test::unitSquareMesh(3, 0.3);
+  GivenField h = f;
+  h.values.resize(m.numPoints(), 2);
+  for (Index i = 0; i < m.numPoints(); ++i) {
+    h.values(i, 0) = 0.1;
+    h.values(i, 1) = 1 + 2 * m.points[i].x() - 3 * m.points[i].y();
+  }
+  const std::vector<Eigen::VectorXd> mean = h.cellMeans(m);
+  REQUIRE(mean.size() == 2);
+  for (Index c = 0; c < m.numCells(); ++c) {
+    const Point x = centroidOf(m, c);
+    CHECK(mean[0][c] == 0.1);
+    CHECK(std::abs(mean[1][c] - (1 + 2 * x.x() - 3 * x.y())) <= 1e-15 * 4);
+  }
 }
