@@ -801,11 +801,13 @@ class Fault3d:
                               width=0.004, pivot="mid", angles="xy", scale_units="xy",
                               scale=longest / (size / 10), minlength=0, zorder=3)
         if self.through is None:
-            dashed = "dashed: the profile's segment (-line)"
+            dashed = "the profile's segment (-line)"
         else:
-            dashed = f"dashed: the profiles along strike and dip,\n{self.through}"
-        axSlip.set_title("slip magnitude; arrows: the hanging wall's slip on the map plane;\n"
-                         + dashed, fontsize=10)
+            dashed = ("the profiles along strike and dip\nthrough the "
+                      + ("largest slip" if self.through.startswith("through the largest")
+                         else "centroid (no slip)"))
+        axSlip.set_title("slip magnitude; arrows: the hanging wall's slip;\ndashed: " + dashed,
+                         fontsize=10)
         if m.tractionTri is not None:
             pc = axST.tripcolor(m.tractionTri, table["ST"][m.keep], shading="gouraud",
                                 cmap="magma")
