@@ -164,7 +164,8 @@ grep -qF "(tractions, slip, pressure and effective normal stress)" <<<"$out" ||
 v=$work/roundOff
 rm -rf "$v" && cp -r "$c" "$v" && rm -rf "$v/postProcessing"
 for f in "$v"/[1-9]*/fractures/*.dat; do
-  awk '/^#/ || $NF == "tip" { print; next } { $8 = sprintf("%.17g", 0.2 + (NR % 5) * 1e-12); print }' \
+  awk '/^#/ || $NF == "tip" { print; next }
+       { $8 = sprintf("%.17g", 0.2 + (NR % 5) * 1e-12); print }' \
     "$f" >"$f.new" && mv "$f.new" "$f"
 done
 "$python" "$src/tests/regression/plotNoOffset.py" "$plot" -case "$v" ||

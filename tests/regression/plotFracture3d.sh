@@ -469,7 +469,8 @@ PY
 no=$work/noOffset
 cp -r "$disc" "$no" && rm -rf "$no/postProcessing" "$no/profile.csv" "$no/out.txt"
 for f in "$no"/*/fractures/fault.dat; do
-  awk '/^#/ || $NF == "tip" { print; next } { $15 = sprintf("%.17g", -2.8715e7 + 1e-3 * $15); print }' \
+  awk '/^#/ || $NF == "tip" { print; next }
+       { $15 = sprintf("%.17g", -2.8715e7 + 1e-3 * $15); print }' \
     "$f" >"$f.new" && mv "$f.new" "$f"
 done
 "$python" "$src/tests/regression/plotNoOffset.py" "$plot" -case "$no" -noConvergence ||

@@ -40,26 +40,38 @@ Run it with Debian's /usr/bin/python3, which sees python3-matplotlib.
 
 3D fracture tables (header "# x y z nx ny nz slip1 slip2 ...", README.md "frictionSolver"):
 the dimension is told from the header. Per fault, at the last of the chosen times:
-  maps (default <case>/postProcessing/fracture_<name>.png) in the fault's mean plane, axes t1,
-  t2 from the centroid of the nodes (the table's "# frame n (..) t1 (..) t2 (..)" line on a
-  flat fault; on a curved one the normalised mean of the nodes' normals n, t1 and t2 as the
-  solver's tangentBasis(n)); the nodes are projected on that plane and triangulated (Delaunay:
-  the convex hull of the projected nodes, flat border triangles removed):
-    slip magnitude [m] with arrows of the slip (slipX slipY slipZ projected on t1, t2),
+  maps (default <case>/postProcessing/fracture_<name>.png) in the fault's mean plane (normal n:
+  the table's "# frame n (..) ..." line on a flat fault, the normalised mean of the nodes'
+  normals on a curved one), from the centroid of the nodes: horizontal axis along strike,
+  vertical axis up dip (the shallow end at the top; the fault seen from its hanging wall; a
+  horizontal fault in map view, x right, y up), strike and dip as README.md ("Fluid
+  pressure") defines them, computed from n; z of the plane on a right-hand axis (exact on a
+  flat fault), the strike, its azimuth and the dip angle in the title. The nodes are
+  projected on that plane and triangulated (Delaunay: the convex hull of the projected
+  nodes, flat border triangles removed):
+    slip magnitude [m] with arrows of the hanging wall's slip relative to the footwall
+    (slipX slipY slipZ, their sign as slipStrike slipDip's, projected on the map axes),
     ST over the non-tip nodes, and the node states (tip, stick, slip, open) as markers; with
     a fluid pressure (columns pressure, sigmaNEffective) two more maps, p and sigma'_n, each
     with the outline of the slipping nodes (two rows of maps);
   profile (default <case>/postProcessing/fracture_<name>_profile.png): slipMagnitude,
   sigmaN, tauMagnitude and ST (and opening, pressure, sigmaNEffective where the tables have
-  them) along a segment, one curve per chosen time, sampled by linear
-  interpolation on the triangulation (tractions on the triangulation of the non-tip nodes)
-  against the distance from the segment's first point. The segment: -line
-  x0,y0,z0:x1,y1,z1 (two points in m, projected on the map plane), by default through the
-  centroid along t1 across the whole fault. Samples off the triangulated surface are left
-  out of the plot (nan in the CSV).
+  them) along segments, one curve per chosen time, sampled by linear interpolation on the
+  triangulation (tractions on the triangulation of the non-tip nodes). By default two
+  segments through the node of largest slip at the last time (the centroid when nothing
+  slips), each across the whole fault (to the triangulation's border): along strike
+  (left column, against the map's horizontal coordinate) and along dip from the deep end up
+  (right column, against the map's vertical coordinate: up dip to the right, with z on top).
+  -line x0,y0,z0:x1,y1,z1 (two points in m, projected on the map plane) gives one segment
+  instead, against the distance from its first point. Samples off the triangulated surface
+  are left out of the plot (nan in the CSV).
   -profile out.png, -profileCsv out.csv (time,distance,x,y,z,slipMagnitude,sigmaN,
   tauMagnitude,ST, then pressure,sigmaNEffective where the tables have them; x y z the sample
-  point on the segment), -samples N (default 201).
+  point on the segment, distance from its first point; the default pair adds a first column
+  profile, strike or dip), -samples N (default 201 per segment).
+The line printed for the maps names their axes ("axes: along strike (..) right, up dip (..)
+up, from the centroid (..)"). No axis of any figure uses an offset (a normal stress of
+-2.87e7 Pa is labelled as such, with a 1eN multiplier where needed).
 Every table is read and checked before any file is written, and each file is written under
 a temporary name and renamed: a failed run leaves no partial figure.
 """
@@ -811,7 +823,8 @@ class Fault3d:
         if m.tractionTri is not None:
             pc = axST.tripcolor(m.tractionTri, table["ST"][m.keep], shading="gouraud",
                                 cmap="magma")
-            fig.colorbar(pc, ax=axST, shrink=0.85, pad=self.pad, label=r"ST = $|\tau| / (-\sigma'_n)$")
+            fig.colorbar(pc, ax=axST, shrink=0.85, pad=self.pad,
+                         label=r"ST = $|\tau| / (-\sigma'_n)$")
             title = "slip tendency ST (non-tip nodes)"
             if self.law in COULOMB_LAWS and self.mu is not None:
                 title += f"; $\\mu_f$ = {self.mu:g}"
@@ -853,7 +866,8 @@ class Fault3d:
         else:
             pc = None
         if pc is not None:
-            fig.colorbar(pc, ax=axPressure, shrink=0.85, pad=self.pad, label="fluid pressure p [Pa]")
+            fig.colorbar(pc, ax=axPressure, shrink=0.85, pad=self.pad,
+                         label="fluid pressure p [Pa]")
         if m.tractionTri is not None:
             pc = axEffective.tripcolor(m.tractionTri, table["sigmaNEffective"][m.keep],
                                        shading="gouraud", cmap="cividis")
@@ -966,8 +980,8 @@ def main(argv):
     ap = argparse.ArgumentParser(
         prog="plotFracture", description=__doc__.split("\n")[0], add_help=False,
         epilog="2D tables: ST (or tractions) and slip along the arclength. 3D tables: maps of "
-        "slip magnitude (arrows: slip), ST and node states over each fault, and a profile "
-        "along -line. Details: the header of this script and README.md (plotFracture).")
+        "slip magnitude (arrows: slip), ST and node states over each fault, along strike "
+        "and up dip, and profiles along strike and dip through the largest slip (or -line). Details: the header of this script and README.md (plotFracture).")
     ap.add_argument("-h", "-help", "--help", action="help", help="print this help and exit")
     ap.add_argument("-case", required=True, help="case folder")
     ap.add_argument("-fracture", help="fracture name (default: every fracture)")
@@ -977,14 +991,15 @@ def main(argv):
     ap.add_argument("-noConvergence", action="store_true", help="no convergence figure")
     ap.add_argument("-line", metavar="x0,y0,z0:x1,y1,z1",
                     help="3D: the profile's segment, two points [m] projected on the fault's "
-                    "map plane (default: through the centroid along t1)")
+                    "map plane (default: two, along strike and along dip through the node "
+                    "of largest slip)")
     ap.add_argument("-profile", metavar="OUT.png",
                     help="3D: output PNG of the profile (default "
                     "postProcessing/fracture_<name>_profile.png)")
     ap.add_argument("-profileCsv", metavar="OUT.csv",
-                    help="3D: also write the profile's samples as CSV (time,distance,x,y,z,"
-                    "slipMagnitude,sigmaN,tauMagnitude,ST[,pressure,sigmaNEffective]; nan off "
-                    "the fault)")
+                    help="3D: also write the profile's samples as CSV ([profile,]time,"
+                    "distance,x,y,z,slipMagnitude,sigmaN,tauMagnitude,ST[,pressure,"
+                    "sigmaNEffective]; profile strike|dip without -line; nan off the fault)")
     ap.add_argument("-samples", metavar="N", help="3D: points along the profile (default 201)")
     # A value that starts with a minus sign (-line -250,-433,0:250,433,0) would be read as an
     # option: joined to its option as -line=VALUE, which argparse takes as it is.
