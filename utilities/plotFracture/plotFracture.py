@@ -511,14 +511,13 @@ class MapPlane:
     def describe(self):
         def vec(v):  # round-off (a frame written to 10 digits) shown as 0
             return "(" + " ".join(f"{c:.3g}" for c in np.where(np.abs(v) < 1e-9, 0.0, v)) + ")"
-        kind = "the fault's frame" if self.flat else "the mean of the nodes' normals: a " \
-            "curved fault, drawn projected on its mean plane"
+        kind = "the fault's frame" if self.flat else "curved: the nodes' mean normal"
         if self.horizontal:
             where = f"horizontal at z = {self.origin[2]:.6g} m: map view, x right, y up"
         else:
             where = (f"strike {vec(self.strike)}, {self.azimuth:.1f}° from x towards y; dip "
-                     f"{self.dipAngle:.1f}° (down dip {vec(self.dip)}); seen from the hanging "
-                     "wall, shallow end up")
+                     f"{self.dipAngle:.1f}° (down dip {vec(self.dip)});\nseen from the "
+                     "hanging wall, shallow end up")
         return f"{where}; n = {vec(self.n)} ({kind})"
 
     def axesText(self):
@@ -839,9 +838,10 @@ class Fault3d:
             if sel.any():
                 axState.scatter(m.u[sel], m.v[sel], marker=marker, s=14, color=color,
                                 label=f"{state} ({sel.sum()})")
-        axState.legend(fontsize=8, loc="upper left",
-                       bbox_to_anchor=(1.01 if self.plane.horizontal else 1.2, 1.0))
-        axState.set_title("node states", fontsize=10)
+        # The legend above the map, as its title: right of it the z axis would hide it.
+        axState.legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=4,
+                       title="node states", title_fontsize=10, frameon=False,
+                       handletextpad=0.2, columnspacing=1.0)
         for ax in axes:
             self.decorateMap(ax)
         status = statusWord(table["status"])
@@ -981,7 +981,8 @@ def main(argv):
         prog="plotFracture", description=__doc__.split("\n")[0], add_help=False,
         epilog="2D tables: ST (or tractions) and slip along the arclength. 3D tables: maps of "
         "slip magnitude (arrows: slip), ST and node states over each fault, along strike "
-        "and up dip, and profiles along strike and dip through the largest slip (or -line). Details: the header of this script and README.md (plotFracture).")
+        "and up dip, and profiles along strike and dip through the largest slip (or -line). "
+        "Details: the header of this script and README.md (plotFracture).")
     ap.add_argument("-h", "-help", "--help", action="help", help="print this help and exit")
     ap.add_argument("-case", required=True, help="case folder")
     ap.add_argument("-fracture", help="fracture name (default: every fracture)")
