@@ -5,7 +5,8 @@
 # not empty; tables with a fluid pressure (columns pressure, sigmaNEffective) get the panel of
 # p and sigma'_n (the figure's height says how many panels), the others not; the user errors
 # (no time folders, unknown fracture, unknown time, missing case) exit 1 with a message on
-# stderr and write nothing.
+# stderr and write nothing; no axis of any figure drawn with an offset (tested on ST equal to
+# mu_f up to round-off).
 # Usage: plotFracture.sh SPLIT_BINARY SOLVER_BINARY SOURCE_DIR WORK_DIR
 set -uo pipefail
 split=$1 solver=$2 src=$3 work=$4
@@ -158,4 +159,15 @@ v=$(withPressure pressureAboveConfinement 1)   # |sigma_n| < 0.1 on every node
 out=$("$python" "$plot" -case "$v" -noConvergence 2>&1) || fail "pressure above: $out"
 grep -qF "(tractions, slip, pressure and effective normal stress)" <<<"$out" ||
   fail "pressure above the confinement: the ST panel drawn: $out"
+# No axis offsets: every node slipping, ST = mu_f to round-off (here 0.2 + k 1e-12): an axis
+# offset would draw that noise as ticks of +-4e-12 above 0.2, a shape where there is none.
+v=$work/roundOff
+rm -rf "$v" && cp -r "$c" "$v" && rm -rf "$v/postProcessing"
+for f in "$v"/[1-9]*/fractures/*.dat; do
+  awk '/^#/ || $NF == "tip" { print; next }
+       { $8 = sprintf("%.17g", 0.2 + (NR % 5) * 1e-12); print }' \
+    "$f" >"$f.new" && mv "$f.new" "$f"
+done
+"$python" "$src/tests/regression/plotNoOffset.py" "$plot" -case "$v" ||
+  fail "round-off ST: a figure drawn with an axis offset"
 echo "plotFracture: ok"

@@ -1,9 +1,16 @@
 #!/usr/bin/env bash
-# Regression test for plotFracture.py on 3D fracture tables. frictionSolver does not write 3D
-# tables yet, so the cases are synthetic (plotFracture3dCase.py): a flat inclined penny with
-# the analytic penny-crack slip at two times, the same nodes on a curved cap ('# frame per
-# node'), a flat rectangle. Checks:
+# Regression test for plotFracture.py on 3D fracture tables. The cases are synthetic
+# (plotFracture3dCase.py): a flat inclined penny with the analytic penny-crack slip at two
+# times, the same nodes on a curved cap ('# frame per node'), a flat rectangle (and locked:
+# no slip), the penny's nodes with slip on a patch off the centre, the penny horizontal and
+# vertical. Checks:
 #  * the maps and the profile are real PNGs (magic bytes, not empty);
+#  * the maps' axes (printed: along strike right, up dip up) are README.md's strike and
+#    up dip, recomputed from the normal (a horizontal fault: x right, y up); the default
+#    profiles (CSV column profile: strike, dip) pass through the node of largest slip (the
+#    centroid when nothing slips), along strike (constant z) and up dip (deep end first), end
+#    to end across the fault; on the patch they sample its peak;
+#  * no axis of any figure uses an offset (plotNoOffset.py, sigma_n near -2.87e7 Pa);
 #  * the profile's samples (-profileCsv) lie on the segment and match the analytic values:
 #    sigmaN and tauMagnitude (linear in x y z, so reproduced by linear interpolation) to 1e-9
 #    relative (round-off); |slip| = K sqrt(A^2 - r^2) to the bound of linear interpolation
@@ -50,15 +57,19 @@ times = sorted({r["time"] for r in rows}, key=float)
 expectTimes = ["0.5", "1"] if sys.argv[3] == "disc" else ["1"]
 assert times == expectTimes, f"times {times}, expected {expectTimes}"
 scale = {"0.5": 0.5, "1": 1.0}
-# The segment: the samples' x y z on one straight line, distance = |p - p0|.
-pts = np.array([[float(r[k]) for k in "xyz"] for r in rows if r["time"] == "1"])
-dist = np.array([float(r["distance"]) for r in rows if r["time"] == "1"])
-assert len(pts) == 201, f"{len(pts)} samples, expected 201"
-assert np.allclose(np.linalg.norm(pts - pts[0], axis=1), dist, rtol=0, atol=1e-9), \
-    "distance is not the distance from the first point"
-d = (pts[-1] - pts[0]) / dist[-1]
-off = (pts - pts[0]) - np.outer((pts - pts[0]) @ d, d)
-assert np.abs(off).max() < 1e-9, "samples off the segment"
+# Each segment (the default pair: column profile, strike then dip; -line: no such column):
+# the samples' x y z on one straight line, distance = |p - p0|.
+for kind in dict.fromkeys(r.get("profile") for r in rows):
+    pts = np.array([[float(r[k]) for k in "xyz"] for r in rows
+                    if r["time"] == "1" and r.get("profile") == kind])
+    dist = np.array([float(r["distance"]) for r in rows
+                     if r["time"] == "1" and r.get("profile") == kind])
+    assert len(pts) == 201, f"{kind}: {len(pts)} samples, expected 201"
+    assert np.allclose(np.linalg.norm(pts - pts[0], axis=1), dist, rtol=0, atol=1e-9), \
+        f"{kind}: distance is not the distance from the first point"
+    d = (pts[-1] - pts[0]) / dist[-1]
+    off = (pts - pts[0]) - np.outer((pts - pts[0]) @ d, d)
+    assert np.abs(off).max() < 1e-9, f"{kind}: samples off the segment"
 # Interpolation bound for f = K sqrt(A^2 - r^2) on the disc's nodes: |f - I f| <= h^2/2 *
 # max |D^2 f| (h the longest triangle edge, <= 1.1 * A/20 for these rings) and
 # |D^2 f| <= K A^2 / (A^2 - r^2)^(3/2); taken at r = 0.8 A + h (the triangles that hold
@@ -105,7 +116,8 @@ noOutput() {  # no PNG and no temporary file anywhere in the case folder
   [[ -z $left ]] || fail "$2: a failed run left: $left"
 }
 
-# The flat penny, two times, default segment: through the centroid along t1.
+# The flat penny, two times, default profiles: along strike and along dip through the node of
+# largest slip (the centre C).
 disc=$work/disc
 "$python" "$make" "$disc" disc || fail "cannot write the synthetic penny"
 out=$("$python" "$plot" -case "$disc" -profileCsv "$disc/profile.csv" 2>&1); rc=$?
@@ -116,18 +128,128 @@ for png in "$disc"/postProcessing/fracture_fault{,_profile}.png; do
 done
 grep -qF "maps of slip magnitude, ST and node states at t = 1" <<<"$out" || fail "penny: $out"
 checkProfile "$disc/profile.csv" disc || fail "penny: default profile"
-# Its ends are the penny's rim along t1 (the default segment spans the fault).
-"$python" - "$disc/profile.csv" "$make" <<'PY' || fail "penny: default segment not along t1"
-import csv, os, sys
+
+# checkDefault CASE SHAPE CENTRE: the default profiles and the maps' axes of a flat fault.
+#  * the maps line says: "axes: along strike (s) right, up dip (u) up": s and -u the strike
+#    and dip of README.md ("Fluid pressure"), recomputed here from the fault's normal:
+#    s horizontal, u in the plane, up (z > 0) unless the fault is horizontal (then s = x,
+#    u = y: a map view), -u the steepest way down, and seen from above -u is s turned
+#    clockwise by 90 degrees (a vertical fault: u = z, s of azimuth in (-90, 90] from x);
+#  * the CSV's first column is profile (strike, then dip), 201 samples each;
+#  * both segments pass through CENTRE (the node of largest slip, or the centroid when
+#    nothing slips), the strike one along +s (constant z), the dip one along +u (from the
+#    deep end up), and both end on the fault's border (BORDER: distance from C in the map
+#    plane at the ends, "disc" or "rectangle").
+checkDefault() {
+  "$python" - "$1" "$make" "$2" "$3" "$4" <<'PY'
+import csv, os, re, sys
 import numpy as np
+case_dir, make, shape, centre, border = sys.argv[1:6]
+sys.path.insert(0, os.path.dirname(make))
+import plotFracture3dCase as case
+n, t1, t2 = case.shapeFrame(shape)
+# The README's rule, written out again (not the script's code).
+if abs(n[2]) > 1 - 1e-12:
+    strike, dip = np.array([1.0, 0, 0]), np.array([0, -1.0, 0])
+elif abs(n[2]) < 1e-12:
+    dip = np.array([0, 0, -1.0])
+    strike = np.array([-n[1], n[0], 0]) / np.hypot(n[0], n[1])
+    strike = strike if strike[0] > 0 or (strike[0] == 0 and strike[1] > 0) else -strike
+else:
+    dip = np.array([0, 0, -1.0]) + n[2] * n  # -z projected on the plane: the steepest way down
+    dip /= np.linalg.norm(dip)
+    # Seen from above, strike turned clockwise by 90 degrees, (sx, sy) -> (sy, -sx), is dip's
+    # horizontal part.
+    strike = np.array([-dip[1], dip[0], 0]) / np.hypot(dip[0], dip[1])
+    assert dip[2] < 0 and abs(dip @ n) < 1e-12 and abs(strike @ n) < 1e-12
+up = -dip
+out = open(os.path.join(case_dir, "out.txt")).read()
+m = re.search(r"axes: along strike \(([^()]*)\) right, up dip \(([^()]*)\) up", out)
+assert m, f"no map axes in: {out}"
+s, u = (np.array([float(c) for c in g.split()]) for g in m.groups())
+assert np.allclose(s, strike, atol=1e-6), f"map's horizontal axis {s}, strike is {strike}"
+assert np.allclose(u, up, atol=1e-6), f"map's vertical axis {u}, up dip is {up}"
+assert abs(n[2]) > 1 - 1e-12 or u[2] > 0, f"the map's vertical axis {u} does not go up in z"
+rows = list(csv.DictReader(open(os.path.join(case_dir, "profile.csv"))))
+assert list(rows[0])[:6] == ["profile", "time", "distance", "x", "y", "z"], list(rows[0])
+kinds = list(dict.fromkeys(r["profile"] for r in rows))
+assert kinds == ["strike", "dip"], kinds
+c = np.array([float(x) for x in centre.split(",")])
+for kind, along in (("strike", strike), ("dip", up)):
+    seg = [r for r in rows if r["profile"] == kind and r["time"] == "1"]
+    assert len(seg) == 201, f"{kind}: {len(seg)} samples"
+    pts = np.array([[float(r[k]) for k in "xyz"] for r in seg])
+    d = (pts[-1] - pts[0]) / np.linalg.norm(pts[-1] - pts[0])
+    assert np.allclose(d, along, atol=1e-9), f"{kind} segment along {d}, expected {along}"
+    q = c - pts[0]
+    assert np.linalg.norm(q - (q @ d) * d) < 1e-9, f"{kind} segment misses {c}"
+    assert 0 <= q @ d <= np.linalg.norm(pts[-1] - pts[0]), f"{c} not between the ends"
+    if kind == "strike":
+        assert np.ptp(pts[:, 2]) < 1e-9, f"strike segment not horizontal: z {np.ptp(pts[:, 2])}"
+    elif abs(n[2]) < 1 - 1e-12:
+        assert pts[-1, 2] > pts[0, 2], "the dip segment does not start at its deep end"
+    for p in (pts[0], pts[-1]):  # on the border, in the map plane's (t1, t2)
+        a, b = (p - case.C) @ t1, (p - case.C) @ t2
+        if border == "disc":  # the rim: a polygon of 120 nodes at radius A
+            r = np.hypot(a, b)
+            assert case.A * np.cos(np.pi / 120) - 1e-9 <= r <= case.A + 1e-9, \
+                f"{kind}: end at r = {r}, not on the rim"
+        else:
+            assert abs(max(abs(a), 2 * abs(b)) - 1) < 1e-9, f"{kind}: end ({a}, {b}) inside"
+    slip = np.array([float(r["slipMagnitude"]) for r in seg])
+    assert np.all(np.isfinite(slip)), f"{kind}: samples off the fault"
+print(f"  {shape}: map axes strike {s}, up dip {u}; the profiles along them through {c}, "
+      "end to end")
+PY
+}
+printf '%s\n' "$out" >"$disc/out.txt"
+checkDefault "$disc" disc 1,2,3 disc || fail "penny: default profiles or map axes"
+# The slip at the profiles' ends (the rim's tips) is 0, the largest at C (K A) is sampled.
+"$python" - "$disc/profile.csv" "$make" <<'PY' || fail "penny: slip along the default profiles"
+import csv, os, sys
 sys.path.insert(0, os.path.dirname(sys.argv[2]))
 import plotFracture3dCase as case
 rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["time"] == "1"]
-for r, sign in ((rows[0], -1), (rows[-1], 1)):
-    p = np.array([float(r[k]) for k in "xyz"])
-    assert np.allclose(p, case.C + sign * case.A * case.T1, atol=1e-9), p
-    assert abs(float(r["slipMagnitude"])) < 1e-9, "the rim (tips) has zero slip"
+for kind in ("strike", "dip"):
+    slip = [float(r["slipMagnitude"]) for r in rows if r["profile"] == kind]
+    assert abs(slip[0]) < 1e-9 and abs(slip[-1]) < 1e-9, f"{kind}: slip at the rim"
+    assert max(slip) > 0.999 * case.K * case.A, f"{kind}: the peak {max(slip)} missed"
 PY
+
+# Slip on a patch off the centre: the profiles go through its largest slip (a profile
+# through the centroid would cross little or none of it), and each samples its peak.
+pa=$work/patch
+"$python" "$make" "$pa" patch || fail "cannot write the patch case"
+out=$("$python" "$plot" -case "$pa" -profileCsv "$pa/profile.csv" 2>&1) || fail "patch: $out"
+printf '%s\n' "$out" >"$pa/out.txt"
+peak=$("$python" - "$make" <<'PY'
+import os, sys
+sys.path.insert(0, os.path.dirname(sys.argv[1]))
+import plotFracture3dCase as case
+print(",".join(f"{c:.17g}" for c in case.C + case.PATCH[0] * case.T1 + case.PATCH[1] * case.T2))
+PY
+)
+checkDefault "$pa" patch "$peak" disc || fail "patch: default profiles"
+"$python" - "$pa/profile.csv" "$make" <<'PY' || fail "patch: the profiles miss the slip"
+import csv, os, sys
+sys.path.insert(0, os.path.dirname(sys.argv[2]))
+import plotFracture3dCase as case
+rows = list(csv.DictReader(open(sys.argv[1])))
+peak = case.K * case.A / 2
+for kind in ("strike", "dip"):
+    slip = max(float(r["slipMagnitude"]) for r in rows if r["profile"] == kind)
+    assert slip > 0.99 * peak, f"{kind}: largest sampled slip {slip}, the patch's {peak}"
+PY
+isPng "$pa/postProcessing/fracture_fault_profile.png" || fail "patch: no profile PNG"
+# A horizontal fault (n pointing down): a map view, x right, y up; a vertical one: z up.
+for shape in horizontal vertical; do
+  f=$work/$shape
+  "$python" "$make" "$f" "$shape" || fail "cannot write the $shape case"
+  out=$("$python" "$plot" -case "$f" -profileCsv "$f/profile.csv" 2>&1) || fail "$shape: $out"
+  printf '%s\n' "$out" >"$f/out.txt"
+  checkDefault "$f" "$shape" 1,2,3 disc || fail "$shape: default profiles or map axes"
+  isPng "$f/postProcessing/fracture_fault.png" || fail "$shape: no maps PNG"
+done
 
 # A segment given with -line, its points off the plane (projected), chosen outputs.
 line=$("$python" - "$make" <<'PY'
@@ -153,6 +275,9 @@ rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["time"] == "1"]
 p0, p1 = (np.array([float(c) for c in s.split(",")]) for s in sys.argv[2].split(":"))
 assert np.allclose([float(rows[0][k]) for k in "xyz"], p0, atol=1e-9)
 assert np.allclose([float(rows[-1][k]) for k in "xyz"], p1, atol=1e-9)
+# One segment: the columns without 'profile'.
+header = open(sys.argv[1]).readline().strip()
+assert header == "time,distance,x,y,z,slipMagnitude,sigmaN,tauMagnitude,ST", header
 PY
 # checkProfile measures r in the plane, so it checks the projection too.
 checkProfile "$work/line.csv" disc || fail "-line profile"
@@ -166,23 +291,35 @@ isPng "$cap/postProcessing/fracture_fault.png" || fail "cap: no maps PNG"
 isPng "$cap/postProcessing/fracture_fault_profile.png" || fail "cap: no profile PNG"
 checkProfile "$cap/profile.csv" cap || fail "cap: profile"
 
-# The rectangle: the default segment spans its length (2 m) and is sampled end to end.
+# The rectangle: the default profiles cross it end to end (their ends on its border), through
+# its centre (the largest slip, K A, sampled exactly: the middle sample of a chord through the
+# centre of a centrally symmetric fault).
 rect=$work/rectangle
 "$python" "$make" "$rect" rectangle || fail "cannot write the synthetic rectangle"
 out=$("$python" "$plot" -case "$rect" -profileCsv "$rect/profile.csv" 2>&1) || fail "rectangle: $out"
 isPng "$rect/postProcessing/fracture_fault.png" || fail "rectangle: no maps PNG"
+printf '%s\n' "$out" >"$rect/out.txt"
+checkDefault "$rect" rectangle 1,2,3 rectangle || fail "rectangle: default profiles"
 "$python" - "$rect/profile.csv" "$make" <<'PY' || fail "rectangle: default profile"
 import csv, os, sys
 import numpy as np
 sys.path.insert(0, os.path.dirname(sys.argv[2]))
 import plotFracture3dCase as case
 rows = list(csv.DictReader(open(sys.argv[1])))
-slip = np.array([float(r["slipMagnitude"]) for r in rows])
-assert abs(float(rows[-1]["distance"]) - 2.0) < 1e-9, rows[-1]["distance"]
-assert np.all(np.isfinite(slip)), "samples of the default segment missing"
-mid = slip[len(slip) // 2]  # the centre node, exact: K A
-assert abs(mid - case.K * case.A) < 1e-12, (mid, case.K * case.A)
+for kind in ("strike", "dip"):
+    slip = np.array([float(r["slipMagnitude"]) for r in rows if r["profile"] == kind])
+    mid = slip[len(slip) // 2]  # the centre node, exact: K A
+    assert abs(mid - case.K * case.A) < 1e-12, (kind, mid, case.K * case.A)
 PY
+# Nothing slips (the rectangle locked): the profiles go through the centroid (its centre),
+# not through the first node (a corner), which has as much slip as any other: none.
+lk=$work/locked
+"$python" "$make" "$lk" locked || fail "cannot write the locked rectangle"
+out=$("$python" "$plot" -case "$lk" -profileCsv "$lk/profile.csv" 2>&1) || fail "locked: $out"
+printf '%s\n' "$out" >"$lk/out.txt"
+grep -qF "profiles along strike and dip through the centroid (no slip)" <<<"$out" ||
+  fail "locked: $out"
+checkDefault "$lk" locked 1,2,3 rectangle || fail "locked: default profiles"
 
 # A fault that folds over itself in its mean plane (here a node row written twice: the
 # second copy lands on the first in the map): drawn, with a warning saying so.
@@ -308,7 +445,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(sys.argv[3]))
 import plotFracture3dCase as case
 plain = open(sys.argv[2]).readline().strip()
-assert plain == "time,distance,x,y,z,slipMagnitude,sigmaN,tauMagnitude,ST", plain
+assert plain == "profile,time,distance,x,y,z,slipMagnitude,sigmaN,tauMagnitude,ST", plain
 header = open(sys.argv[1]).readline().strip()
 assert header == plain + ",pressure,sigmaNEffective", header
 rows = list(csv.DictReader(open(sys.argv[1])))
@@ -326,4 +463,16 @@ for r in rows:
 assert checked >= 300, f"only {checked} samples of sigma'_n"
 print(f"  pressure: {len(rows)} samples of p exact to 1e-9, {checked} of sigma'_n = sigma_n + p")
 PY
+# No axis offsets: sigma_n = -2.87e7 Pa varying by about 1e3 Pa (a deep fault's normal stress
+# with the small change slip brings) drawn as -2.87e7 with a 1e7 multiplier, never as ticks of
+# +-1000 above an offset (plotNoOffset.py checks every axis of every figure saved).
+no=$work/noOffset
+cp -r "$disc" "$no" && rm -rf "$no/postProcessing" "$no/profile.csv" "$no/out.txt"
+for f in "$no"/*/fractures/fault.dat; do
+  awk '/^#/ || $NF == "tip" { print; next }
+       { $15 = sprintf("%.17g", -2.8715e7 + 1e-3 * $15); print }' \
+    "$f" >"$f.new" && mv "$f.new" "$f"
+done
+"$python" "$src/tests/regression/plotNoOffset.py" "$plot" -case "$no" -noConvergence ||
+  fail "sigma_n near -2.87e7: a figure drawn with an axis offset"
 echo "plotFracture3d: ok"

@@ -13,6 +13,11 @@ Usage: plotFracture3dCase.py CASE SHAPE
              normals, '# frame per node'), the same slip as a function of the radius in the
              plane of the disc, at time 1
   rectangle  a flat 2 m x 1 m rectangle (21 x 11 nodes, the border tips), time 1
+  locked     the rectangle without slip (every slip column 0), time 1
+  patch      the disc's nodes with slip only on a patch off the centre: the penny-crack
+             slip of radius A/2 centred on the node PATCH (in the map plane), time 1
+  horizontal the disc with the normal NH = -z (a horizontal fault, n pointing down), time 1
+  vertical   the disc with the normal NV (a vertical fault), time 1
 sigmaN and tauMagnitude are linear in x y z of the point of the disc's plane under the node
 (the node itself on the disc and the rectangle), so linear in the map coordinates, and a
 linear interpolation reproduces them to round-off; ST = tauMagnitude / -sigmaN.
@@ -42,6 +47,15 @@ def tangentBasis(n):
 
 
 T1, T2 = tangentBasis(N)
+NH = np.array([0.0, 0.0, -1.0])
+NV = np.array([0.6, 0.8, 0.0])
+PATCH = (0.25 * np.cos(np.pi / 3), 0.25 * np.sin(np.pi / 3))  # a node of ring 10
+
+
+def shapeFrame(shape):
+    """The flat shapes' normal and tangents (the cap: the disc's, before the lift)."""
+    n = {"horizontal": NH, "vertical": NV}.get(shape, N)
+    return (n, *tangentBasis(n))
 
 
 def sigmaN(p):
@@ -69,6 +83,9 @@ def discPoints():
 
 def rows(shape, scale):
     out = []
+    N, T1, T2 = shapeFrame(shape)  # noqa: N806 (the disc's N, T1, T2 but for two shapes)
+    if shape == "locked":
+        shape, scale = "rectangle", 0.0
     if shape == "rectangle":
         grid = [(u, v, abs(u) > 0.999 or abs(v) > 0.499)
                 for v in np.linspace(-0.5, 0.5, 11) for u in np.linspace(-1.0, 1.0, 21)]
@@ -77,6 +94,9 @@ def rows(shape, scale):
     for u, v, tip in grid:
         if shape == "rectangle":
             mag = 0.0 if tip else K * A * np.sqrt((1 - u * u) * (1 - 4 * v * v))
+        elif shape == "patch":
+            r2 = (u - PATCH[0]) ** 2 + (v - PATCH[1]) ** 2
+            mag = 0.0 if tip else K * np.sqrt(max(A * A / 4 - r2, 0.0))
         else:
             mag = 0.0 if tip else K * np.sqrt(A * A - u * u - v * v)
         mag *= scale
@@ -115,6 +135,7 @@ def rows(shape, scale):
 
 
 def write(case, shape, time, scale):
+    N, T1, T2 = shapeFrame(shape)  # noqa: N806
     folder = os.path.join(case, time, "fractures")
     os.makedirs(folder, exist_ok=True)
     if shape == "cap":

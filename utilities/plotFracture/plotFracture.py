@@ -40,26 +40,38 @@ Run it with Debian's /usr/bin/python3, which sees python3-matplotlib.
 
 3D fracture tables (header "# x y z nx ny nz slip1 slip2 ...", README.md "frictionSolver"):
 the dimension is told from the header. Per fault, at the last of the chosen times:
-  maps (default <case>/postProcessing/fracture_<name>.png) in the fault's mean plane, axes t1,
-  t2 from the centroid of the nodes (the table's "# frame n (..) t1 (..) t2 (..)" line on a
-  flat fault; on a curved one the normalised mean of the nodes' normals n, t1 and t2 as the
-  solver's tangentBasis(n)); the nodes are projected on that plane and triangulated (Delaunay:
-  the convex hull of the projected nodes, flat border triangles removed):
-    slip magnitude [m] with arrows of the slip (slipX slipY slipZ projected on t1, t2),
+  maps (default <case>/postProcessing/fracture_<name>.png) in the fault's mean plane (normal n:
+  the table's "# frame n (..) ..." line on a flat fault, the normalised mean of the nodes'
+  normals on a curved one), from the centroid of the nodes: horizontal axis along strike,
+  vertical axis up dip (the shallow end at the top; the fault seen from its hanging wall; a
+  horizontal fault in map view, x right, y up), strike and dip as README.md ("Fluid
+  pressure") defines them, computed from n; z of the plane on a right-hand axis (exact on a
+  flat fault), the strike, its azimuth and the dip angle in the title. The nodes are
+  projected on that plane and triangulated (Delaunay: the convex hull of the projected
+  nodes, flat border triangles removed):
+    slip magnitude [m] with arrows of the hanging wall's slip relative to the footwall
+    (slipX slipY slipZ, their sign as slipStrike slipDip's, projected on the map axes),
     ST over the non-tip nodes, and the node states (tip, stick, slip, open) as markers; with
     a fluid pressure (columns pressure, sigmaNEffective) two more maps, p and sigma'_n, each
     with the outline of the slipping nodes (two rows of maps);
   profile (default <case>/postProcessing/fracture_<name>_profile.png): slipMagnitude,
   sigmaN, tauMagnitude and ST (and opening, pressure, sigmaNEffective where the tables have
-  them) along a segment, one curve per chosen time, sampled by linear
-  interpolation on the triangulation (tractions on the triangulation of the non-tip nodes)
-  against the distance from the segment's first point. The segment: -line
-  x0,y0,z0:x1,y1,z1 (two points in m, projected on the map plane), by default through the
-  centroid along t1 across the whole fault. Samples off the triangulated surface are left
-  out of the plot (nan in the CSV).
+  them) along segments, one curve per chosen time, sampled by linear interpolation on the
+  triangulation (tractions on the triangulation of the non-tip nodes). By default two
+  segments through the node of largest slip at the last time (the centroid when nothing
+  slips), each across the whole fault (to the triangulation's border): along strike
+  (left column, against the map's horizontal coordinate) and along dip from the deep end up
+  (right column, against the map's vertical coordinate: up dip to the right, with z on top).
+  -line x0,y0,z0:x1,y1,z1 (two points in m, projected on the map plane) gives one segment
+  instead, against the distance from its first point. Samples off the triangulated surface
+  are left out of the plot (nan in the CSV).
   -profile out.png, -profileCsv out.csv (time,distance,x,y,z,slipMagnitude,sigmaN,
   tauMagnitude,ST, then pressure,sigmaNEffective where the tables have them; x y z the sample
-  point on the segment), -samples N (default 201).
+  point on the segment, distance from its first point; the default pair adds a first column
+  profile, strike or dip), -samples N (default 201 per segment).
+The line printed for the maps names their axes ("axes: along strike (..) right, up dip (..)
+up, from the centroid (..)"). No axis of any figure uses an offset (a normal stress of
+-2.87e7 Pa is labelled as such, with a 1eN multiplier where needed).
 Every table is read and checked before any file is written, and each file is written under
 a temporary name and renamed: a failed run leaves no partial figure.
 """
@@ -72,6 +84,10 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")  # files only: no display needed
+# No axis offsets: a normal stress of -2.87e7 Pa varying by 8e3 Pa drawn as offset ticks of
+# +-8 000 makes noise look like structure; plain values (with a 1eN multiplier where needed)
+# keep the magnitude in sight. rcParams reach every scalar axis: maps, colorbars, twins.
+matplotlib.rcParams["axes.formatter.useoffset"] = False
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
@@ -349,19 +365,38 @@ def is3dTable(path):
     return headerNames(path)[:3] == ["x", "y", "z"]
 
 
-def tangentBasis(n):
-    """t1, t2 of a unit normal n as the solver chooses them (fracture/SignConventions.hpp):
-    t1 = the projection of the coordinate axis least aligned with n (ties to the earlier
-    axis), t2 = n x t1."""
-    axis = 0
-    for i in (1, 2):
-        if abs(n[i]) < abs(n[axis]):
-            axis = i
-    e = np.zeros(3)
-    e[axis] = 1.0
-    t1 = e - e.dot(n) * n
-    t1 /= np.linalg.norm(t1)
-    return t1, np.cross(n, t1)
+def strikeDip(n):
+    """The strike and down-dip unit vectors of a plane of unit normal n, as README.md ("Fluid
+    pressure") defines them and the solver's strikeDipBasis computes them: dip the steepest
+    way down the plane, strike horizontal in it with the plane dipping to its right (seen from
+    above, dip is strike turned clockwise by 90 degrees), whichever side n points to; a
+    vertical plane has dip = -z and the strike with x > 0 (or along +y); a horizontal one
+    strike = x, dip = -y."""
+    n = np.asarray(n, dtype=float)
+    down = np.array([0.0, 0.0, -1.0]) + n[2] * n
+    if abs(n[2]) >= 1 - 1e-12 or np.linalg.norm(down) < 1e-12:
+        return np.array([1.0, 0.0, 0.0]), np.array([0.0, -1.0, 0.0])
+    if abs(n[2]) <= 1e-12:
+        strike = np.array([-n[1], n[0], 0.0])
+        strike /= np.linalg.norm(strike)
+        if strike[0] < 0 or (strike[0] == 0 and strike[1] < 0):
+            strike = -strike
+        return strike, np.array([0.0, 0.0, -1.0])
+    dip = down / np.linalg.norm(down)
+    strike = np.array([-dip[1], dip[0], 0.0])
+    return strike / np.linalg.norm(strike), dip
+
+
+def hangingWallSign(normals):
+    """Per node, +1 where the table's slip (the + side's, n_Gamma from the + side to the - one)
+    is the hanging wall's relative to the footwall, -1 where it is the footwall's: the rule of
+    the tables' slipStrike, slipDip (the hanging wall is the side above the fault, of a
+    vertical fault the side to the right of strike)."""
+    sign = np.empty(len(normals))
+    for i, n in enumerate(normals):
+        strike, dip = strikeDip(n)
+        sign[i] = 1.0 if n @ np.cross(dip, strike) < 0 else -1.0
+    return sign
 
 
 def readTable3d(path):
@@ -429,13 +464,17 @@ def readTable3d(path):
 
 
 class MapPlane:
-    """The plane the maps are drawn in: origin (the nodes' centroid), axes t1, t2, normal n."""
+    """The plane the maps are drawn in: origin the nodes' centroid, normal n (the table's frame
+    on a flat fault, the mean of the nodes' normals on a curved one), map axes u along strike
+    (to the right) and v up dip (up: the shallow end at the top), so that a dipping fault is
+    seen from its hanging wall and a horizontal one from above (x right, y up). z on the plane
+    is z0 + v * up[2]."""
 
     def __init__(self, table):
         pos = np.column_stack([table["x"], table["y"], table["z"]])
         self.origin = pos.mean(axis=0)
         if table["frame"] is not None:
-            self.n, self.t1, self.t2 = table["frame"]
+            self.n = table["frame"][0]
             self.flat = True
         else:
             # Normals all point from the + side to the - side, so their sum is a mean
@@ -445,17 +484,47 @@ class MapPlane:
                 raise PlotError(f"{table['path']}: the nodes' normals cancel out: the fault "
                                 "has no mean plane to draw its maps in")
             self.n = total / np.linalg.norm(total)
-            self.t1, self.t2 = tangentBasis(self.n)
             self.flat = False
+        self.strike, self.dip = strikeDip(self.n)
+        self.up = -self.dip
+        # The angle between the plane and the horizontal, and the strike's azimuth from x
+        # towards y, in (-180, 180].
+        self.dipAngle = math.degrees(math.acos(min(1.0, abs(self.n[2]))))
+        self.azimuth = math.degrees(math.atan2(self.strike[1], self.strike[0]))
+        self.horizontal = self.up[2] < 1e-12
 
     def project(self, points):
         d = np.atleast_2d(points) - self.origin
-        return d @ self.t1, d @ self.t2
+        return d @ self.strike, d @ self.up
+
+    def point(self, u, v):
+        """The 3D points of map coordinates u, v (on the plane)."""
+        return (self.origin + np.outer(np.atleast_1d(u), self.strike)
+                + np.outer(np.atleast_1d(v), self.up))
+
+    def zOf(self, v):
+        return self.origin[2] + v * self.up[2]
+
+    def vOf(self, z):
+        return (z - self.origin[2]) / self.up[2]
 
     def describe(self):
-        vec = lambda v: "(" + " ".join(f"{c:.3g}" for c in v) + ")"  # noqa: E731
-        kind = "the fault's frame" if self.flat else "mean normal of a curved fault"
-        return f"n = {vec(self.n)}, t1 = {vec(self.t1)}, t2 = {vec(self.t2)} ({kind})"
+        def vec(v):  # round-off (a frame written to 10 digits) shown as 0
+            return "(" + " ".join(f"{c:.3g}" for c in np.where(np.abs(v) < 1e-9, 0.0, v)) + ")"
+        kind = "the fault's frame" if self.flat else "curved: the nodes' mean normal"
+        if self.horizontal:
+            where = f"horizontal at z = {self.origin[2]:.6g} m: map view, x right, y up"
+        else:
+            where = (f"strike {vec(self.strike)}, {self.azimuth:.1f}° from x towards y; dip "
+                     f"{self.dipAngle:.1f}° (down dip {vec(self.dip)});\nseen from the "
+                     "hanging wall, shallow end up")
+        return f"{where}; n = {vec(self.n)} ({kind})"
+
+    def axesText(self):
+        """The map axes as a parsable phrase for the line printed per figure."""
+        vec = lambda v: "(" + " ".join(f"{c:.6g}" for c in v + 0.0) + ")"  # noqa: E731
+        return (f"axes: along strike {vec(self.strike)} right, up dip {vec(self.up)} up, from "
+                f"the centroid {vec(self.origin)}")
 
 
 def triangulate(u, v, path, what):
@@ -480,12 +549,15 @@ class FaultMaps:
         self.table = table
         pos = np.column_stack([table["x"], table["y"], table["z"]])
         self.u, self.v = plane.project(pos)
+        # The arrows: the hanging wall's slip relative to the footwall (as slipStrike, slipDip),
+        # so that a normal fault's arrows point down dip whichever side n_Gamma points to.
+        normals = np.column_stack([table["nx"], table["ny"], table["nz"]])
         slip = np.column_stack([table["slipX"], table["slipY"], table["slipZ"]])
-        self.slipU, self.slipV = slip @ plane.t1, slip @ plane.t2
+        slip *= hangingWallSign(normals)[:, None]
+        self.slipU, self.slipV = slip @ plane.strike, slip @ plane.up
         self.tri = triangulate(self.u, self.v, table["path"], "nodes")
         # The projection on one plane is one-to-one only where the surface does not turn
         # past 90 degrees from it; nodes projected onto others drop out of the triangulation.
-        normals = np.column_stack([table["nx"], table["ny"], table["nz"]])
         turned = int(np.count_nonzero(normals @ plane.n <= 0))
         used = np.zeros(len(self.u), dtype=bool)
         used[self.tri.get_masked_triangles().ravel()] = True
@@ -566,6 +638,54 @@ def parseLine(text):
     return points[0], points[1]
 
 
+def chord(tri, u, v, pu, pv, du, dv):
+    """The parameters a <= 0 <= b where the map line (pu, pv) + t (du, dv) meets the border
+    of the triangulation (the edges of one unmasked triangle): the fault crossed end to end.
+    Falls back on the nodes' extent along (du, dv) when the line meets no border edge."""
+    triangles = tri.get_masked_triangles()  # the unmasked ones, despite the name
+    edges = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]],
+                                    triangles[:, [2, 0]]]), axis=1)
+    unique, count = np.unique(edges, axis=0, return_counts=True)
+    border = unique[count == 1]
+    ax, ay = u[border[:, 0]], v[border[:, 0]]
+    ex, ey = u[border[:, 1]] - ax, v[border[:, 1]] - ay
+    denom = du * ey - dv * ex
+    ok = np.abs(denom) > 1e-12 * np.hypot(ex, ey)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = ((ax - pu) * ey - (ay - pv) * ex) / denom
+        s = ((ax - pu) * dv - (ay - pv) * du) / denom
+    hit = ok & (s >= -1e-9) & (s <= 1 + 1e-9)
+    size = max(np.ptp(u), np.ptp(v))
+    if hit.any():
+        a, b = min(t[hit].min(), 0.0), max(t[hit].max(), 0.0)
+        if b - a > 1e-9 * size:
+            return a, b
+    along = (u - pu) * du + (v - pv) * dv
+    return min(along.min(), 0.0), max(along.max(), 0.0)
+
+
+class Segment:
+    """A profile: kind 'strike' or 'dip' (the default pair) or None (-line), its ends p0, p1,
+    the sample points and distances from p0, their map coordinates and the sampled values at
+    each time."""
+
+    def __init__(self, kind, p0, p1, samples, plane, maps):
+        self.kind, self.p0, self.p1 = kind, p0, p1
+        self.distance = np.linspace(0.0, np.linalg.norm(p1 - p0), samples)
+        self.points = p0 + np.outer(self.distance / self.distance[-1], p1 - p0)
+        self.u, self.v = plane.project(self.points)
+        self.profiles = [m.sample(self.u, self.v) for m in maps]
+
+    def axis(self):
+        """The abscissa of the profile's plot and its label: the map coordinate along the
+        segment for the default pair (as on the maps), the distance from p0 for -line."""
+        if self.kind == "strike":
+            return self.u, "along strike from the centroid [m]"
+        if self.kind == "dip":
+            return self.v, "up dip from the centroid [m] (shallower to the right)"
+        return self.distance, "distance along the segment from its first point [m]"
+
+
 class Fault3d:
     """Everything drawn for one 3D fault, computed (and checked) before any file is written."""
 
@@ -579,28 +699,57 @@ class Fault3d:
         if last.foldWarning:
             print(f"plotFracture: warning: {last.foldWarning}", file=sys.stderr)
         if line is None:
-            # Through the centroid along t1, across the whole fault.
-            a, b = last.u.min(), last.u.max()
-            o, t1 = self.plane.origin, self.plane.t1
-            self.line = (o + a * t1, o + b * t1)
-            self.lineText = "through the centroid along t1"
+            # Two profiles, along strike and along dip, through the node of largest slip at
+            # the last time (where the fault slips: a profile through the centroid may miss a
+            # slipping patch altogether), each across the whole fault; through the centroid
+            # where nothing slips.
+            slip = last.table["slipMagnitude"]
+            k = int(np.argmax(slip))
+            if slip[k] > 0:
+                pu, pv = last.u[k], last.v[k]
+                node = np.array([last.table[c][k] for c in "xyz"])
+                self.through = f"through the largest slip, {slip[k]:.3g} m at {fmtPoint(node)}"
+            else:
+                pu = pv = 0.0
+                self.through = "through the centroid (no slip)"
+            self.segments = []
+            for kind, du, dv in (("strike", 1.0, 0.0), ("dip", 0.0, 1.0)):
+                a, b = chord(last.tri, last.u, last.v, pu, pv, du, dv)
+                # The strike profile from left to right on the map, the dip one from the
+                # deep end up (up dip to the right, like the map's vertical axis).
+                ends = self.plane.point([pu + a * du, pu + b * du], [pv + a * dv, pv + b * dv])
+                self.segments.append(Segment(kind, ends[0], ends[1], samples, self.plane,
+                                             self.maps))
         else:
-            self.line = line
-            self.lineText = "-line"
-        p0, p1 = self.line
-        self.distance = np.linspace(0.0, np.linalg.norm(p1 - p0), samples)
-        self.points = p0 + np.outer(self.distance / self.distance[-1], p1 - p0)
-        self.lineU, self.lineV = self.plane.project(self.points)
-        self.profiles = [m.sample(self.lineU, self.lineV) for m in self.maps]
-        if not any(np.isfinite(p["slipMagnitude"]).any() for p in self.profiles):
-            raise PlotError(f"-line: the segment {fmtPoint(p0)} -> {fmtPoint(p1)} does not "
-                            f"cross fracture '{name}' (projected on its map plane)")
+            self.through = None
+            self.segments = [Segment(None, line[0], line[1], samples, self.plane, self.maps)]
+            seg = self.segments[0]
+            if not any(np.isfinite(p["slipMagnitude"]).any() for p in seg.profiles):
+                raise PlotError(f"-line: the segment {fmtPoint(seg.p0)} -> {fmtPoint(seg.p1)} "
+                                f"does not cross fracture '{name}' (projected on its map "
+                                "plane)")
         self.law = fractureEntry(case, name, "law")
         self.mu = frictionCoefficient(case, name)
+
+    def decorateMap(self, ax):
+        """Equal scales, the axes along strike and up dip, and z on a right-hand axis (z of the
+        map plane: exact on a flat fault) unless the fault is horizontal (z then constant: in
+        the title)."""
+        ax.set_aspect("equal")
+        ax.set_xlabel("along strike from the centroid [m]")
+        ax.set_ylabel("up dip from the centroid [m]")
+        if self.plane.horizontal:
+            ax.set_xlabel("x - x$_c$ [m] (along strike)")
+            ax.set_ylabel("y - y$_c$ [m] (up dip)")
+            return
+        z = ax.secondary_yaxis("right", functions=(self.plane.zOf, self.plane.vOf))
+        z.set_ylabel("z [m]" if self.plane.flat else "z of the map plane [m]")
 
     def drawMaps(self, out):
         m, t = self.maps[-1], self.times[-1]
         table = m.table
+        # Room for the z axis right of each map, before its colorbar.
+        self.pad = 0.05 if self.plane.horizontal else 0.17
         # Side by side for a roundish fault, stacked for an elongated one.
         aspect = np.ptp(m.u) / max(np.ptp(m.v), 1e-300)
         opening = "opening" in table  # a fourth map: the opening of fractures that open
@@ -631,13 +780,15 @@ class Fault3d:
         if opening:
             axOpen = axOpening if pressure else axes[3]
             pc = axOpen.tripcolor(m.tri, table["opening"], shading="gouraud", cmap="cividis")
-            fig.colorbar(pc, ax=axOpen, shrink=0.85, label="opening g [m]")
+            fig.colorbar(pc, ax=axOpen, shrink=0.85, pad=self.pad, label="opening g [m]")
             axOpen.set_title("opening g = $-[[u]] \\cdot n_\\Gamma$ (contact unilateral)",
                              fontsize=10)
         if pressure:
             self.drawPressureMaps(fig, m, axPressure, axEffective)
         pc = axSlip.tripcolor(m.tri, table["slipMagnitude"], shading="gouraud", cmap="viridis")
-        fig.colorbar(pc, ax=axSlip, shrink=0.85, label="slip magnitude |slip| [m]")
+        fig.colorbar(pc, ax=axSlip, shrink=0.85, pad=self.pad, label="slip magnitude |slip| [m]")
+        for seg in self.segments:  # under the arrows
+            axSlip.plot(seg.u, seg.v, "--", color="firebrick", lw=1.2)
         magnitude = np.hypot(m.slipU, m.slipV)
         if magnitude.max() > 0:
             # At most about 400 arrows: on a grid over the map when there are more nodes.
@@ -651,15 +802,28 @@ class Fault3d:
                 sv = np.ma.filled(mtri.LinearTriInterpolator(m.tri, m.slipV)(qu, qv), np.nan)
                 inside = np.isfinite(su) & np.isfinite(sv)
                 qu, qv, su, sv = qu[inside], qv[inside], su[inside], sv[inside]
-            axSlip.quiver(qu, qv, su, sv, color="white", edgecolor="black", linewidth=0.3,
-                          width=0.004, pivot="mid")
-        axSlip.plot(self.lineU, self.lineV, "--", color="firebrick", lw=1.2)
-        axSlip.set_title("slip magnitude; arrows: slip (x y z) projected on t1, t2;\n"
-                         f"dashed: the profile's segment ({self.lineText})", fontsize=10)
+            # The longest arrow a tenth of the map's size (autoscaling on the mean length
+            # stretches them across the map when only a small patch slips); none drawn for
+            # zero slip.
+            size = max(np.ptp(m.u), np.ptp(m.v))
+            longest = np.nanmax(np.hypot(su, sv)) if len(su) else 0.0
+            if longest > 0:
+                axSlip.quiver(qu, qv, su, sv, color="white", edgecolor="black", linewidth=0.3,
+                              width=0.004, pivot="mid", angles="xy", scale_units="xy",
+                              scale=longest / (size / 10), minlength=0, zorder=3)
+        if self.through is None:
+            dashed = "the profile's segment (-line)"
+        else:
+            dashed = ("the profiles along strike and dip\nthrough the "
+                      + ("largest slip" if self.through.startswith("through the largest")
+                         else "centroid (no slip)"))
+        axSlip.set_title("slip magnitude; arrows: the hanging wall's slip;\ndashed: " + dashed,
+                         fontsize=10)
         if m.tractionTri is not None:
             pc = axST.tripcolor(m.tractionTri, table["ST"][m.keep], shading="gouraud",
                                 cmap="magma")
-            fig.colorbar(pc, ax=axST, shrink=0.85, label=r"ST = $|\tau| / (-\sigma'_n)$")
+            fig.colorbar(pc, ax=axST, shrink=0.85, pad=self.pad,
+                         label=r"ST = $|\tau| / (-\sigma'_n)$")
             title = "slip tendency ST (non-tip nodes)"
             if self.law in COULOMB_LAWS and self.mu is not None:
                 title += f"; $\\mu_f$ = {self.mu:g}"
@@ -674,12 +838,12 @@ class Fault3d:
             if sel.any():
                 axState.scatter(m.u[sel], m.v[sel], marker=marker, s=14, color=color,
                                 label=f"{state} ({sel.sum()})")
-        axState.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-        axState.set_title("node states", fontsize=10)
+        # The legend above the map, as its title: right of it the z axis would hide it.
+        axState.legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=4,
+                       title="node states", title_fontsize=10, frameon=False,
+                       handletextpad=0.2, columnspacing=1.0)
         for ax in axes:
-            ax.set_aspect("equal")
-            ax.set_xlabel("along t1 from the centroid [m]")
-            ax.set_ylabel("along t2 from the centroid [m]")
+            self.decorateMap(ax)
         status = statusWord(table["status"])
         fig.suptitle(f"{os.path.basename(os.path.abspath(self.case))}: fault '{self.name}' at "
                      f"t = {t}" + (f" ({status})" if status and status != "converged" else "")
@@ -702,11 +866,12 @@ class Fault3d:
         else:
             pc = None
         if pc is not None:
-            fig.colorbar(pc, ax=axPressure, shrink=0.85, label="fluid pressure p [Pa]")
+            fig.colorbar(pc, ax=axPressure, shrink=0.85, pad=self.pad,
+                         label="fluid pressure p [Pa]")
         if m.tractionTri is not None:
             pc = axEffective.tripcolor(m.tractionTri, table["sigmaNEffective"][m.keep],
                                        shading="gouraud", cmap="cividis")
-            fig.colorbar(pc, ax=axEffective, shrink=0.85,
+            fig.colorbar(pc, ax=axEffective, shrink=0.85, pad=self.pad,
                          label=r"$\sigma'_n = \sigma_n + p$ [Pa] (compression < 0)")
         slipping = np.array([s == "slip" for s in table["state"]], dtype=float)
         outline = ""
@@ -719,47 +884,90 @@ class Fault3d:
                               fontsize=10)
 
     def drawProfile(self, out):
+        """One column per segment (along strike, along dip; or the -line), one row per
+        quantity, one curve per chosen time. Each panel has its own y range: a row shared
+        between the columns would flatten the variation along strike under the trend down
+        dip."""
+        profiles = [p for seg in self.segments for p in seg.profiles]
         keys = (("slipMagnitude", "slip magnitude [m]"), ("sigmaN", r"$\sigma_n$ [Pa]"),
                 ("tauMagnitude", r"$|\tau|$ [Pa]"), ("ST", r"ST = $|\tau| / (-\sigma'_n)$"))
-        if all("opening" in p for p in self.profiles):
+        if all("opening" in p for p in profiles):
             keys += (("opening", "opening g [m]"),)
-        if all("pressure" in p for p in self.profiles):
+        if all("pressure" in p for p in profiles):
             keys += (("pressure", "fluid pressure p [Pa]"),
                      ("sigmaNEffective", r"$\sigma'_n = \sigma_n + p$ [Pa]"))
-        fig, axes = plt.subplots(len(keys), 1, figsize=(8, 2.5 * len(keys)), sharex=True)
+        columns = len(self.segments)
+        fig, axes = plt.subplots(len(keys), columns, figsize=(8 if columns == 1 else 14,
+                                                              2.5 * len(keys)),
+                                 sharex="col", squeeze=False)
         colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(self.times) - 1)
                                  for i in range(len(self.times))])
-        for t, profile, table, color in zip(self.times, self.profiles, self.tables, colors):
-            word = statusWord(table["status"])
-            label = f"t = {t}" + (f" ({word})" if word and word != "converged" else "")
-            for ax, (key, _) in zip(axes, keys):
-                ax.plot(self.distance, profile[key], ".-", color=color, ms=2, lw=1, label=label)
-        if self.law in COULOMB_LAWS and self.mu is not None and self.mu > 0:
-            axes[3].axhline(self.mu, color="firebrick", ls="--", lw=1.2,
-                            label=f"$\\mu_f$ = {self.mu:g}")
-        for ax, (_, ylabel) in zip(axes, keys):
-            ax.set_ylabel(ylabel)
-            ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=8)
-        p0, p1 = self.line
-        axes[0].set_title(f"{os.path.basename(os.path.abspath(self.case))}: fault '{self.name}', "
-                          f"profile {fmtPoint(p0)} -> {fmtPoint(p1)}\n(linear interpolation on "
-                          "the triangulated fault; tractions on its non-tip nodes)", fontsize=10)
-        axes[-1].set_xlabel("distance along the segment from its first point [m]")
+        caseName = os.path.basename(os.path.abspath(self.case))
+        for column, seg in enumerate(self.segments):
+            x, xlabel = seg.axis()
+            for t, profile, table, color in zip(self.times, seg.profiles, self.tables, colors):
+                word = statusWord(table["status"])
+                label = f"t = {t}" + (f" ({word})" if word and word != "converged" else "")
+                for row, (key, _) in enumerate(keys):
+                    axes[row, column].plot(x, profile[key], ".-", color=color, ms=2, lw=1,
+                                           label=label)
+            if self.law in COULOMB_LAWS and self.mu is not None and self.mu > 0:
+                axes[3, column].axhline(self.mu, color="firebrick", ls="--", lw=1.2,
+                                        label=f"$\\mu_f$ = {self.mu:g}")
+            for row, (_, ylabel) in enumerate(keys):
+                ax = axes[row, column]
+                if column == 0:
+                    ax.set_ylabel(ylabel)
+                ax.grid(True, alpha=0.3)
+                ax.legend(fontsize=8)
+            axes[-1, column].set_xlabel(xlabel)
+            ends = f"{self.fmtPoint(seg.p0)} -> {self.fmtPoint(seg.p1)}"
+            if seg.kind is None:
+                title = (f"{caseName}: fault '{self.name}', profile {ends}\n(linear "
+                         "interpolation on the triangulated fault; tractions on its non-tip "
+                         "nodes)")
+            elif seg.kind == "strike":
+                title = f"along strike, left to right on the maps:\n{ends}"
+            else:
+                title = f"along dip, from the deep end up:\n{ends}"
+            axes[0, column].set_title(title, fontsize=9)
+            if seg.kind == "dip" and not self.plane.horizontal:
+                # z at the top of the dip column (of the map plane: exact on a flat fault).
+                z = axes[0, column].secondary_xaxis("top", functions=(self.plane.zOf,
+                                                                      self.plane.vOf))
+                z.set_xlabel("z [m]" if self.plane.flat else "z of the map plane [m]",
+                             fontsize=9)
+        if self.through is not None:
+            fig.suptitle(f"{caseName}: fault '{self.name}', profiles {self.through}\n(linear "
+                         "interpolation on the triangulated fault; tractions on its non-tip "
+                         "nodes)", fontsize=10)
         fig.tight_layout()
         saveFigure(fig, out)
         plt.close(fig)
 
+    def fmtPoint(self, p):
+        """A point for titles and messages, round-off below 1e-9 of the fault's size as 0."""
+        m = self.maps[-1]
+        size = max(np.ptp(m.u), np.ptp(m.v))
+        return fmtPoint(np.where(np.abs(p) < 1e-9 * size, 0.0, p))
+
     def profileCsv(self):
+        """The samples: time,distance,x,y,z then the values (pressure,sigmaNEffective last
+        where every table has them); the default pair adds a first column profile (strike or
+        dip), -line keeps the columns without it."""
+        profiles = [p for seg in self.segments for p in seg.profiles]
         keys = ("slipMagnitude", "sigmaN", "tauMagnitude", "ST")
         # A fluid pressure at every chosen time: its columns after the others.
-        if all("pressure" in p for p in self.profiles):
+        if all("pressure" in p for p in profiles):
             keys += ("pressure", "sigmaNEffective")
-        lines = ["time,distance,x,y,z," + ",".join(keys)]
-        for t, profile in zip(self.times, self.profiles):
-            for i, d in enumerate(self.distance):
-                values = [d, *self.points[i]] + [profile[k][i] for k in keys]
-                lines.append(",".join([t] + [f"{v:.12g}" for v in values]))
+        named = self.segments[0].kind is not None
+        lines = [("profile," if named else "") + "time,distance,x,y,z," + ",".join(keys)]
+        for seg in self.segments:
+            for t, profile in zip(self.times, seg.profiles):
+                for i, d in enumerate(seg.distance):
+                    values = [d, *seg.points[i]] + [profile[k][i] for k in keys]
+                    lines.append(",".join(([seg.kind] if named else []) + [t]
+                                          + [f"{v:.12g}" for v in values]))
         return "\n".join(lines) + "\n"
 
 
@@ -772,8 +980,9 @@ def main(argv):
     ap = argparse.ArgumentParser(
         prog="plotFracture", description=__doc__.split("\n")[0], add_help=False,
         epilog="2D tables: ST (or tractions) and slip along the arclength. 3D tables: maps of "
-        "slip magnitude (arrows: slip), ST and node states over each fault, and a profile "
-        "along -line. Details: the header of this script and README.md (plotFracture).")
+        "slip magnitude (arrows: slip), ST and node states over each fault, along strike "
+        "and up dip, and profiles along strike and dip through the largest slip (or -line). "
+        "Details: the header of this script and README.md (plotFracture).")
     ap.add_argument("-h", "-help", "--help", action="help", help="print this help and exit")
     ap.add_argument("-case", required=True, help="case folder")
     ap.add_argument("-fracture", help="fracture name (default: every fracture)")
@@ -783,14 +992,15 @@ def main(argv):
     ap.add_argument("-noConvergence", action="store_true", help="no convergence figure")
     ap.add_argument("-line", metavar="x0,y0,z0:x1,y1,z1",
                     help="3D: the profile's segment, two points [m] projected on the fault's "
-                    "map plane (default: through the centroid along t1)")
+                    "map plane (default: two, along strike and along dip through the node "
+                    "of largest slip)")
     ap.add_argument("-profile", metavar="OUT.png",
                     help="3D: output PNG of the profile (default "
                     "postProcessing/fracture_<name>_profile.png)")
     ap.add_argument("-profileCsv", metavar="OUT.csv",
-                    help="3D: also write the profile's samples as CSV (time,distance,x,y,z,"
-                    "slipMagnitude,sigmaN,tauMagnitude,ST[,pressure,sigmaNEffective]; nan off "
-                    "the fault)")
+                    help="3D: also write the profile's samples as CSV ([profile,]time,"
+                    "distance,x,y,z,slipMagnitude,sigmaN,tauMagnitude,ST[,pressure,"
+                    "sigmaNEffective]; profile strike|dip without -line; nan off the fault)")
     ap.add_argument("-samples", metavar="N", help="3D: points along the profile (default 201)")
     # A value that starts with a minus sign (-line -250,-433,0:250,433,0) would be read as an
     # option: joined to its option as -line=VALUE, which argparse takes as it is.
@@ -900,12 +1110,19 @@ def main(argv):
         parts = ["ST", "node states"] + (["opening"] if "opening" in last.table else []) + \
             (["pressure", "effective normal stress"] if last.pressure else [])
         what = ", ".join(parts[:-1]) + " and " + parts[-1]
-        written.append(f"{out} (maps of slip magnitude, {what} at t = {times[-1]})")
+        written.append(f"{out} (maps of slip magnitude, {what} at t = {times[-1]}; "
+                       f"{fault.plane.axesText()})")
         profile = a.profile or os.path.join(post, f"fracture_{name}_profile.png")
         os.makedirs(os.path.dirname(os.path.abspath(profile)), exist_ok=True)
         fault.drawProfile(profile)
-        p0, p1 = fault.line
-        written.append(f"{profile} (profile {fmtPoint(p0)} -> {fmtPoint(p1)})")
+        if fault.through is None:
+            seg = fault.segments[0]
+            written.append(f"{profile} (profile {fmtPoint(seg.p0)} -> {fmtPoint(seg.p1)})")
+        else:
+            written.append(f"{profile} (profiles along strike and dip {fault.through}: "
+                           + ", ".join(f"{seg.kind} {fault.fmtPoint(seg.p0)} -> "
+                                       f"{fault.fmtPoint(seg.p1)}"
+                                       for seg in fault.segments) + ")")
         if a.profileCsv:
             os.makedirs(os.path.dirname(os.path.abspath(a.profileCsv)), exist_ok=True)
             writeTextAtomically(a.profileCsv, fault.profileCsv())
