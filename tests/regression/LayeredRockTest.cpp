@@ -530,3 +530,85 @@ TEST_CASE("layered rock: a fault in a depleting layer takes the rock's pore pres
     }
   }
 }
+
+TEST_CASE(
+    "layered rock: gravity with a density per layer and the in-situ profile that balances "
+    "it move nothing",
+    "[regression][effects][materials]") {
+  // Reservoir below y = 1/2 (ρ = 2000 kg/m³), caprock above (ρ = 3000), the top free, g down:
+  // the lithostatic σ_yy(y) = −g ∫_y^1 ρ, σ_xx = σ_zz... = 0.5 σ_yy, piecewise linear with its
+  // kink at the interface. Given as a profile, its divergence balances the layered weight
+  // cell by cell (the interface is a mesh line), so the in-situ state alone moves nothing.
+  const double g = 9.81, top = 3000 * g * 0.5, bottom = top + 2000 * g * 0.5;  // |σ_yy| [Pa]
+  const auto num = [](double v) {
+    std::ostringstream o;
+    o.precision(17);
+    o << v;
+    return o.str();
+  };
+  const std::string profile = "profile ((0 (" + num(-0.5 * bottom) + " " + num(-bottom) +
+                              " 0)) (0.5 (" + num(-0.5 * top) + " " + num(-top) +
+                              " 0)) (1 (0 0 0)));";
+  const auto effects = [&](const std::string& density) {
+    return std::string(kEffectsHeader) + "gravity { type bodyForce; " + density +
+           " g (0 -9.81); }\ninSitu { type initialStress; " + profile + " }\n";
+  };
+  const auto layered = [&](const std::string& label, const std::string& density) {
+    auto c = std::make_unique<Case>("tests:layeredRock", label + "/layeredRock");
+    makeMesh(*c, 1);
+    c->edit("0/D", "top +\\{[^}]*\\}", "top { type free; }");
+    c->edit("0/D", "right +\\{ type free; \\}",
+            "right { type fixedDisplacement; components (x); value (0 0); }");
+    writeText(c->dir() / "constant" / "effects", effects(density));
+    return c;
+  };
+  auto balanced = layered("layered-gravity",
+                          "regions { reservoir { density 2000; } caprock { density 3000; } }");
+  REQUIRE(balanced->solve() == 0);
+  INFO(balanced->log());
+  CHECK_THAT(
+      balanced->log(),
+      Catch::Contains("Effect gravity: bodyForce, density reservoir 2000 caprock 3000 kg/m3"));
+  CHECK_THAT(balanced->log(), Catch::Contains("sigma0 piecewise linear in y, 3 rows"));
+  // The crack's tractions are σ⁰ resolved on it, node by node; nothing slips or moves.
+  const auto rows = balanced->table("1", "crack");
+  const double theta = 60 * M_PI / 180;
+  int checked = 0;
+  for (const Row& r : rows) {
+    if (r.state == "tip") continue;
+    const double syy =
+        r.y >= 0.5 ? -top * (1 - r.y) / 0.5 : -(top + (bottom - top) * (0.5 - r.y) / 0.5);
+    const double sxx = 0.5 * syy;
+    // Normal of the crack (its direction (cos θ, sin θ)): ±(−sin θ, cos θ).
+    const double nx = -std::sin(theta), ny = std::cos(theta);
+    const double sn = sxx * nx * nx + syy * ny * ny;
+    const double tau = (syy - sxx) * nx * ny;
+    CHECK(r.sigmaN == Approx(sn).margin(1e-9 * bottom));
+    CHECK(std::abs(r.tau) == Approx(std::abs(tau)).margin(1e-9 * bottom));
+    CHECK(std::abs(r.slip) <= 1e-12);
+    ++checked;
+  }
+  CHECK(checked > 10);
+  // The largest displacement of a case's 1/D (its "(x y z)" lines).
+  const auto largest = [](const Case& c) {
+    std::istringstream in(readText(c.dir() / "1" / "D"));
+    double m = 0;
+    int n = 0;
+    const std::regex vec("^\\(([^ ]+) ([^ ]+) ([^ ]+)\\)$");
+    std::smatch v;
+    for (std::string line; std::getline(in, line);)
+      if (std::regex_match(line, v, vec)) {
+        m = std::max(m, std::hypot(std::stod(v[1]), std::stod(v[2])));
+        ++n;
+      }
+    REQUIRE(n > 100);
+    return m;
+  };
+  // ρ g L² / E ≈ 3e-6 m is the scale of what gravity alone would move: round-off of it.
+  const double scale = 3000 * g / 1e10;
+  CHECK(largest(*balanced) <= 1e-9 * scale);
+  // One density for both layers with the same profile is out of balance: the body moves.
+  auto unbalanced = layered("layered-gravity-one", "density 2000;");
+  REQUIRE(unbalanced->solve() == 0);
+  CHECK(largest(*unbalanced) > 1e-3 * scale);
+}

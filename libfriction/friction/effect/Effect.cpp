@@ -10,7 +10,9 @@
 #include "friction/effect/FaultPressure.hpp"
 #include "friction/effect/PorePressure.hpp"
 #include "friction/fe/ElasticityAssembler.hpp"
+#include "friction/fe/MaterialMap.hpp"
 #include "friction/fracture/FractureSystem.hpp"
+#include "friction/mesh/Mesh.hpp"
 
 namespace friction {
 
@@ -49,7 +51,25 @@ class BodyForce : public Effect {
  public:
   BodyForce(const std::string& name, const Dictionary& d, int dim) : dim_(dim) {
     name_ = name;
-    density_ = d.getScalar("density", Bounds::positive());
+    // The density: one for the body, or per mesh region (layers have their own) with
+    // `density` then the one of the regions not listed.
+    if (d.found("regions")) {
+      if (!d.isDict("regions"))
+        d.fail("regions",
+               "key 'regions': expected a sub-dictionary of one entry per mesh region, e.g. "
+               "regions { reservoir { density 2300; } caprock { density 2600; } }");
+      const Dictionary& entries = d.subDict("regions");
+      for (const std::string& key : entries.keys()) {
+        if (!entries.isDict(key))
+          entries.fail(key, "key '" + key + "': expected a sub-dictionary { density ..; }");
+        regions_.push_back({key, entries.location(key),
+                            entries.subDict(key).getScalar("density", Bounds::positive()), -1});
+      }
+      if (d.found("density")) density_ = d.getScalar("density", Bounds::positive());
+    } else {
+      density_ = d.getScalar("density", Bounds::positive());
+    }
+    where_ = d.location();
     if (dim == 2) {
       g_ = d.getVector("g");
     } else {
@@ -60,10 +80,48 @@ class BodyForce : public Effect {
   std::string type() const override { return "bodyForce"; }
   std::string describe() const override {
     std::ostringstream s;
-    s << "density " << density_ << " kg/m3, g " << (dim_ == 2 ? vec(g_) : vec(g3_)) << " m/s2";
+    if (regions_.empty()) {
+      s << "density " << density_ << " kg/m3";
+    } else {
+      s << "density";
+      for (const Region& r : regions_) s << " " << r.key << " " << r.density;
+      if (density_ > 0) s << ", elsewhere " << density_;
+      s << " kg/m3";
+    }
+    s << ", g " << (dim_ == 2 ? vec(g_) : vec(g3_)) << " m/s2";
     return s.str();
   }
+  void setMesh(const Mesh& mesh) override {
+    if (regions_.empty()) return;
+    for (std::size_t i = 0; i < regions_.size(); ++i) {
+      regions_[i].number = meshRegionOf(regions_[i].key, regions_[i].where, mesh);
+      for (std::size_t j = 0; j < i; ++j)
+        if (regions_[j].number == regions_[i].number)
+          throw InputError(regions_[i].where, "region " + std::to_string(regions_[i].number) +
+                                                  " has two entries, '" + regions_[j].key +
+                                                  "' and '" + regions_[i].key +
+                                                  "' (expected one per region)");
+    }
+    cellDensity_.assign(mesh.cellRegion.size(), density_);
+    for (std::size_t c = 0; c < mesh.cellRegion.size(); ++c)
+      for (const Region& r : regions_)
+        if (mesh.cellRegion[c] == r.number) cellDensity_[c] = r.density;
+    if (density_ <= 0)
+      for (std::size_t c = 0; c < cellDensity_.size(); ++c)
+        if (cellDensity_[c] <= 0)
+          throw InputError(where_, "region " + std::to_string(mesh.cellRegion[c]) +
+                                       " has no density: list it under 'regions' or give "
+                                       "'density' for the regions not listed");
+  }
   void addLoad(const ElasticityAssembler& a, double, Eigen::VectorXd& F) const override {
+    if (!regions_.empty()) {
+      const Point g = dim_ == 2 ? Point(g_.x(), g_.y(), 0.0) : g3_;
+      F += a.cellBodyForce([&](Index c) {
+        const std::size_t k = static_cast<std::size_t>(c);
+        return Point((k < cellDensity_.size() ? cellDensity_[k] : density_) * g);
+      });
+      return;
+    }
     if (dim_ == 2)
       F += a.bodyForce(Vector2(density_ * g_));
     else
@@ -71,8 +129,17 @@ class BodyForce : public Effect {
   }
 
  private:
+  struct Region {
+    std::string key;
+    SourceLocation where;
+    double density = 0;
+    int number = -1;  ///< the mesh's region number (setMesh)
+  };
   int dim_ = 2;
-  double density_ = 0;
+  double density_ = 0;  ///< the body's, or the unlisted regions' (0: none given)
+  std::vector<Region> regions_;
+  std::vector<double> cellDensity_;
+  SourceLocation where_;
   Vector2 g_ = Vector2::Zero();
   Point g3_ = Point::Zero();
 };
@@ -81,6 +148,16 @@ class InitialStress : public Effect {
  public:
   InitialStress(const std::string& name, const Dictionary& d, int dim) : vertical_(dim - 1) {
     name_ = name;
+    // σ⁰ linear in the vertical coordinate (stress, gradient), or piecewise linear: a profile
+    // of rows (v (components)) at increasing heights v, for layers of their own densities.
+    if (d.alternative({{"stress"}, {"profile"}}) == 1) {
+      if (d.found("gradient"))
+        d.fail("gradient",
+               "key 'gradient' goes with 'stress' (σ⁰ linear in the height); a "
+               "'profile' gives σ⁰ at heights itself: remove one");
+      readProfile(d, dim);
+      return;
+    }
     if (dim == 2) {
       const std::vector<double> s = d.getScalarList("stress");
       if (s.size() != 3) d.fail("stress", "key 'stress': expected (sxx syy sxy) [Pa]");
@@ -102,6 +179,11 @@ class InitialStress : public Effect {
   std::string type() const override { return "initialStress"; }
   std::string describe() const override {
     std::ostringstream s;
+    if (!heights_.empty()) {
+      s << "sigma0 piecewise linear in " << (vertical_ == 1 ? "y" : "z") << ", " << heights_.size()
+        << " rows from " << heights_.front() << " to " << heights_.back() << " m";
+      return s.str();
+    }
     if (vertical_ == 1) {
       s << "sigma0 (xx yy xy) = (" << s0_(0, 0) << " " << s0_(1, 1) << " " << s0_(0, 1) << ") Pa";
       if (!grad_.isZero())
@@ -119,10 +201,46 @@ class InitialStress : public Effect {
     return s.str();
   }
   Eigen::Matrix3d initialStress(const Point& x) const override {
+    if (!heights_.empty()) {
+      const std::size_t k = interval(x[vertical_]);
+      const double w = (x[vertical_] - heights_[k]) / (heights_[k + 1] - heights_[k]);
+      return (1 - w) * rows_[k] + w * rows_[k + 1];
+    }
     return s0_ + x[vertical_] * grad_;
+  }
+  void setMesh(const Mesh& mesh) override {
+    if (heights_.empty() || mesh.points.empty()) return;
+    double lo = mesh.points[0][vertical_], hi = lo;
+    for (const Point& p : mesh.points)
+      lo = std::min(lo, p[vertical_]), hi = std::max(hi, p[vertical_]);
+    // The profile must span the body: beyond its rows σ⁰ would be a guess.
+    const double slack = 1e-9 * std::max(1.0, hi - lo);
+    if (heights_.front() > lo + slack || heights_.back() < hi - slack)
+      throw InputError(where_, "key 'profile': its rows span " +
+                                   std::string(vertical_ == 1 ? "y" : "z") + " from " +
+                                   formatNumber(heights_.front()) + " to " +
+                                   formatNumber(heights_.back()) + " m, the body from " +
+                                   formatNumber(lo) + " to " + formatNumber(hi) +
+                                   " m: give rows at (or beyond) the body's bottom and top");
+    // The divergence of σ⁰ per cell: the slope of the interval holding the cell's centroid
+    // (exact where the rows' heights are interfaces of the mesh, as layers are).
+    cellForce_.assign(static_cast<std::size_t>(mesh.numCells()), Point::Zero());
+    for (Index c = 0; c < mesh.numCells(); ++c) {
+      double v = 0;
+      const int n = mesh.dim + 1;
+      for (int j = 0; j < n; ++j) v += mesh.points[mesh.cellVertex(c, j)][vertical_] / n;
+      const std::size_t k = interval(v);
+      const Eigen::Matrix3d slope = (rows_[k + 1] - rows_[k]) / (heights_[k + 1] - heights_[k]);
+      cellForce_[static_cast<std::size_t>(c)] =
+          vertical_ == 1 ? Point(slope(0, 1), slope(1, 1), 0.0) : Point(slope.col(2));
+    }
   }
   bool givesStressOffset() const override { return true; }
   void addLoad(const ElasticityAssembler& a, double, Eigen::VectorXd& F) const override {
+    if (!heights_.empty()) {
+      F += a.cellBodyForce([this](Index c) { return cellForce_[static_cast<std::size_t>(c)]; });
+      return;
+    }
     // div σ⁰ = ∂σ⁰/∂v · e_v, v the vertical (σ⁰ varies with it only); zero for a uniform
     // in-situ stress, so the common case assembles nothing.
     if (grad_.isZero()) return;
@@ -153,8 +271,42 @@ class InitialStress : public Effect {
   }
 
  private:
+  /// profile ((v0 (components)) (v1 (...)) ...): heights strictly increasing, components
+  /// (sxx syy sxy) in 2D, (sxx syy szz sxy syz sxz) in 3D.
+  void readProfile(const Dictionary& d, int dim) {
+    where_ = d.location("profile");
+    const Table t = d.getTable("profile");
+    const std::size_t n = dim == 2 ? 3 : 6;
+    if (t.x.size() < 2)
+      d.fail("profile", "key 'profile': expected two rows or more ((height (components)) ...)");
+    for (std::size_t r = 0; r < t.x.size(); ++r) {
+      if (t.y[r].size() != n)
+        d.fail("profile",
+               "key 'profile': expected rows (height " +
+                   std::string(dim == 2 ? "(sxx syy sxy)" : "(sxx syy szz sxy syz sxz)") +
+                   "), got " + std::to_string(t.y[r].size()) + " components");
+      Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+      if (dim == 2)
+        m.topLeftCorner<2, 2>() << t.y[r][0], t.y[r][2], t.y[r][2], t.y[r][1];
+      else
+        m = symmetricTensor(t.y[r]);
+      heights_.push_back(t.x[r]);
+      rows_.push_back(m);
+    }
+  }
+  /// The profile's interval [k, k + 1] holding height v (the first or last beyond its rows).
+  std::size_t interval(double v) const {
+    const std::size_t j = static_cast<std::size_t>(
+        std::upper_bound(heights_.begin(), heights_.end(), v) - heights_.begin());
+    return std::min(std::max<std::size_t>(j, 1), heights_.size() - 1) - 1;
+  }
+
   int vertical_ = 1;  ///< the vertical axis: y (1) in 2D, z (2) in 3D
   Eigen::Matrix3d s0_ = Eigen::Matrix3d::Zero(), grad_ = Eigen::Matrix3d::Zero();
+  std::vector<double> heights_;        ///< profile: the rows' heights [m], increasing
+  std::vector<Eigen::Matrix3d> rows_;  ///< profile: σ⁰ at them [Pa]
+  std::vector<Point> cellForce_;       ///< profile: div σ⁰ per cell [N/m³] (setMesh)
+  SourceLocation where_;
 };
 
 class FracturePressure : public Effect {

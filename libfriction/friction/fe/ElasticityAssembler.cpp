@@ -170,6 +170,23 @@ Eigen::VectorXd assembleBodyForce(const LagrangeSpace& V, const VectorField& f) 
   return F;
 }
 
+template <int dim>
+Eigen::VectorXd assembleCellBodyForce(const LagrangeSpace& V,
+                                      const std::function<Point(Index)>& f) {
+  const SimplexQuadrature<dim> rule = simplexQuadrature<dim>(5);
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(V.numDofs());
+  for (Index c = 0; c < V.numCells(); ++c) {
+    const SimplexPoint<dim> value = local<dim>(f(c));
+    if (value.isZero()) continue;
+    const auto field = [&value](const SimplexPoint<dim>&) { return value; };
+    const NodeList nodes = V.cellNodes(c);
+    addBodyLoad<dim>(
+        V.degree(), cellGeometry<dim>(V.mesh(), c), rule, field,
+        [&](int i, const SimplexPoint<dim>& load) { F.segment<dim>(dim * nodes[i]) += load; });
+  }
+  return F;
+}
+
 /// F_i = ∫ b · αp · div φ_i (ElasticityAssembler::pressureLoad); alphaP(cell, l, x) gives αp
 /// at the point of barycentric coordinates l, x, of the cell.
 template <int dim, class Field>
@@ -308,6 +325,11 @@ Eigen::VectorXd ElasticityAssembler::bodyForce(const Vector2& f) const {
 Eigen::VectorXd ElasticityAssembler::bodyForce(const VectorField& f) const {
   return dispatch(space_->mesh(),
                   [&](auto d) { return assembleBodyForce<decltype(d)::value>(*space_, f); });
+}
+
+Eigen::VectorXd ElasticityAssembler::cellBodyForce(const std::function<Point(Index)>& f) const {
+  return dispatch(space_->mesh(),
+                  [&](auto d) { return assembleCellBodyForce<decltype(d)::value>(*space_, f); });
 }
 
 double ElasticityAssembler::pressureFactor(Index cell) const {

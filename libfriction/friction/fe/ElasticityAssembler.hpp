@@ -66,6 +66,9 @@ class ElasticityAssembler {
   Eigen::VectorXd bodyForce(const Vector2& f) const;
   /// Load vector of a body force f(x) [N/m³], by a degree-5 rule per cell.
   Eigen::VectorXd bodyForce(const VectorField& f) const;
+  /// Load vector of a body force constant in each cell, f(c) [N/m³] (a density per region,
+  /// the divergence of a piecewise-linear in-situ stress): F_i = Σ_c f(c) · ∫_c φ_i.
+  Eigen::VectorXd cellBodyForce(const std::function<Point(Index)>& f) const;
 
   /// Load vector of a pore pressure acting through a Biot coefficient (docs/method.md §12):
   /// F_i = ∫_Ω b · αp · div φ_i [N; N per m in 2D], with αp [Pa] = α_B p, given per cell and
