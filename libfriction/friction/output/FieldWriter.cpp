@@ -61,7 +61,7 @@ void strikeDipBasis(const Eigen::Vector3d& n, Eigen::Vector3d& strike, Eigen::Ve
   }
   if (std::abs(n.z()) <= 1e-12) {
     // A vertical fault dips neither way: dip = −e_z, and strike the horizontal direction in
-    // it whose azimuth lies in [0°, 180°) from x.
+    // it with a positive x component (or +y): its angle from x towards y in (−90°, 90°].
     dip = -Eigen::Vector3d::UnitZ();
     strike = Eigen::Vector3d(-n.y(), n.x(), 0).normalized();
     if (strike.x() < 0 || (strike.x() == 0 && strike.y() < 0)) strike = -strike;

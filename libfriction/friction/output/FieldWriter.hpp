@@ -64,7 +64,7 @@ struct FractureRow {
 /// points to: dip is the steepest way down the fault plane (−e_z projected on it), strike the
 /// horizontal direction in it with the fault dipping to its right (seen from above, dip is
 /// strike turned clockwise by 90°). A vertical fault (|n_z| ≤ 1e-12) dips neither way: dip =
-/// −e_z and strike the horizontal direction with azimuth in [0°, 180°) from x. A horizontal
+/// −e_z and strike the horizontal direction with x > 0 (or +e_y): (−90°, 90°] from x. A horizontal
 /// fault (|n_z| ≥ 1 − 1e-12) has neither: strike = e_x and dip = −e_y (rules stated in the
 /// README).
 void strikeDipBasis(const Eigen::Vector3d& n, Eigen::Vector3d& strike, Eigen::Vector3d& dip);
