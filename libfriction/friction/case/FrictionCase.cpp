@@ -840,8 +840,9 @@ Eigen::VectorXd FrictionCase::loadVector(double t) const {
 std::string FrictionCase::loadFields(double t, const Eigen::VectorXd& pressure) const {
   // A patch counts where it loads at all: a value other than zero at some time of its table.
   const auto loads = [](const TimeFunction& f) {
-    return !f.isConstant() ||
-           std::any_of(f(0).begin(), f(0).end(), [](double v) { return v != 0; });
+    if (!f.isConstant()) return true;
+    const std::vector<double> v = f(0);
+    return std::any_of(v.begin(), v.end(), [](double x) { return x != 0; });
   };
   const auto magnitude = [](const std::vector<double>& v) {
     double s = 0;
