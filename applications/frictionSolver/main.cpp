@@ -5,8 +5,10 @@
 // Sample run (after splitFractureNodes):
 //   frictionSolver -case cases/paperBenchmark
 //   mpirun -np 2 frictionSolver -parallel -case cases/paperBenchmark   (linearSolver mumps)
-// prints the settings, one line per time step (iterations, back-substitutions, J,
-// |D|/|Sigma|, max(ST − μ_f, 0), status) and End; writes time folders <t>/D,
+// prints the date, each setup phase with its wall time as it ends, the settings, one line per
+// time step (iterations, back-substitutions, J, |D|/|Sigma|, max(ST − μ_f, 0), status,
+// progress and time left, largest slip, the loads' scale, time since start) and End, each
+// line flushed as it is written; writes time folders <t>/D,
 // <t>/fractures/<name>.dat, <t>/solverStatus and postProcessing/convergence.dat.
 //
 // Exit codes: 0 every step converged; 1 bad input (file:line and what was expected), or a

@@ -6,7 +6,8 @@
 # (time folders, or convergence.dat) stops the run with exit 6 and a message naming the file,
 # and leaves what was written whole. A second run over existing time folders is refused;
 # -overwrite removes the earlier run's outputs and nothing else. A restart with another
-# deltaT or a later endTime continues from the saved time.
+# deltaT or a later endTime continues from the saved time. The log reaches its file line by
+# line (logFlushed).
 # Usage: noDataLoss.sh BIN_DIR SOURCE_DIR WORK_DIR SCENARIO [KILL_AT_RENAME_LIBRARY]
 set -uo pipefail
 bin=$1 src=$2 work=$3 scenario=$4 killLib=${5:-}
@@ -29,8 +30,8 @@ makeCase() {  # makeCase DIR STEPS
   mv "$stage" "$1/case"
   setKey "$1/case" deltaT "$(awk -v n="$2" 'BEGIN{printf "%.10g", 1/n}')"
   setKey "$1/case" writeInterval 5
-  # The case's own optimizer, condensed Newton: it builds S in the first step of every run,
-  # a restart included; the time folders must not show it.
+  # The case's own optimizer, condensed Newton: it builds S before the first step of every
+  # run, a restart included; the time folders must not show it.
   "$bin/splitFractureNodes" -case "$1/case" >"$1/case/log.splitFractureNodes" 2>&1 || fail "split failed"
   if ((${#launcher[@]})); then
     sed -i 's/^linearSolver .*/linearSolver mumps;/' "$1/case/system/frictionSolution"
@@ -651,6 +652,31 @@ parallelLock)
   solve "$c" "$c/log.2"
   ((rc == 0)) || fail "the unlocked case on 2 ranks: exit $rc: $(tail -3 "$c/log.2")"
   [[ ! -e $c/.frictionSolver.lock ]] || fail "the lock outlived the run"
+  ;;
+logFlushed)
+  # The log reaches a file line by line as it is written, not when the C library's buffer
+  # fills or the run ends: killed (SIGKILL, which flushes nothing) as the first time folder is
+  # committed, the run has left every line before it in the file — the setup phases with their
+  # times among them (about 2 KB: the whole log stayed in the buffer before). Killed at the
+  # second folder, the first step's line is there, with the fields after the progress.
+  [[ -f $killLib ]] || fail "no kill library given"
+  for n in 1 2; do
+    makeCase "$work/kill$n" 4
+    c=$work/kill$n/case
+    setKey "$c" writeInterval 1
+    FRICTION_KILL_AT_RENAME=".partial -> |$n" LD_PRELOAD=$preload "$bin/frictionSolver" -case "$c" >"$c/log.1" 2>&1
+    rc=$?
+    ((rc == 137)) || fail "[$n] not killed (exit $rc): nothing was tested"
+    for line in "frictionSolver, started " "Setup: case and split mesh read (" \
+      "Setup: numeric factorisation (CHOLMOD" "Setup: interface operator S, the complement of the" \
+      "Interface operator: " "Split mesh: " "Setup: Newton's interface operator in the fractures' frame"; do
+      grep -qF "$line" "$c/log.1" || fail "[$n] killed at time folder $n, the log lacks '$line': $(cat "$c/log.1")"
+    done
+    steps=$(grep -c "^Time = " "$c/log.1")
+    ((steps == n - 1)) || fail "[$n] killed at time folder $n: $steps step lines, expected $((n - 1))"
+  done
+  grep -qE '^Time = 0.25 .*  \[step 1/4, [0-9.e+-]+ s\]  maxSlip [0-9.e+-]+ m  loadDisplacement 0.008004 m  \[[0-9.e+-]+ s\]$' "$c/log.1" ||
+    fail "the first step's line: $(grep '^Time = ' "$c/log.1")"
   ;;
 *) fail "unknown scenario" ;;
 esac

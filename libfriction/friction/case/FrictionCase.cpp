@@ -30,6 +30,7 @@
 #include "friction/fracture/SplitMeshIO.hpp"
 #include "friction/output/FieldWriter.hpp"
 #include "friction/output/TimeFolder.hpp"
+#include "friction/time/RemainingTime.hpp"
 
 namespace friction {
 
@@ -137,7 +138,7 @@ std::string listNames(const std::vector<std::string>& names) {
 FrictionCase::~FrictionCase() = default;
 
 FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
-    : caseDir_(caseDir) {
+    : sinceStart_(), caseDir_(caseDir) {
   if (!fs::exists(caseDir))
     throw InputError(caseDir,
                      "the case folder does not exist (expected a folder with system/, "
@@ -387,13 +388,25 @@ void FrictionCase::printSettings(std::ostream& log) const {
           << "(or give only the change)\n";
 }
 
+void FrictionCase::logPhase(std::ostream& log, const std::string& phase, double seconds) const {
+  log << "Setup: " << phase << ": " << formatSeconds(seconds) << " ["
+      << formatSeconds(secondsSinceStart()) << "]\n";
+}
+
 FactorStatus FrictionCase::setup(std::ostream& log) {
   // Several ranks share the factorisation: they agree (parallel::agree) that each got there,
   // and that each finished what follows it, so that no failure leaves the others waiting in a
   // shared call.
   parallel::agree(
       [&] {
+        Stopwatch clock;
         system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
+        logPhase(log,
+                 "finite-element spaces and the fractures' frames (" +
+                     std::to_string(system_->unsplitSpace().numDofs()) + " dofs, P" +
+                     std::to_string(order_) + ", " + std::to_string(system_->size()) +
+                     " fracture control nodes)",
+                 clock.seconds());
         // Absolute γ and γ_n against their range around E/h, before the factorisation's work.
         // Where 1e8 E/h overflows, the case's units do (E near 1e300 Pa): the overflow
         // diagnoses of the factorisation and of the step say so, and name the cure.
@@ -413,7 +426,9 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
         findFloatingParts();
       },
       exitStatusOf);
-  FactorStatus status = system_->factor(linearSolver_, optimizer_->wantsInterfaceOperator());
+  FactorStatus status = system_->factor(
+      linearSolver_, optimizer_->wantsInterfaceOperator(),
+      [&](const std::string& phase, double seconds) { logPhase(log, phase, seconds); });
   // A part that nothing holds, or a direction no patch fixes: K is singular, whatever its
   // pivots say. The backends' pivot checks see it on one rank, but MUMPS on several does not
   // (measured on a free 3D body, cases/pennyCrack with every patch free: INFOG(28) null pivots
@@ -856,6 +871,44 @@ Eigen::VectorXd FrictionCase::loadVector(double t) const {
   return F;
 }
 
+std::string FrictionCase::loadFields(double t, const Eigen::VectorXd& pressure) const {
+  // A patch counts where it loads at all: a value other than zero at some time of its table.
+  const auto loads = [](const TimeFunction& f) {
+    if (!f.isConstant()) return true;
+    const std::vector<double> v = f(0);
+    return std::any_of(v.begin(), v.end(), [](double x) { return x != 0; });
+  };
+  const auto magnitude = [](const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x * x;
+    return std::sqrt(s);
+  };
+  bool displacement = false, traction = false;
+  double maxU = 0, maxT = 0;
+  for (const auto& p : bcs_->patches()) {
+    if (p.type == BoundaryConditions::Type::free || !loads(p.value)) continue;
+    const double m = magnitude(p.value(t));
+    if (p.type == BoundaryConditions::Type::fixedDisplacement) {
+      displacement = true;
+      maxU = std::max(maxU, m);
+    } else {
+      traction = true;
+      maxT = std::max(maxT, m);
+    }
+  }
+  std::ostringstream s;
+  s << std::setprecision(4);
+  if (displacement) s << "  loadDisplacement " << maxU << " m";
+  if (traction) s << "  loadTraction " << maxT << " Pa";
+  if (hasPressure_ && pressure.size() > 0) {
+    // Mean over the fracture surface (the nodes' lumped weights), held nodes included.
+    const Eigen::VectorXd& w = system_->weights();
+    const double area = w.sum();
+    s << "  meanPressure " << (area > 0 ? w.dot(pressure) / area : pressure.mean()) << " Pa";
+  }
+  return s.str();
+}
+
 Eigen::VectorXd FrictionCase::fracturePressure(double t) const {
   std::vector<std::string> names;
   for (const auto& g : split_.fractures) names.push_back(g.name);
@@ -1201,8 +1254,43 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   const auto start = std::chrono::steady_clock::now();
   const StopHandlerScope stopHandlers;  // for the time loop only
 
+  // What the optimizer forms once per run, formed here and not inside the first step, so that
+  // the log says what it is and what it costs (a P2 3D fault: seconds the first step would
+  // otherwise take without a word). Its back-substitutions are shown on the first step's line
+  // apart from the step's own, as before.
+  long prepareSolves = 0;
+  if (n > 0 && first <= time_->numSteps()) {
+    Stopwatch clock;
+    const long solves0 = sys.factorization().numSolves();
+    std::string built;
+    try {
+      built = optimizer_->prepare(sys, opening_);
+    } catch (const StopNow& s) {
+      if (parallel::size() > 1) {
+        log << "\nStopped while forming the interface operator (" << s.what()
+            << " twice: nothing computed)" << std::endl;
+        parallel::abort(5);
+      }
+      stoppedEarly_ = std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM") + ", then " +
+                      s.what() + ": stopped while forming the interface operator, nothing computed";
+      log << "\nStopped before the first step (" << stoppedEarly_ << ")\n";
+      return results;
+    }
+    prepareSolves = sys.factorization().numSolves() - solves0;
+    if (!built.empty()) {
+      logPhase(
+          log,
+          built + (prepareSolves > 0 ? ", " + std::to_string(prepareSolves) + " back-substitutions"
+                                     : std::string()),
+          clock.seconds());
+      log << "\n";
+    }
+  }
+  RemainingTime remaining;
+
   Eigen::VectorXd lastLoad, lastDirichlet, lastPressure;
   for (long k = first; k <= time_->numSteps(); ++k) {
+    Stopwatch stepClock;
     StepResult r;
     r.time = time_->time(k);
     const long solves0 = sys.factorization().numSolves();
@@ -1269,6 +1357,12 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     // The step's own solves: operators built once per run (Newton's condensed S) are counted
     // apart, so that a restarted run, which builds them again, writes the same numbers.
     r.backSubstitutions = sys.factorization().numSolves() - solves0 - r.report.setupSolves;
+    // The solves of prepare() above, on the first step that iterates (as when they were spent
+    // inside it).
+    if (prepareSolves > 0 && !r.reused && n > 0) {
+      r.report.setupSolves += prepareSolves;
+      prepareSolves = 0;
+    }
     r.equilibrium = r.reused ? results.back().equilibrium : sys.equilibriumResidual();
     r.J = last_.J;
     r.lastStepNorm = r.report.history.empty() ? 0 : std::max(0.0, r.report.history.back().stepNorm);
@@ -1295,6 +1389,13 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     }
     slip_ += last_.beta.head(perNode * n);
     lastBeta = last_.beta;
+    // The step line's trailer (README.md, "frictionSolver"): the largest slip and opening.
+    double maxSlip = 0, maxOpening = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (sys.freeMask()[i] == 0) continue;
+      maxSlip = std::max(maxSlip, blockNorm(slip_.segment(perNode * i, perNode)));
+      if (opening_) maxOpening = std::max(maxOpening, last_.beta[perNode * n + i]);
+    }
     // The time as its folder name: it identifies the step when a restart trims the history.
     std::ostringstream lines;
     lines.precision(8);
@@ -1372,13 +1473,25 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       if (count["junction"] > 0) log << " junction " << count["junction"];
     }
     log << (r.written ? "  (written)" : "");
-    // Progress: step k of n, elapsed, estimated remaining (on the step's own line, so a
-    // log gets no extra lines).
+    // Progress: step k of n, the time loop's elapsed time, the estimated remaining (on the
+    // step's own line, so a log gets no extra lines). The estimate is the recent steps' pace
+    // (RemainingTime.hpp), said once two steps are known.
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const long done = k - first + 1, total = time_->numSteps() - first + 1;
+    remaining.add(stepClock.seconds());
+    const long left = time_->numSteps() - k;
     log << "  [step " << k << "/" << time_->numSteps() << ", " << std::setprecision(3) << elapsed
-        << " s, ~" << elapsed / done * (total - done) << " s left]\n";
+        << " s";
+    if (left == 0 || remaining.ready()) log << ", ~" << remaining.estimate(left) << " s left";
+    log << "]";
+    // Appended after the fields above (scripts and tests read those by position): the largest
+    // accumulated slip, the largest opening, the loads' scale, and the wall clock since the
+    // run started.
+    std::ostringstream trailer;
+    trailer << std::setprecision(4) << "  maxSlip " << maxSlip << " m";
+    if (opening_) trailer << "  maxOpening " << maxOpening << " m";
+    log << trailer.str() << loadFields(r.time, pressure) << "  ["
+        << formatSeconds(secondsSinceStart()) << "]\n";
     log.flush();
     results.push_back(std::move(r));
     if (stopNow && k < time_->numSteps()) {

@@ -28,6 +28,7 @@
 #include "friction/control/ControlProblem.hpp"
 #include "friction/control/Optimizer.hpp"
 #include "friction/core/AtomicFile.hpp"
+#include "friction/core/LogLines.hpp"
 #include "friction/core/OutputError.hpp"
 #include "friction/effect/Effect.hpp"
 #include "friction/fe/MaterialMap.hpp"
@@ -106,6 +107,10 @@ class FrictionCase {
 
   /// Print the active models and settings (the log's first lines).
   void printSettings(std::ostream& log) const;
+  /// Wall time since the case began to be read [s]: the clock of the log's "[12.3 s]".
+  double secondsSinceStart() const { return sinceStart_.seconds(); }
+  /// A setup phase's log line, "Setup: <phase>: <seconds> s [<since start> s]", flushed.
+  void logPhase(std::ostream& log, const std::string& phase, double seconds) const;
 
   FractureSystem& system() { return *system_; }
   const SplitMesh& splitMesh() const { return split_; }
@@ -154,9 +159,14 @@ class FrictionCase {
   /// Mean length of the fracture edges [m] (0 without fractures): the h of γ's default.
   double meanFractureEdge() const;
   Eigen::VectorXd loadVector(double t) const;
+  /// The step line's load fields at t (README.md, "frictionSolver"): the largest prescribed
+  /// displacement and traction where 0/D gives any, the mean fluid pressure on the fractures
+  /// where an effect gives one.
+  std::string loadFields(double t, const Eigen::VectorXd& pressure) const;
   /// Effective fluid pressure per control node at t [Pa] (zero without fracturePressure).
   Eigen::VectorXd fracturePressure(double t) const;
 
+  Stopwatch sinceStart_;  ///< started before anything is read
   std::string caseDir_;
   std::unique_ptr<TimeControl> time_;
   SplitMesh split_;

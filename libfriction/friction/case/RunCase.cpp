@@ -16,6 +16,7 @@
 
 #include "friction/case/CaseLock.hpp"
 #include "friction/case/FrictionCase.hpp"
+#include "friction/core/LogLines.hpp"
 #include "friction/core/OutputError.hpp"
 #include "friction/core/Parallel.hpp"
 #include "friction/linalg/SparseFactor.hpp"
@@ -106,6 +107,9 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
   // and would wait for the other ranks forever).
   std::unique_ptr<FrictionCase> owned;
   Keep keep{kept, owned};
+  // Each line of the log reaches the file or pipe when it ends: a long setup is seen phase by
+  // phase, not all at once when the C library's buffer fills.
+  const FlushEachLine flushLines(log);
   const auto report = [&](const std::exception_ptr& error) {
     std::string message;
     const int status = describeFailure(error, options.program, message);
@@ -121,10 +125,19 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     // call.
     log << options.program;
     if (parallel::size() > 1) log << " (" << parallel::size() << " ranks)";
-    log << "\n";
+    log << ", started " << localDateTime() << "\n";
     parallel::agree([&] { owned = std::make_unique<FrictionCase>(caseDir, options.given); },
                     exitStatusOf);
     FrictionCase& c = *owned;
+    {
+      const Mesh& m = c.splitMesh().mesh;
+      c.logPhase(log,
+                 "case and split mesh read (" + std::to_string(m.numPoints()) + " points, " +
+                     std::to_string(m.numCells()) +
+                     (m.dim == 3 ? " tetrahedra, " : " triangles, ") +
+                     std::to_string(c.splitMesh().fractures.size()) + " fracture(s))",
+                 c.secondsSinceStart());
+    }
     // One run at a time writes a case: the lock before anything is written or removed. Rank 0
     // writes every file, so it holds it; the agreement tells the others whether it got it.
     std::unique_ptr<CaseLock> lock;

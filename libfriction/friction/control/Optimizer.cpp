@@ -465,6 +465,21 @@ OptimizerReport& SemismoothNewton::finish(ControlProblem& p, const ControlState&
   return r;
 }
 
+std::string SemismoothNewton::prepare(SlipResponse& resp, bool withOpening) {
+  // The krylov variant's probing needs a ControlProblem: it stays in the first step.
+  if (variant_ != Variant::condensed || resp.size() == 0) return "";
+  S_ = resp.interfaceOperator(interfaceMethod_, withOpening);
+  cachedFor_ = &resp;
+  std::ostringstream s;
+  s << "Newton's interface operator in the fractures' frame (S_tt " << S_.Stt.rows() << " x "
+    << S_.Stt.cols() << (withOpening ? ", with the openings' rows and columns" : "") << ", from "
+    << (S_.method == InterfaceMethod::factorisation ? "the factorisation's complement"
+        : S_.method == InterfaceMethod::blockSolves ? "blocks of back-substitutions"
+                                                    : "one dual solve per node")
+    << ")";
+  return s.str();
+}
+
 OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
   if (variant_ == Variant::krylov) return minimizeKrylov(p, beta);
   SlipResponse& resp = p.response();

@@ -70,6 +70,11 @@ class Optimizer {
   /// docs/method.md §4, "Fractures that open"); the case refuses that combination.
   virtual bool handlesOpening() const { return true; }
 
+  /// Build what the optimizer forms once per run (Newton's condensed S in the fractures'
+  /// frame) now, before the first step, so that the log says what it costs when it is done
+  /// instead of hiding it in the first step. Returns what was built, for the log ("" for
+  /// nothing). The back-substitutions it spends are the caller's to count.
+  virtual std::string prepare(SlipResponse& /*response*/, bool /*withOpening*/) { return ""; }
   /// Minimise from beta (in: start, out: result).
   virtual OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) = 0;
   virtual std::string name() const = 0;
@@ -182,6 +187,7 @@ class SemismoothNewton : public Optimizer {
         interfaceMethod_(interfaceMethod),
         preconditioner_(preconditioner),
         probingDistance_(probingDistance) {}
+  std::string prepare(SlipResponse& response, bool withOpening) override;
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "semismoothNewton"; }
   /// Active-set changes over the last call's iterations (a cycling diagnostic).

@@ -424,7 +424,13 @@ int FractureSystem::numPartlyHeldOnDirichlet() const {
   return c;
 }
 
-FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfaceOperator) {
+FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfaceOperator,
+                                    const PhaseReport& phases) {
+  Stopwatch clock;
+  const auto report = [&](const std::string& phase) {
+    const double seconds = clock.lap();
+    if (phases) phases(phase, seconds);
+  };
   const Index n = size();
   // A Dirichlet condition at a copy's unsplit node fixing the Cartesian component c forbids
   // the jump's component along e_c: the jump, tangential, is held along the projection of e_c
@@ -534,6 +540,7 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
     for (Index d = 0; d < unsplitSpace_->numDofs(); ++d)
       if (!dirichlet_->isFixed(d)) ft.emplace_back(row++, d, 1.0);
     borderB_ = fromTriplets(row, unsplitSpace_->numDofs(), ft) * Bj;
+    report("assembly of the split stiffness at the fractures and the traction operators");
   } else {
     B_.resize(unsplitSpace_->numDofs(), 0);
     Tx_.resize(0, unsplitSpace_->numDofs());
@@ -541,7 +548,10 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
     Tf_.resize(0, splitSpace_->numDofs());
   }
 
-  if (consistent_ && !buildRecovery()) return FactorStatus::failed;
+  if (consistent_) {
+    if (!buildRecovery()) return FactorStatus::failed;
+    report("P2 fault tractions: the consistent mass of the fractures factored");
+  }
 
   factor_ = std::make_unique<SparseFactor>(backend);
   // Several ranks sharing a backend that takes summands: each rank assembles its own cells (a
@@ -564,7 +574,10 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
   reduced_ = std::make_unique<ReducedSystem>(K, *dirichlet_);
   K = Eigen::SparseMatrix<double>();  // the reduced blocks hold what the run needs
   reduced_->setSummedOverRanks(own);
+  report("assembly of the stiffness (" + std::to_string(unsplitSpace_->numDofs()) +
+         " dofs) and the Dirichlet conditions taken out");
   factor_->setSummedOverRanks(own);
+  factor_->setPhaseReport(phases);
   if (withInterfaceOperator && !jumpDofs_.empty())
     return factor_->factorWithSchur(reduced_->matrix(), borderB_, borderC_);
   return factor_->factor(reduced_->matrix());

@@ -84,7 +84,10 @@ class FractureSystem : public SlipResponse {
   /// withInterfaceOperator, the factorisation also delivers the interface operator M·S
   /// (docs/method.md §4): the stiffness in the variables (free dofs, jumps) is factored
   /// with the jumps last, and the Schur complement on the jumps is M·S.
-  FactorStatus factor(const std::string& backend = "cholmod", bool withInterfaceOperator = false);
+  /// `phases` is told each part of the work as it ends (assemblies, the factorisation's
+  /// phases), for the log.
+  FactorStatus factor(const std::string& backend = "cholmod", bool withInterfaceOperator = false,
+                      const PhaseReport& phases = {});
   const SparseFactor& factorization() const { return *factor_; }
 
   /// This step's data: the load vector on the SPLIT space (tractions, body force) [N], and

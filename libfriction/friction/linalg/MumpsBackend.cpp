@@ -234,6 +234,7 @@ class MumpsBackend : public SparseFactor::Backend {
     dmumps_c(&id_);
     analysis_.analysisSeconds = wallClock() - clock;
     if (id_.INFOG(1) < 0) return verdict();
+    reportPhase("ordering and analysis (MUMPS)", analysis_.analysisSeconds);
     clock = wallClock();
     id_.ICNTL(14) = 30;
     for (int attempt = 0; attempt < 4; ++attempt) {
@@ -246,6 +247,8 @@ class MumpsBackend : public SparseFactor::Backend {
     analysis_.numericSeconds = wallClock() - clock;
     const FactorStatus status = verdict();
     record();
+    if (status == FactorStatus::ok)
+      reportPhase("numeric factorisation (MUMPS)", analysis_.numericSeconds);
     if (status == FactorStatus::ok && schur) {
       clock = wallClock();
       Eigen::MatrixXd S(m, m);
@@ -259,6 +262,9 @@ class MumpsBackend : public SparseFactor::Backend {
       S.triangularView<Eigen::StrictlyLower>() = S.transpose();
       schur->swap(S);
       analysis_.complementSeconds = wallClock() - clock;
+      reportPhase("interface operator S, the complement of the " + std::to_string(m) +
+                      " jump unknowns (MUMPS)",
+                  analysis_.complementSeconds);
     }
     return status;
   }

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/Parallel.hpp"
@@ -190,10 +192,12 @@ class CholmodBackend : public SparseFactor::Backend {
     const double analysisSeconds = secondsSince(clock);
     recordAnalysis(llt_.cholmodFactor());
     if (!llt_.cholmodFactor() || llt_.cholmod().status < 0) return FactorStatus::failed;
+    reportPhase(orderingPhase(), analysisSeconds);
     clock = std::chrono::steady_clock::now();
     llt_.factorize(A);
     analysis_.analysisSeconds = analysisSeconds;
     analysis_.numericSeconds = secondsSince(clock);
+    reportPhase(numericPhase(), analysis_.numericSeconds);
     const int status = llt_.cholmod().status;
     if (status == CHOLMOD_NOT_POSDEF || llt_.info() == Eigen::NumericalIssue)
       return FactorStatus::notPositiveDefinite;
@@ -309,9 +313,12 @@ class CholmodBackend : public SparseFactor::Backend {
     // 4. Numeric factorisation. A pivot failure in A's columns is A's (the caller reports
     //    it); one in the border should not happen with the shift: fall back.
     const double analysisSeconds = secondsSince(clock);
+    reportPhase(orderingPhase(), analysisSeconds);
     clock = std::chrono::steady_clock::now();
     cholmod_l_factorize(&view, L, &cm);
     const double numericSeconds = secondsSince(clock);
+    if (cm.status >= 0 && cm.status != CHOLMOD_NOT_POSDEF)
+      reportPhase(numericPhase(), numericSeconds);
     clock = std::chrono::steady_clock::now();
     CholmodMatrix().swap(Ab);  // the factor holds everything now
     if (cm.status == CHOLMOD_NOT_POSDEF) {
@@ -366,6 +373,9 @@ class CholmodBackend : public SparseFactor::Backend {
     analysis_.analysisSeconds = analysisSeconds;
     analysis_.numericSeconds = numericSeconds;
     analysis_.complementSeconds = secondsSince(clock);
+    reportPhase("interface operator S, the complement of the " + std::to_string(m) +
+                    " jump unknowns (dense, LAPACK)",
+                analysis_.complementSeconds);
     bordered_ = L;
     rows_ = n;
     status = FactorStatus::ok;
@@ -386,6 +396,19 @@ class CholmodBackend : public SparseFactor::Backend {
     // A supernodal factor stores its supernodes as dense blocks, with the zeros that
     // amalgamation let in: that, not the entry count, is the memory.
     analysis_.bytes = L ? 8.0 * static_cast<double>(L->is_super ? L->xsize : L->nzmax) : 0;
+  }
+
+  std::string orderingPhase() const {
+    std::ostringstream s;
+    s << std::setprecision(3) << "ordering and analysis ("
+      << (analysis_.ordering.empty() ? "CHOLMOD" : analysis_.ordering) << ", " << analysis_.entries
+      << " entries in the factor, " << analysis_.bytes / 1e9 << " GB)";
+    return s.str();
+  }
+  std::string numericPhase() const {
+    std::ostringstream s;
+    s << std::setprecision(3) << "numeric factorisation (CHOLMOD, " << analysis_.flops << " flops)";
+    return s.str();
   }
 
   void freeBordered() {
@@ -542,6 +565,8 @@ SparseFactor& SparseFactor::operator=(SparseFactor&&) noexcept = default;
 
 FactorStatus SparseFactor::factor(const SparseMatrix& A) { return factorImpl(A, nullptr, nullptr); }
 
+void SparseFactor::setPhaseReport(PhaseReport report) { phaseReport_ = std::move(report); }
+
 bool SparseFactor::takesSummands() const { return impl_->takesSummands(); }
 
 void SparseFactor::setSummedOverRanks(bool summed) {
@@ -579,6 +604,8 @@ FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix*
   // The bordered factorisation where the backend has one (and the border is finite: a
   // non-finite border is left to the blocked solves, whose results then say so).
   impl_->setPivotTolerance(pivotTolerance_);
+  impl_->onPhase = phaseReport_;
+  impl_->phasesReported = 0;
   bool bordered = false;
   if (B && C) {
     bool finite = true;
@@ -588,6 +615,9 @@ FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix*
     bordered = finite && impl_->factorBordered(A, *B, *C, schur_, status_, schurFallbackReason_);
   }
   if (!bordered) status_ = impl_->factor(A);
+  // A backend that does not tell its phases: the factorisation as one.
+  if (impl_->phasesReported == 0 && phaseReport_ && status_ == FactorStatus::ok)
+    phaseReport_("factorisation (" + backend_ + ")", secondsSince(start));
   analysis_ = impl_->analysis();
   factored_ = true;
   status_ = judgePivots(A);
@@ -628,6 +658,10 @@ FactorStatus SparseFactor::factorWithSchur(const SparseMatrix& A, const SparseMa
     schur_ = schurBySolves(B, C);
     schurSolves_ = numSolves_ - solves0;
     schurSeconds_ = secondsSince(start);
+    if (phaseReport_)
+      phaseReport_("interface operator S, the complement of the " + std::to_string(B.cols()) +
+                       " jump unknowns by " + std::to_string(schurSolves_) + " back-substitutions",
+                   schurSeconds_);
   }
   return status_;
 }

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "friction/core/InputError.hpp"
+#include "friction/core/LogLines.hpp"
 
 namespace friction {
 
@@ -147,6 +148,10 @@ class SparseFactor {
   void setSummedOverRanks(bool summed);
   bool summedOverRanks() const { return summed_; }
 
+  /// Told each phase of the factorisations as it ends (ordering and analysis, numeric
+  /// factorisation, the complement), for a log that says what a long setup is doing.
+  void setPhaseReport(PhaseReport report);
+
   /// Order of the factored matrix (0 before the first factor()).
   Eigen::Index rows() const { return rows_; }
   /// Number of factor() calls (successful or not).
@@ -179,6 +184,7 @@ class SparseFactor {
   double schurSeconds_ = 0.0;
   std::string schurFallbackReason_;
   FactorAnalysis analysis_;
+  PhaseReport phaseReport_;
 
   // factor() and factorWithSchur(): A alone, or bordered by B and C where the backend can.
   FactorStatus factorImpl(const Eigen::SparseMatrix<double>& A,

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "friction/core/LogLines.hpp"
 #include "friction/linalg/SparseFactor.hpp"
 
 namespace friction {
@@ -41,6 +42,16 @@ class SparseFactor::Backend {
   virtual void setPivotTolerance(double /*tolerance*/) {}
   /// The ordering and size of the last analysis, as far as the backend knows them.
   virtual FactorAnalysis analysis() const { return {}; }
+  /// Told each phase of a factorisation as it ends (SparseFactor::setPhaseReport); a backend
+  /// that reports none is reported whole by SparseFactor.
+  PhaseReport onPhase;
+  int phasesReported = 0;
+
+ protected:
+  void reportPhase(const std::string& phase, double seconds) {
+    ++phasesReported;
+    if (onPhase) onPhase(phase, seconds);
+  }
 };
 
 /// METIS's nested-dissection order of the symmetric A (its lower triangle's pattern), by
