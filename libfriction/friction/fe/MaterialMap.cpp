@@ -88,10 +88,11 @@ MaterialMap MaterialMap::read(const Dictionary& dict, const Mesh& mesh) {
               "regions { reservoir { E 10e9; nu 0.25; } caprock { E 30e9; nu 0.3; } }");
   for (const char* key : {"E", "nu", "lambda", "mu", "K", "G"})
     if (dict.found(key))
-      dict.fail(key, "key '" + std::string(key) +
-                         "' together with 'regions': give the material once for the whole "
-                         "body (E, nu or lambda, mu or K, G here) or per region inside 'regions', not "
-                         "both");
+      dict.fail(key,
+                "key '" + std::string(key) +
+                    "' together with 'regions': give the material once for the whole "
+                    "body (E, nu or lambda, mu or K, G here) or per region inside 'regions', not "
+                    "both");
   if (mesh.dim == 3 && dict.found("planeStress"))
     dict.fail("planeStress",
               "key 'planeStress' has no meaning in 3D (the mesh is 3D: every strain component is "

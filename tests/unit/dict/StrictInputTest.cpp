@@ -423,7 +423,7 @@ TEST_CASE("a fracturePressure values file is read strictly, line by line", "[dic
   }
 }
 
-TEST_CASE("K and G are the third pair of constants; other codes' names get the way forward",
+TEST_CASE("K and G are the third pair of constants, and other codes' names get the way forward",
           "[dict][material]") {
   // K = 5/3 GPa, G = 1 GPa: λ = K − 2G/3 = 1 GPa, μ = 1 GPa, so E = 2.5 GPa and ν = 0.25.
   const Dictionary d = Dictionary::parse("K 1.6666666666666667e9;\nG 1e9;\n", "mech");
