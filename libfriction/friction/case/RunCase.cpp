@@ -116,7 +116,10 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     // The stack is unwound on the way, so TimeFolder's destructor has removed the step's
     // partial folder.
     log.flush();
-    err << "\n" << message << "\n";
+    // One write: stderr is unbuffered, and under mpirun its pieces and the log's lines (stdout,
+    // flushed line by line) reach the terminal or file through separate channels, so a message
+    // written in pieces can be cut by a log line.
+    err << ("\n" + message + "\n") << std::flush;
     return status;
   };
   try {
@@ -157,7 +160,7 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
       log.flush();
       // Every rank has the same verdict (setup()): rank 0 says it, as for the log.
       if (parallel::isMaster())
-        err << options.program << ": error: " << c.factorFailureDiagnosis() << "\n";
+        err << (options.program + ": error: " + c.factorFailureDiagnosis() + "\n") << std::flush;
       return endTogether(4, err);
     }
 
