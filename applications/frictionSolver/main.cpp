@@ -80,10 +80,13 @@ int main(int argc, char** argv) {
   // and write the same files: refused.
   const int launched = parallel::launchedRanks();
   if (!args.count("parallel") && launched > 1) {
-    std::cerr << "frictionSolver: error: started as one of " << launched
-              << " ranks (mpirun) without -parallel: each would run the whole case and write "
-                 "the same files; run 'mpirun -np "
-              << launched << " frictionSolver -parallel ...' (with linearSolver mumps)\n";
+    // One write per message (every rank prints it: pieces of several would interleave).
+    std::cerr << ("frictionSolver: error: started as one of " + std::to_string(launched) +
+                  " ranks (mpirun) without -parallel: each would run the whole case and write "
+                  "the same files; run 'mpirun -np " +
+                  std::to_string(launched) +
+                  " frictionSolver -parallel ...' (with linearSolver mumps)\n")
+              << std::flush;
     return 2;
   }
   if (args.count("parallel") && !parallel::initialize(argc, argv)) {
