@@ -12,6 +12,7 @@
 #include "friction/fe/ElasticityAssembler.hpp"
 #include "friction/fe/MaterialMap.hpp"
 #include "friction/fracture/FractureSystem.hpp"
+#include "friction/law/FrictionField.hpp"
 #include "friction/mesh/Mesh.hpp"
 
 namespace friction {
@@ -408,6 +409,25 @@ std::unique_ptr<Effect> Effect::New(const std::string& name, const Dictionary& d
   for (const auto& e : effectTable)
     if (type == e.name) return e.make(name, dict, fractureNames, caseDir, dim);
   return nullptr;  // unreachable: getChoice validated the name
+}
+
+void fieldOnFractures(const FrictionField& field, const EffectContext& c,
+                      const std::function<bool(std::size_t)>& takes, const std::string& what,
+                      Eigen::VectorXd& at, std::vector<char>& on) {
+  on.assign(c.nodes.size(), 0);
+  at = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(c.nodes.size()));
+  for (std::size_t f = 0; f < c.fractureNames.size(); ++f) {
+    if (!takes(f)) continue;
+    std::vector<std::size_t> index;
+    const Eigen::VectorXd v = field.evaluateOnFracture(c.nodes, static_cast<int>(f), index);
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      at[static_cast<Eigen::Index>(index[i])] = v[static_cast<Eigen::Index>(i)];
+      on[index[i]] = 1;
+    }
+    if (!field.isConstant() && !index.empty())
+      c.log << "Fracture " << c.fractureNames[f] << ": " << what << " from min " << v.minCoeff()
+            << " to max " << v.maxCoeff() << " Pa over " << v.size() << " nodes\n";
+  }
 }
 
 }  // namespace friction

@@ -32,6 +32,7 @@
 //    ρ = c − μ(σ_n + p) (the paper's poroelastic remark).
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -44,6 +45,8 @@
 #include "friction/time/TimeFunction.hpp"
 
 namespace friction {
+
+class FrictionField;
 
 class Dictionary;
 class DictionaryWriter;
@@ -65,6 +68,14 @@ struct EffectContext {
   /// own (givesPressureOn); empty: none does.
   std::vector<char> ownPressure = {};
 };
+
+/// A field (FrictionField: a number, depth, points, arclength) at the control nodes of the
+/// fractures `takes` accepts (index into context.fractureNames): `at` its value per control
+/// node (0 elsewhere), `on` 1 where set. A field that is not constant logs its range per
+/// fracture: "Fracture <f>: <what> from min .. to max .. Pa over N nodes".
+void fieldOnFractures(const FrictionField& field, const EffectContext& context,
+                      const std::function<bool(std::size_t)>& takes, const std::string& what,
+                      Eigen::VectorXd& at, std::vector<char>& on);
 
 class Effect {
  public:

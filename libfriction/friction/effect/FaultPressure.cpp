@@ -175,22 +175,13 @@ class FaultPressure : public Effect {
 
   void bind(const EffectContext& c) override {
     // p₀ per control node of the listed fractures, evaluated once (it does not change in time).
-    on_.assign(c.nodes.size(), 0);
-    initialAt_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(c.nodes.size()));
-    for (std::size_t f = 0; f < c.fractureNames.size(); ++f) {
-      if (std::find(fractures_.begin(), fractures_.end(), c.fractureNames[f]) == fractures_.end())
-        continue;
-      std::vector<std::size_t> index;
-      const Eigen::VectorXd v = initial_.evaluateOnFracture(c.nodes, static_cast<int>(f), index);
-      for (std::size_t i = 0; i < index.size(); ++i) {
-        initialAt_[static_cast<Eigen::Index>(index[i])] = v[static_cast<Eigen::Index>(i)];
-        on_[index[i]] = 1;
-      }
-      if (!initial_.isConstant() && !index.empty())
-        c.log << "Fracture " << c.fractureNames[f] << ": initial pressure (" << name_
-              << ") from min " << v.minCoeff() << " to max " << v.maxCoeff() << " Pa over "
-              << v.size() << " nodes\n";
-    }
+    fieldOnFractures(
+        initial_, c,
+        [this, &c](std::size_t f) {
+          return std::find(fractures_.begin(), fractures_.end(), c.fractureNames[f]) !=
+                 fractures_.end();
+        },
+        "initial pressure (" + name_ + ")", initialAt_, on_);
     if (wells_.empty() && !diffusion_ && data_.empty()) return;
     bindFlow(c);
   }

@@ -277,25 +277,17 @@ class PorePressure : public Effect {
   /// the regions' changes there, and the data's Δp_b there per listed time.
   void bindFractures(const EffectContext& c) {
     const std::size_t n = c.nodes.size();
-    on_.assign(n, 0);
-    initialAt_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    for (std::size_t f = 0; f < c.fractureNames.size(); ++f) {
-      if (f < c.ownPressure.size() && c.ownPressure[f]) {
-        c.log << "Fracture " << c.fractureNames[f] << ": a fluid pressure of its own, not the "
-              << "rock's pore pressure (" << name_ << ")\n";
-        continue;
-      }
-      std::vector<std::size_t> index;
-      const Eigen::VectorXd v = initial_.evaluateOnFracture(c.nodes, static_cast<int>(f), index);
-      for (std::size_t i = 0; i < index.size(); ++i) {
-        initialAt_[static_cast<Eigen::Index>(index[i])] = v[static_cast<Eigen::Index>(i)];
-        on_[index[i]] = 1;
-      }
-      if (!initial_.isConstant() && !index.empty())
-        c.log << "Fracture " << c.fractureNames[f] << ": initial pore pressure of the rock ("
-              << name_ << ") from min " << v.minCoeff() << " to max " << v.maxCoeff() << " Pa over "
-              << v.size() << " nodes\n";
-    }
+    fieldOnFractures(
+        initial_, c,
+        [this, &c](std::size_t f) {
+          if (f < c.ownPressure.size() && c.ownPressure[f]) {
+            c.log << "Fracture " << c.fractureNames[f] << ": a fluid pressure of its own, not the "
+                  << "rock's pore pressure (" << name_ << ")\n";
+            return false;
+          }
+          return true;
+        },
+        "initial pore pressure of the rock (" + name_ + ")", initialAt_, on_);
     // Weights: the share of each region's cells in the measure of the cells around a node (on
     // either side: the Ω⁺ and Ω⁻ copies); the data's Δp_b is the mean over them by measure.
     regionWeight_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n),

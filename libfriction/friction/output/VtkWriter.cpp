@@ -355,6 +355,19 @@ void stateArray(ArraySink& sink, std::ostream& s, const std::vector<FractureRow>
   sink.integers(s, "Int32", "state", v, 1);
 }
 
+// The arrays of what only some cases have, 2D and 3D alike: the opening (fractures that may
+// open), the fluid pressure, σ'_n and ΔCFS (a fluid pressure).
+void optionalArrays(ArraySink& sink, std::ostream& s, const std::vector<FractureRow>& rows) {
+  if (!rows.empty() && rows.front().hasOpening)
+    rowArray(sink, s, "opening", rows, [](const FractureRow& r) { return r.opening; });
+  if (!rows.empty() && rows.front().hasPressure) {
+    rowArray(sink, s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
+    rowArray(sink, s, "sigmaNEffective", rows,
+             [](const FractureRow& r) { return r.sigmaNEffective; });
+    rowArray(sink, s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
+  }
+}
+
 void writeFracturePolyline(const std::string& path, const std::vector<FractureRow>& rows,
                            int precision, VtkFormat format) {
   const std::size_t n = rows.size();
@@ -375,14 +388,7 @@ void writeFracturePolyline(const std::string& path, const std::vector<FractureRo
   rowArray(sink, s, "tau", rows, [](const FractureRow& r) { return r.tau[0]; });
   rowArray(sink, s, "ST", rows, [](const FractureRow& r) { return r.ST; });
   rowArray(sink, s, "residual", rows, [](const FractureRow& r) { return r.residual[0]; });
-  if (!rows.empty() && rows.front().hasOpening)
-    rowArray(sink, s, "opening", rows, [](const FractureRow& r) { return r.opening; });
-  if (!rows.empty() && rows.front().hasPressure) {
-    rowArray(sink, s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
-    rowArray(sink, s, "sigmaNEffective", rows,
-             [](const FractureRow& r) { return r.sigmaNEffective; });
-    rowArray(sink, s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
-  }
+  optionalArrays(sink, s, rows);
   stateArray(sink, s, rows);
   s << "      </PointData>\n";
 
@@ -460,13 +466,8 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
   rowArray(sink, s, "ST", rows, [](const FractureRow& r) { return r.ST; });
   rowArray(sink, s, "residual", rows,
            [](const FractureRow& r) { return std::hypot(r.residual[0], r.residual[1]); });
-  if (!rows.empty() && rows.front().hasOpening)
-    rowArray(sink, s, "opening", rows, [](const FractureRow& r) { return r.opening; });
+  optionalArrays(sink, s, rows);
   if (!rows.empty() && rows.front().hasPressure) {
-    rowArray(sink, s, "pressure", rows, [](const FractureRow& r) { return r.pressure; });
-    rowArray(sink, s, "sigmaNEffective", rows,
-             [](const FractureRow& r) { return r.sigmaNEffective; });
-    rowArray(sink, s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
     // The hanging wall's slip and τ along strike and down dip (strikeDipValues(),
     // FieldWriter.hpp), as in the tables.
     const char* names[] = {"slipStrike", "slipDip", "tauStrike", "tauDip"};
