@@ -406,6 +406,39 @@ TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties ent
        "bottom { type fixedDisplacement; components (y); }",
        "bottom { type fixedDisplacement; components (y); }",
        {"missing key 'value' in patch 'bottom'", "e.g. value (0 0)"}},
+      {"slipWeakeningFrictionCoefficient",
+       "constant/fractureProperties",
+       "law +coulomb;",
+       "law slipWeakening; staticCoefficient 0.2; dynamicCoefficient 0.1; criticalSlip 1e-3;",
+       "frictionCoefficient 0.2;",
+       {"unknown key 'frictionCoefficient'", "law slipWeakening takes 'staticCoefficient'"}},
+      {"slipWeakeningNoCriticalSlip",
+       "constant/fractureProperties",
+       "law +coulomb;\n +frictionCoefficient +0.2;",
+       "law slipWeakening; staticCoefficient 0.2; dynamicCoefficient 0.1;",
+       "law slipWeakening;",
+       {"criticalSlip"}},
+      {"slipWeakeningStrengthens",
+       "constant/fractureProperties",
+       "law +coulomb;\n +frictionCoefficient +0.2;",
+       "law slipWeakening; staticCoefficient 0.2; dynamicCoefficient 0.3; criticalSlip 1e-3;",
+       "law slipWeakening;",
+       {"key 'dynamicCoefficient'", "above staticCoefficient 0.2",
+        "slip-weakening needs mu_d <= mu_s"}},
+      {"slipWeakeningOpening",
+       "constant/fractureProperties",
+       "law +coulomb;\n +frictionCoefficient +0.2;",
+       "law slipWeakening; staticCoefficient 0.2; dynamicCoefficient 0.1; criticalSlip 1e-3;\n"
+       "    contact unilateral;",
+       "contact unilateral;",
+       {"key 'contact'", "law slipWeakening is not yet solved with faces that open"}},
+      {"slipWeakeningArmijo",
+       "system/frictionSolution",
+       "type +semismoothNewton;[^\n]*",
+       "type armijo;",
+       "type armijo;",
+       {"key 'type'", "law slipWeakening", "semismoothNewton with variant condensed",
+        "(nucleation)"}},
       {"decimalComma",
        "constant/mechanicalProperties",
        "mu +1;",
@@ -430,11 +463,15 @@ TEST_CASE("bad frictionSolution, mechanicalProperties and fractureProperties ent
       Case c("paperBenchmark", std::string("bad-settings-") + b.label);
       split(c);
       c.edit(b.file, b.pattern, b.replacement);
+      if (std::string(b.label) == "slipWeakeningArmijo")
+        c.edit("constant/fractureProperties", "law +coulomb;\n +frictionCoefficient +0.2;",
+               "law slipWeakening; staticCoefficient 0.2; dynamicCoefficient 0.1; "
+               "criticalSlip 1e-3;");
       std::vector<std::string> expected = b.expected;
       // A missing key is reported where its dictionary starts (the '{' line, which the
       // case's layout does not pin down): there only the file is checked.
       const std::string label = b.label;
-      if (label == "trescaWithoutThreshold")
+      if (label == "trescaWithoutThreshold" || label == "slipWeakeningNoCriticalSlip")
         expected.push_back(std::string(b.file) + ":");
       else if (label == "unknownFractureEntry")
         expected.push_back(at(b.file, lineIs(c.dir() / b.file, b.lineText)));

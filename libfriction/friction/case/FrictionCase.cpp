@@ -208,8 +208,20 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
         fd.getChoiceOr("contact", {"bilateral", "unilateral"}, "bilateral") == "unilateral";
     fractures_.push_back({g.name, FrictionLaw::New(fd, caseDir, split_.mesh.dim), unilateral});
     opening_ |= unilateral;
+    if (fractures_.back().law->weakening() != Weakening::none) {
+      weakening_ = true;
+      if (unilateral)
+        fd.fail("contact",
+                "key 'contact': law slipWeakening is not yet solved with faces that open; use "
+                "contact bilateral (the default) on fracture '" +
+                    g.name + "'");
+    }
   }
   fp.checkAllRead();
+  if (weakening_ && opening_)
+    throw InputError(fp.location(),
+                     "law slipWeakening on one fracture and contact unilateral on another: "
+                     "friction that weakens is not yet solved with faces that open");
 
   // Effects: only what the case lists is built (constant/effects is optional).
   const std::string effectsPath = (fs::path(caseDir) / "constant" / "effects").string();
@@ -297,6 +309,13 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
                   : GradientKind::frozenRho;
   warmStart_ = control.getBoolOr("warmStart", false);
   optimizer_ = Optimizer::New(control.subDict("optimizer"));
+  timeIntegrator_ = TimeIntegrator::New(sol);
+  if (weakening_ && !optimizer_->handlesWeakening())
+    control.subDict("optimizer")
+        .fail("type",
+              "key 'type': law slipWeakening (constant/fractureProperties) needs optimizer "
+              "semismoothNewton with variant condensed: it alone holds S, which tells a slipping "
+              "patch that lost its equilibrium (nucleation) from slow convergence");
   if (opening_ && !optimizer_->handlesOpening())
     control.subDict("optimizer")
         .fail("variant",
@@ -333,7 +352,13 @@ void FrictionCase::printSettings(std::ostream& log) const {
   for (const auto& f : fractures_) {
     log << "Fracture " << f.name << ": law " << f.law->name();
     const FrictionField &mu = f.law->mu(), &c = f.law->cohesion();
-    if (!mu.isConstant() || mu.value() > 0) log << ", frictionCoefficient " << mu.describe();
+    if (f.law->weakening() != Weakening::none)
+      log << ", staticCoefficient " << mu.describe() << ", dynamicCoefficient "
+          << f.law->dynamicCoefficient().describe() << ", criticalSlip "
+          << f.law->criticalSlip().describe() << " m ("
+          << (f.law->weakening() == Weakening::linear ? "linear" : "exponential") << ")";
+    else if (!mu.isConstant() || mu.value() > 0)
+      log << ", frictionCoefficient " << mu.describe();
     if (!c.isConstant())
       log << ", " << f.law->cohesionKey() << " [Pa] " << c.describe();
     else if (c.value() > 0)
@@ -358,6 +383,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
   log << ", tolerance " << optimizer_->stopRule().tolerance << " ("
       << (optimizer_->stopRule().on == StopRule::On::residual ? "residual" : "step")
       << "), maxIterations " << optimizer_->stopRule().maxIterations << "\n";
+  log << "Time integration: " << timeIntegrator_->name() << "\n";
   // The effects switched on, and those that cost nothing because they are not.
   std::vector<std::string> off;
   for (const std::string& type : Effect::names()) {
@@ -467,6 +493,7 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
   // fracture (FrictionField.hpp): evaluated here once, checked node by node, the range logged.
   mu_.resize(n);
   cohesion_.resize(n);
+  slipPath_ = Eigen::VectorXd::Zero(n);
   for (std::size_t f = 0; f < fractures_.size(); ++f) {
     std::vector<const ControlNode*> on;
     std::vector<Eigen::Index> index;
@@ -478,10 +505,35 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
       mu_[index[i]] = mu[static_cast<Eigen::Index>(i)];
       cohesion_[index[i]] = c[static_cast<Eigen::Index>(i)];
     }
+    if (!weakeningSettings_.nodes.empty())
+      for (std::size_t i = 0; i < index.size(); ++i)
+        weakeningSettings_.cohesion[index[i]] = c[static_cast<Eigen::Index>(i)];
     const auto range = [&](const char* key, const Eigen::VectorXd& v, const char* unit) {
       log << "Fracture " << fractures_[f].name << ": " << key << " from min " << v.minCoeff()
           << " to max " << v.maxCoeff() << unit << " over " << v.size() << " nodes\n";
     };
+    if (law.weakening() != Weakening::none) {
+      // μ_s ≥ μ_d node by node: friction that strengthens with slip is not this law.
+      const Eigen::VectorXd muD = law.dynamicCoefficient().evaluate(on),
+                            dc = law.criticalSlip().evaluate(on);
+      if (weakeningSettings_.nodes.empty()) {
+        weakeningSettings_.nodes.resize(static_cast<std::size_t>(n));
+        weakeningSettings_.cohesion = Eigen::VectorXd::Zero(n);
+      }
+      for (std::size_t i = 0; i < index.size(); ++i) {
+        const Eigen::Index j = static_cast<Eigen::Index>(i);
+        if (muD[j] > mu[j])
+          throw InputError(
+              (fs::path(caseDir_) / "constant" / "fractureProperties").string(),
+              "fracture '" + fractures_[f].name + "': dynamicCoefficient " + formatNumber(muD[j]) +
+                  " above staticCoefficient " + formatNumber(mu[j]) + " at the node at (" +
+                  formatNumber(on[i]->position.x()) + ", " + formatNumber(on[i]->position.y()) +
+                  (split_.mesh.dim == 3 ? ", " + formatNumber(on[i]->position.z()) : "") + ")" +
+                  ": slip-weakening needs mu_d <= mu_s");
+        weakeningSettings_.nodes[static_cast<std::size_t>(index[i])] = {law.weakening(), mu[j],
+                                                                        muD[j], dc[j]};
+      }
+    }
     if (!law.mu().isConstant() && !on.empty()) range("frictionCoefficient", mu, "");
     if (!law.cohesion().isConstant() && !on.empty()) range(law.cohesionKey().c_str(), c, " Pa");
   }
@@ -1170,6 +1222,27 @@ long FrictionCase::restart(std::ostream& log) {
                              " values, expected one per fracture node (" +
                              std::to_string(system_->size()) + ")");
   }
+  // The laws' state: the slip path of friction that weakens.
+  std::vector<double> path;
+  if (!weakening_ && st.found("slipPath"))
+    st.fail("slipPath",
+            "key 'slipPath': this folder was written by a run whose friction weakened with slip "
+            "(law slipWeakening), and none does now: restore the law in "
+            "constant/fractureProperties, or start again (" +
+                overwriteHint_ + ")");
+  if (weakening_) {
+    if (!st.found("slipPath"))
+      throw InputError(st.location(),
+                       "no key 'slipPath': this folder was written by a run without friction "
+                       "that weakens (law slipWeakening in constant/fractureProperties changed "
+                       "since); start again (" +
+                           overwriteHint_ + ")");
+    path = st.getScalarList("slipPath");
+    if (static_cast<Eigen::Index>(path.size()) != system_->size())
+      st.fail("slipPath", "key 'slipPath': " + std::to_string(path.size()) +
+                              " values, expected one per fracture node (" +
+                              std::to_string(system_->size()) + ")");
+  }
   // The effects' states (faultPressure's computed diffusion), as writeTimeFolder() wrote them.
   const Dictionary* effectStates = st.findDict("effects");
   for (const auto& e : effects_) {
@@ -1198,6 +1271,7 @@ long FrictionCase::restart(std::ostream& log) {
   lastBeta_.head(expected) = Eigen::Map<const Eigen::VectorXd>(beta.data(), expected);
   for (std::size_t i = 0; i < opening.size(); ++i)
     lastBeta_[expected + static_cast<Eigen::Index>(i)] = opening[i];
+  if (weakening_) slipPath_ = Eigen::Map<const Eigen::VectorXd>(path.data(), system_->size());
 
   // What a killed run wrote after t0 goes: every time after it has a name that reads back
   // above both t0 and the value of t0's own name (names are distinct, TimeControl.hpp).
@@ -1224,6 +1298,57 @@ long FrictionCase::restart(std::ostream& log) {
   return first;
 }
 
+std::string FrictionCase::prepareSolver() { return optimizer_->prepare(*system_, opening_); }
+
+StepLoads FrictionCase::loadsAt(double t) {
+  FractureSystem& sys = *system_;
+  bcs_->setValues(sys.dirichlet(), t);
+  // Effects with a state of their own (the fault's computed diffusion) advance to the step's
+  // time first: the loads and pressures below are those of that time.
+  for (const auto& e : effects_) e->advance(t);
+  return {loadVector(t), sys.dirichlet().values(), fracturePressure(t)};
+}
+
+void FrictionCase::keepSolution(const StepLoads& loads) {
+  // No slip increment; the openings stay.
+  last_.beta.head(system_->blockSize() * system_->size()).setZero();
+  pressure_ = loads.pressure;
+}
+
+void FrictionCase::solveStep(const StepLoads& loads, double t, StepResult& r) {
+  FractureSystem& sys = *system_;
+  const Eigen::Index n = sys.size(), perNode = sys.blockSize();
+  const Eigen::Index controlSize = opening_ ? perNode * n + n : perNode * n;
+  sys.setStep(loads.load, slip_);
+  if (n > 0) {
+    Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(perNode * n);
+    for (const auto& e : effects_) e->addFractureTraction(sys.controlNodes(), t, sn0, tau0);
+    sys.setTractionOffset(sn0, tau0);
+  }
+  // ρ = c − μ(σ_n + p): the pressure lowers the cohesion term node by node.
+  const Eigen::VectorXd cohesion = cohesion_ - mu_.cwiseProduct(loads.pressure);
+  OpeningSettings openings{unilateral_, loads.pressure, gammaN_};
+  // Friction that weakens: μ(δ_n + |β|) from the slip path at the step's start.
+  if (weakening_) {
+    weakeningSettings_.pathStart = slipPath_;
+    weakeningSettings_.pressure = loads.pressure;
+  }
+  ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_,
+                         opening_ ? &openings : nullptr,
+                         weakening_ ? &weakeningSettings_ : nullptr);
+  Eigen::VectorXd beta = warmStart_ ? lastBeta_ : Eigen::VectorXd::Zero(controlSize);
+  if (n > 0)
+    r.report = optimizer_->minimize(problem, beta);
+  else
+    r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
+  // The accepted β once more, so that displacement and tractions on disk belong to it (a
+  // line search may have evaluated a rejected trial last). judgeStep() judges this state,
+  // not the optimizer's last evaluation.
+  last_ = problem.evaluate(beta);
+  r.relResidual = problem.relativeResidual(last_);
+  pressure_ = loads.pressure;
+}
+
 std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   std::vector<StepResult> results;
   FractureSystem& sys = *system_;
@@ -1231,8 +1356,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   const Eigen::Index n = sys.size(), perNode = sys.blockSize();
   // The control: β (k·n), then with openings g (n).
   const Eigen::Index controlSize = opening_ ? perNode * n + n : perNode * n;
-  Eigen::VectorXd beta = Eigen::VectorXd::Zero(controlSize);
-  lastBeta_ = beta;
+  lastBeta_ = Eigen::VectorXd::Zero(controlSize);
   // Rank 0 prepares the outputs (postProcessing/ may be a file, the folder read-only): every
   // rank learns whether it could before the first shared solve (parallel::agree).
   long first = 1;
@@ -1247,7 +1371,6 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       exitStatusOf);
   if (!time_->precisionNote().empty()) log << time_->precisionNote() << "\n\n";
   if (time_->steps() != TimeControl::Steps::uniform) log << "Time: " << time_->describe() << "\n\n";
-  Eigen::VectorXd& lastBeta = lastBeta_;
   const std::string controlDict = (fs::path(caseDir_) / "system" / "controlDict").string();
   auto controlStamp = fs::last_write_time(controlDict);
   bool controlDictGone = false;
@@ -1264,7 +1387,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     const long solves0 = sys.factorization().numSolves();
     std::string built;
     try {
-      built = optimizer_->prepare(sys, opening_);
+      built = timeIntegrator_->prepare(*this);
     } catch (const StopNow& s) {
       if (parallel::size() > 1) {
         log << "\nStopped while forming the interface operator (" << s.what()
@@ -1288,71 +1411,30 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   }
   RemainingTime remaining;
 
-  Eigen::VectorXd lastLoad, lastDirichlet, lastPressure;
   for (long k = first; k <= time_->numSteps(); ++k) {
     Stopwatch stepClock;
     StepResult r;
     r.time = time_->time(k);
     const long solves0 = sys.factorization().numSolves();
-
-    bcs_->setValues(sys.dirichlet(), r.time);
-    // Effects with a state of their own (the fault's computed diffusion) advance to the step's
-    // time first: the loads and pressures below are those of that time.
-    for (const auto& e : effects_) e->advance(r.time);
-    const Eigen::VectorXd load = loadVector(r.time);
-    const Eigen::VectorXd pressure = fracturePressure(r.time);
-    // Only what changed is recomputed: a step whose loads equal the previous step's has the
-    // previous (converged) solution, with β = 0.
-    if (!results.empty() && load == lastLoad && sys.dirichlet().values() == lastDirichlet &&
-        pressure == lastPressure && results.back().report.status == OptimizerStatus::converged) {
-      r.reused = true;
-      r.report.status = OptimizerStatus::converged;
-      r.relResidual = results.back().relResidual;
-      last_.beta.head(perNode * n).setZero();  // no slip increment; the openings stay
-    } else
-      try {
-        sys.setStep(load, slip_);
-        if (n > 0) {
-          Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(perNode * n);
-          for (const auto& e : effects_)
-            e->addFractureTraction(sys.controlNodes(), r.time, sn0, tau0);
-          sys.setTractionOffset(sn0, tau0);
-        }
-        // ρ = c − μ(σ_n + p): the pressure lowers the cohesion term node by node.
-        const Eigen::VectorXd cohesion = cohesion_ - mu_.cwiseProduct(pressure);
-        OpeningSettings openings{unilateral_, pressure, gammaN_};
-        ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_,
-                               opening_ ? &openings : nullptr);
-        beta = warmStart_ ? lastBeta : Eigen::VectorXd::Zero(controlSize);
-        if (n > 0)
-          r.report = optimizer_->minimize(problem, beta);
-        else
-          r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
-        // The accepted β once more, so that displacement and tractions on disk belong to it (a
-        // line search may have evaluated a rejected trial last). judgeStep() below judges this
-        // state, not the optimizer's last evaluation.
-        last_ = problem.evaluate(beta);
-        r.relResidual = problem.relativeResidual(last_);
-      } catch (const StopNow& s) {
-        // A second signal: the step is abandoned; nothing of it is written. With several ranks
-        // the others may be inside a shared solve that would wait for this one forever: stop
-        // them all (exit status 5, as a serial run's).
-        if (parallel::size() > 1) {
-          log << "\nStopped during the step to time " << time_->timeName(r.time) << " (" << s.what()
-              << " twice: abandoned, not written)" << std::endl;
-          parallel::abort(5);
-        }
-        stoppedEarly_ = std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM") + ", then " +
-                        s.what() + ": the step to time " + time_->timeName(r.time) +
-                        " was abandoned and not written";
-        log << "\nStopped during the step to time " << time_->timeName(r.time) << " ("
-            << stoppedEarly_ << ")\n";
-        break;
+    try {
+      timeIntegrator_->advance(*this, r, results.empty() ? nullptr : &results.back());
+    } catch (const StopNow& s) {
+      // A second signal: the step is abandoned; nothing of it is written. With several ranks
+      // the others may be inside a shared solve that would wait for this one forever: stop
+      // them all (exit status 5, as a serial run's).
+      if (parallel::size() > 1) {
+        log << "\nStopped during the step to time " << time_->timeName(r.time) << " (" << s.what()
+            << " twice: abandoned, not written)" << std::endl;
+        parallel::abort(5);
       }
-    lastLoad = load;
-    lastDirichlet = sys.dirichlet().values();
-    lastPressure = pressure;
-    pressure_ = pressure;
+      stoppedEarly_ = std::string(stopRequested() == SIGINT ? "SIGINT" : "SIGTERM") + ", then " +
+                      s.what() + ": the step to time " + time_->timeName(r.time) +
+                      " was abandoned and not written";
+      log << "\nStopped during the step to time " << time_->timeName(r.time) << " ("
+          << stoppedEarly_ << ")\n";
+      break;
+    }
+    const Eigen::VectorXd& pressure = pressure_;
 
     // The step's own solves: operators built once per run (Newton's condensed S) are counted
     // apart, so that a restarted run, which builds them again, writes the same numbers.
@@ -1388,7 +1470,11 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       break;
     }
     slip_ += last_.beta.head(perNode * n);
-    lastBeta = last_.beta;
+    // The laws' state: the slip path δ grows by the length of each step's increment.
+    if (weakening_)
+      for (Eigen::Index i = 0; i < n; ++i)
+        slipPath_[i] += blockNorm(last_.beta.segment(perNode * i, perNode));
+    lastBeta_ = last_.beta;
     // The step line's trailer (README.md, "frictionSolver"): the largest slip and opening.
     double maxSlip = 0, maxOpening = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -1490,10 +1576,21 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     std::ostringstream trailer;
     trailer << std::setprecision(4) << "  maxSlip " << maxSlip << " m";
     if (opening_) trailer << "  maxOpening " << maxOpening << " m";
+    // Friction that weakens: the slipping patch's relative tangent stiffness (≤ 0: unstable).
+    if (weakening_ && !std::isnan(r.report.tangentStiffness))
+      trailer << "  patchStiffness " << r.report.tangentStiffness;
     log << trailer.str() << loadFields(r.time, pressure) << "  ["
         << formatSeconds(secondsSinceStart()) << "]\n";
     log.flush();
+    const bool nucleated = r.report.status == OptimizerStatus::nucleation;
     results.push_back(std::move(r));
+    if (nucleated) {
+      // Past the loss of equilibrium the slip is dynamic: a quasi-static step has no answer.
+      log << "\nStopped at time " << time_->timeName(time_->time(k))
+          << ": the quasi-static equilibrium is lost (nucleation; see the step's note); the "
+             "slip that follows is an instability the quasi-static stepping does not follow\n";
+      break;
+    }
     if (stopNow && k < time_->numSteps()) {
       stoppedEarly_ = signalled ? std::string(signal == SIGINT ? "SIGINT" : "SIGTERM")
                                 : "stopAt in system/controlDict";
@@ -1588,6 +1685,30 @@ void FrictionCase::judgeStep(StepResult& r) const {
       << (order_ == 1 ? "use elementOrder 2, " : "") << "or remesh without slivers";
     addNote(s.str());
   }
+  // 2b. Friction that weakens: a converged state whose slipping patch has no positive tangent
+  // stiffness is an unstable equilibrium, and an iteration that found none while weakening
+  // nodes slip has lost the quasi-static path; either way an instability nucleates, and the
+  // step says so rather than "converged" (or a bare "maxIterations").
+  if (weakening_) {
+    const OptimizerStatus st = r.report.status;
+    const bool unstable = st == OptimizerStatus::converged && !(r.report.tangentStiffness > 0) &&
+                          r.report.stiffnessComponents > 0;
+    const bool lost = (st == OptimizerStatus::maxIterations || st == OptimizerStatus::stalled ||
+                       st == OptimizerStatus::diverged) &&
+                      !patchOfWeakeningSlip().empty();
+    if (unstable || lost) {
+      r.report.status = OptimizerStatus::nucleation;
+      std::ostringstream s;
+      s << std::setprecision(3) << "nucleation at time " << time_->timeName(r.time) << ": "
+        << (unstable
+                ? "the slipping patch's tangent stiffness is " +
+                      formatNumber(r.report.tangentStiffness) + " (relative; <= 0: slip runs away)"
+                : std::string("no equilibrium near the previous step's (") + toString(st) + ")")
+        << "; slipping " << patchOfWeakeningSlip()
+        << "; the slip written is the iteration's last, not an equilibrium";
+      addNote(s.str());
+    }
+  }
   // 3. A slip larger than the body: nothing holds part of it.
   double maxSlip = 0;
   const Eigen::Index k = sys.blockSize();
@@ -1649,6 +1770,47 @@ void FrictionCase::judgeStep(StepResult& r) const {
        "the part (a rigid-body motion); fix a patch of it (0/D), or make the fracture "
        "bilateral";
   addNote(s.str());
+}
+
+std::string FrictionCase::patchOfWeakeningSlip() const {
+  const FractureSystem& sys = *system_;
+  const auto& nodes = sys.controlNodes();
+  const int dim = sys.dimension();
+  std::vector<std::string> parts;
+  for (std::size_t f = 0; f < fractures_.size(); ++f) {
+    if (fractures_[f].law->weakening() == Weakening::none) continue;
+    long count = 0;
+    double size = 0, sMin = 0, sMax = 0;
+    Point centre = Point::Zero(), low = Point::Zero(), high = Point::Zero();
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (nodes[k].fracture != static_cast<int>(f) ||
+          nodeState(static_cast<Eigen::Index>(k)) != "slip")
+        continue;
+      const double w = sys.weights()[static_cast<Eigen::Index>(k)];
+      const Point& x = nodes[k].position;
+      if (count == 0) sMin = sMax = nodes[k].arclength, low = high = x;
+      sMin = std::min(sMin, nodes[k].arclength);
+      sMax = std::max(sMax, nodes[k].arclength);
+      low = low.cwiseMin(x);
+      high = high.cwiseMax(x);
+      centre += w * x;
+      size += w;
+      ++count;
+    }
+    if (count == 0) continue;
+    centre /= size;
+    std::ostringstream s;
+    s << std::setprecision(4) << "on '" << fractures_[f].name << "' " << count << " nodes, ";
+    if (dim == 2)
+      s << "s from " << sMin << " to " << sMax << " m (length " << size << " m), centre ("
+        << centre.x() << ", " << centre.y() << ")";
+    else
+      s << "area " << size << " m2 around (" << centre.x() << ", " << centre.y() << ", "
+        << centre.z() << "), extent (" << high.x() - low.x() << ", " << high.y() - low.y() << ", "
+        << high.z() - low.z() << ") m";
+    parts.push_back(s.str());
+  }
+  return joinWords(parts);
 }
 
 std::string FrictionCase::nodeState(Eigen::Index k) const {
@@ -1721,6 +1883,13 @@ std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::
       row.deltaCFS =
           tip ? nan
               : (tauNorm - initialTauNorm_[i]) + mu_[i] * (effective - initialSigmaNEffective_[i]);
+    }
+    if (weakening_) {
+      row.hasWeakening = true;
+      row.slipPath = slipPath_[static_cast<Eigen::Index>(k)];
+      const WeakeningNode& w = weakeningSettings_.nodes[k];
+      row.frictionCoefficient =
+          w.form == Weakening::none ? mu_[static_cast<Eigen::Index>(k)] : w.mu(row.slipPath);
     }
     if (rowOfPlus) (*rowOfPlus)[nodes[k].plus] = static_cast<Index>(rows.size());
     rows.push_back(row);
@@ -1795,6 +1964,14 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   st.entry("relResidual", r.relResidual);
   st.entry("maxExcessST", r.maxExcessST);
   st.entry("equilibriumResidual", r.equilibrium);
+  // Friction that weakens: the slipping patch's relative tangent stiffness (OptimizerReport;
+  // "none" where no weakening node slips), which falls to 0 at the loss of equilibrium.
+  if (weakening_) {
+    if (std::isfinite(r.report.tangentStiffness))
+      st.entry("patchStiffness", r.report.tangentStiffness);
+    else
+      st.entryWord("patchStiffness", "none");
+  }
   st.writeAtomic(folder.file("solverStatus"));
 
   // What a restart needs, at full precision (the tables above use writePrecision). 'slip' and
@@ -1809,6 +1986,10 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   if (opening_)
     state.entry("opening",
                 std::vector<double>(beta.data() + slip_.size(), beta.data() + beta.size()));
+  // Friction that weakens: the laws' state, the slip path δ per fracture node [m].
+  if (weakening_)
+    state.entry("slipPath",
+                std::vector<double>(slipPath_.data(), slipPath_.data() + slipPath_.size()));
   // Effects with a state (faultPressure's computed diffusion), one sub-dictionary each.
   if (std::any_of(effects_.begin(), effects_.end(), [](const auto& e) { return e->hasState(); })) {
     state.beginDict("effects");

@@ -38,6 +38,7 @@
 #include "friction/output/FieldWriter.hpp"
 #include "friction/output/VtkWriter.hpp"
 #include "friction/time/TimeControl.hpp"
+#include "friction/time/TimeIntegrator.hpp"
 
 namespace friction {
 
@@ -53,19 +54,7 @@ struct FloatingPart {
   std::string describe() const;
 };
 
-/// Outcome of one time step.
-struct StepResult {
-  double time = 0;
-  OptimizerReport report;
-  long backSubstitutions = 0;
-  double J = 0, relResidual = 0, maxExcessST = 0, lastStepNorm = 0;
-  double equilibrium = 0;  ///< ‖K x − b‖/‖b‖ of the step's final primal solve
-  bool written = false;
-  bool reused = false;     ///< loads unchanged since the previous step: its solution reused
-  bool nonFinite = false;  ///< the results overflowed: the step is diverged and not written
-};
-
-class FrictionCase {
+class FrictionCase : private StepHost {
  public:
   /// Reads and validates every dictionary and the split mesh (InputError on any problem).
   /// `given`: fields the program running the case hands to its effects (GivenField.hpp; the
@@ -75,7 +64,7 @@ class FrictionCase {
   /// elementOrder of caseDir/system/frictionSolution (1 or 2; InputError as the constructor
   /// gives it), before the case is read as a whole: the FreeFEM plug-in's frictionOrder.
   static int elementOrder(const std::string& caseDir);
-  ~FrictionCase();
+  ~FrictionCase() override;
 
   /// Before any work: time folders after startTime from an earlier run are refused
   /// (InputError naming them and both ways out) unless startFrom is latestTime, or
@@ -130,6 +119,12 @@ class FrictionCase {
     bool unilateral = false;  ///< contact unilateral: the faces may open
   };
 
+  // StepHost: what the time integrator (timeIntegrator_) reaches of the case.
+  std::string prepareSolver() override;
+  StepLoads loadsAt(double t) override;
+  void solveStep(const StepLoads& loads, double t, StepResult& r) override;
+  void keepSolution(const StepLoads& loads) override;
+
   void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step);
   /// Fracture f's rows for the control β (and the state of the last step); rowOfPlus, if
   /// given, maps each row's Ω⁺ copy to its row.
@@ -137,6 +132,9 @@ class FrictionCase {
                                         std::map<Index, Index>* rowOfPlus) const;
   /// Control node k's state in the last step: stick, slip, open or tip.
   std::string nodeState(Eigen::Index k) const;
+  /// Where the nodes of fractures whose friction weakens slip in the last step, per fracture
+  /// (2D: the arclength span; 3D: area, centre, extent); "" when none slips.
+  std::string patchOfWeakeningSlip() const;
   /// Judge the state to be written (last_, the primal solve just done): non-finite values
   /// make the step diverged; a residual above the tolerance makes a 'converged' step
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.
@@ -198,9 +196,17 @@ class FrictionCase {
   Eigen::VectorXd unilateral_;  ///< per control node: 1 where its fracture may open
   GradientKind gradient_ = GradientKind::exact;
   std::unique_ptr<Optimizer> optimizer_;
+  /// system/frictionSolution's timeIntegration (TimeIntegrator.hpp).
+  std::unique_ptr<TimeIntegrator> timeIntegrator_;
 
   std::unique_ptr<FractureSystem> system_;
   Eigen::VectorXd mu_, cohesion_, slip_;
+  /// Friction that weakens with slip (law slipWeakening on some fracture): per control node
+  /// its weakening and cohesion (WeakeningSettings), and the laws' state, the slip path δ [m]
+  /// of every node (written in uniform/frictionState, restarted from it).
+  bool weakening_ = false;
+  WeakeningSettings weakeningSettings_;
+  Eigen::VectorXd slipPath_;
   ControlState last_;
   Eigen::VectorXd pressure_;  ///< p of the last step, per control node
   /// Some effect gives a fluid pressure on the fractures: tables and VTK carry p and σ'_n.

@@ -18,19 +18,26 @@ namespace friction {
 
 ControlProblem::ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen::VectorXd cohesion,
                                double gamma, double zeta, GradientKind gradient,
-                               const OpeningSettings* opening)
+                               const OpeningSettings* opening, const WeakeningSettings* weakening)
     : response_(response),
       mu_(std::move(mu)),
       cohesion_(std::move(cohesion)),
       gamma_(gamma),
       zeta_(zeta),
       gradientKind_(gradient),
-      opening_(opening != nullptr) {
+      opening_(opening != nullptr),
+      weakening_(weakening) {
   FRICTION_ASSERT(mu_.size() == response_.size(), "one μ per fracture node");
   FRICTION_ASSERT(cohesion_.size() == response_.size(), "one cohesion per fracture node");
   FRICTION_ASSERT(gamma_ > 0, "γ > 0");
   const Eigen::Index n = response_.size(), k = response_.blockSize();
   const Eigen::Index total = opening_ ? k * n + n : k * n;
+  FRICTION_ASSERT(!(opening_ && weakening_), "slip-weakening is refused with openings");
+  FRICTION_ASSERT(
+      !weakening_ || (static_cast<Eigen::Index>(weakening_->nodes.size()) == n &&
+                      weakening_->pathStart.size() == n && weakening_->cohesion.size() == n &&
+                      weakening_->pressure.size() == n),
+      "one weakening, path, cohesion and pressure per fracture node");
   componentMask_.resize(total);
   componentWeights_.resize(total);
   const Eigen::VectorXd components = response_.componentMask();
@@ -128,6 +135,21 @@ ControlState ControlProblem::stateFrom(const Eigen::VectorXd& beta, Eigen::Vecto
       }
     }
   }
+  if (weakening_) {
+    // ρ = c − μ(δ_n + |β|)(σ_n + p) where the friction weakens (docs/method.md §3).
+    const WeakeningSettings& w = *weakening_;
+    s.mu = mu_;
+    s.dRhoDPath = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const WeakeningNode& node = w.nodes[static_cast<std::size_t>(i)];
+      if (node.form == Weakening::none) continue;
+      const double path = w.pathStart[i] + blockNorm(s.beta.segment(k * i, k));
+      const double effective = s.sigmaN[i] + w.pressure[i];
+      s.mu[i] = node.mu(path);
+      s.rho[i] = w.cohesion[i] - s.mu[i] * effective;
+      s.dRhoDPath[i] = -node.slope(path) * effective;
+    }
+  }
   for (Eigen::Index i = 0; i < n; ++i) {
     s.node[i] =
         complementarity(s.tau.segment(k * i, k), s.beta.segment(k * i, k), s.rho[i], gamma_);
@@ -166,10 +188,18 @@ Eigen::VectorXd ControlProblem::gradient(const ControlState& s) {
     }
     double normal = 0.0;
     if (gradientKind_ == GradientKind::exact) {
-      normal = mu_[i] * c.dPdRho[0] * D[0];
-      for (Eigen::Index j = 1; j < k; ++j) normal += mu_[i] * c.dPdRho[j] * D[j];
+      const double mu = muAt(s, i);
+      normal = mu * c.dPdRho[0] * D[0];
+      for (Eigen::Index j = 1; j < k; ++j) normal += mu * c.dPdRho[j] * D[j];
     }
     qn[i] = normal;
+    // Weakening: the node's block gains −(∂ρ/∂|β|) β̂ P'_ρᵀ, whose transpose acts on D here.
+    if (s.dRhoDPath.size() && s.dRhoDPath[i] != 0) {
+      double pd = c.dPdRho[0] * D[0];
+      for (Eigen::Index j = 1; j < k; ++j) pd += c.dPdRho[j] * D[j];
+      const Block unit = slipDirection(s, i);
+      for (Eigen::Index r = 0; r < k; ++r) local[k * i + r] -= pd * s.dRhoDPath[i] * unit[r];
+    }
   }
   Eigen::VectorXd tauDual;
   if (!opening_) {
@@ -201,6 +231,14 @@ Eigen::VectorXd ControlProblem::gradient(const ControlState& s) {
   g.head(k * n) = tauDual + local + zeta_ * s.beta.head(k * n);
   g.tail(n) = -normalAdjoint + localN;
   return g.cwiseProduct(componentMask_);
+}
+
+Block ControlProblem::slipDirection(const ControlState& s, Eigen::Index i) const {
+  const Eigen::Index k = blockSize();
+  const Block b = s.beta.segment(k * i, k);
+  const double norm = blockNorm(b);
+  if (norm > 0) return b / norm;
+  return -s.node[static_cast<std::size_t>(i)].dPdRho;  // N̂ in the slip state, 0 otherwise
 }
 
 double ControlProblem::jacobianEntryWithOpening(const ControlState& s, const InterfaceOperator& S,

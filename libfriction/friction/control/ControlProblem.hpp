@@ -12,6 +12,7 @@
 
 #include "friction/control/Complementarity.hpp"
 #include "friction/control/SlipResponse.hpp"
+#include "friction/law/Weakening.hpp"
 
 namespace friction {
 
@@ -28,6 +29,15 @@ struct OpeningSettings {
   double gammaN = 1;           ///< γ_n > 0 [Pa/m] of the normal complementarity
 };
 
+/// Friction that weakens with the slip path δ (slipWeakening, FrictionLaw.hpp): per node its
+/// weakening, the path δ_n at the step's start [m], the cohesion c [Pa] and the fluid pressure
+/// p [Pa]. At a node that weakens, ρ = c − μ(δ_n + |β|)(σ_n + p) replaces ρ = c − μ σ_n with
+/// the constructor's cohesion and μ; the others keep those.
+struct WeakeningSettings {
+  std::vector<WeakeningNode> nodes;  ///< n (form none: the node does not weaken)
+  Eigen::VectorXd pathStart, cohesion, pressure;
+};
+
 /// Everything known at one β.
 struct ControlState {
   /// The control (k·n tangential entries, node-major, then n openings g with OpeningSettings)
@@ -38,6 +48,9 @@ struct ControlState {
   /// With openings: per node 1 where the faces are in contact (σ'_n + γ_n g < 0, or the
   /// fracture may not open), 0 where open (τ = 0, σ'_n = 0 sought).
   std::vector<char> contact;
+  /// With weakening: per node μ at δ_n + |β| (the constructor's μ where the node does not
+  /// weaken) and ∂ρ/∂|β| = −μ'(δ)(σ_n + p) [Pa/m] (0 there); empty without.
+  Eigen::VectorXd mu, dRhoDPath;
   double J = 0;
   long primalSolves = 0;  ///< running count, for the report
 };
@@ -47,8 +60,10 @@ class ControlProblem {
   /// mu, cohesion: per node μ (–) and c [Pa]; gamma [Pa/m] > 0; zeta [Pa/m] ≥ 0.
   /// opening: fractures that may open (the control gains the n openings); none: bilateral.
   /// cohesion holds c − μ p where a fracture pressure p acts.
+  /// weakening: friction that weakens with the slip path (refused with openings).
   ControlProblem(SlipResponse& response, Eigen::VectorXd mu, Eigen::VectorXd cohesion, double gamma,
-                 double zeta, GradientKind gradient, const OpeningSettings* opening = nullptr);
+                 double zeta, GradientKind gradient, const OpeningSettings* opening = nullptr,
+                 const WeakeningSettings* weakening = nullptr);
 
   /// Primal solve at β, then D, J. (One back-substitution.)
   ControlState evaluate(const Eigen::VectorXd& beta);
@@ -70,10 +85,23 @@ class ControlProblem {
     double g = ((r == 0 ? 1.0 : 0.0) - c.dPdN(r, 0)) * Stt(k * i, col);
     for (Eigen::Index j = 1; j < k; ++j)
       g += ((r == j ? 1.0 : 0.0) - c.dPdN(r, j)) * Stt(k * i + j, col);
-    g += mu_[i] * c.dPdRho[r] * Snt(i, col);
+    g += muAt(s, i) * c.dPdRho[r] * Snt(i, col);
     if (col / k == i && c.dPdN(r, col % k) != 0) g += gamma_ * c.dPdN(r, col % k);
+    // Weakening: ρ falls with |β_i|, ∂ρ/∂β_i = (∂ρ/∂|β|) β̂_i, so −P'_ρ ∂ρ/∂β_i joins the node's
+    // own block.
+    if (col / k == i && s.dRhoDPath.size() && s.dRhoDPath[i] != 0)
+      g -= c.dPdRho[r] * s.dRhoDPath[i] * slipDirection(s, i)[col % k];
     return g;
   }
+  /// μ of node i at state s: the weakened one where the friction weakens.
+  double muAt(const ControlState& s, Eigen::Index i) const {
+    return s.mu.size() ? s.mu[i] : mu_[i];
+  }
+  /// The unit direction of node i's slip increment, β_i/|β_i|; at β_i = 0 the one the slip
+  /// takes from there, −N̂ (β is opposite to N in the slip state, docs/method.md §3).
+  Block slipDirection(const ControlState& s, Eigen::Index i) const;
+  bool weakens() const { return weakening_ != nullptr; }
+  const WeakeningSettings* weakening() const { return weakening_; }
 
   /// Entry (row, col) of dD/dx for the whole control x = (β, g) (with openings): the
   /// tangential block is jacobianEntry's; a column of g_j adds (I − P'_N) S_tn + μ P'_ρ (S_nn
@@ -126,6 +154,7 @@ class ControlProblem {
   GradientKind gradientKind_;
   bool opening_ = false;
   OpeningSettings openingSettings_;
+  const WeakeningSettings* weakening_ = nullptr;
   long numPrimal_ = 0, numDual_ = 0;
 };
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include "friction/control/KrylovPreconditioner.hpp"
 #include "friction/core/Assert.hpp"
@@ -31,6 +32,8 @@ const char* toString(OptimizerStatus s) {
       return "stalled";
     case OptimizerStatus::inaccurate:
       return "inaccurate";
+    case OptimizerStatus::nucleation:
+      return "nucleation";
   }
   return "?";
 }
@@ -480,6 +483,38 @@ std::string SemismoothNewton::prepare(SlipResponse& resp, bool withOpening) {
   return s.str();
 }
 
+void SemismoothNewton::tangentStiffness(ControlProblem& p, const ControlState& s,
+                                        OptimizerReport& r) const {
+  // The slipping nodes' free components: stick nodes are held (β = 0 there), so the patch's
+  // stability is that of G restricted to the slipping ones.
+  const Eigen::Index n = p.numNodes(), k = p.blockSize();
+  const Eigen::VectorXd& w = p.response().weights();
+  std::vector<Eigen::Index> slipping;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (p.freeMask()[i] == 0 || s.node[static_cast<std::size_t>(i)].state != SlipState::slip)
+      continue;
+    for (Eigen::Index c = 0; c < k; ++c)
+      if (p.componentMask()[k * i + c] != 0) slipping.push_back(k * i + c);
+  }
+  const Eigen::Index m = static_cast<Eigen::Index>(slipping.size());
+  r.stiffnessComponents = m;
+  if (m == 0) return;
+  // W·G is symmetric where G is S_tt alone (M·S is); its symmetric part's smallest eigenvalue
+  // decides whether a slip perturbation on the patch is resisted (> 0) or runs away (≤ 0).
+  Eigen::MatrixXd A(m, m);
+  double scale = 0;
+  for (Eigen::Index a = 0; a < m; ++a) {
+    const double wa = w[slipping[static_cast<std::size_t>(a)] / k];
+    for (Eigen::Index b = 0; b < m; ++b)
+      A(a, b) = wa * p.jacobianEntry(s, S_.Stt, S_.Snt, slipping[a], slipping[b]);
+    scale += wa * S_.Stt(slipping[a], slipping[a]);
+  }
+  const Eigen::MatrixXd sym = 0.5 * (A + A.transpose());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(sym, Eigen::EigenvaluesOnly);
+  scale /= static_cast<double>(m);
+  r.tangentStiffness = eig.eigenvalues()[0] / (scale > 0 ? scale : 1.0);
+}
+
 OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
   if (variant_ == Variant::krylov) return minimizeKrylov(p, beta);
   SlipResponse& resp = p.response();
@@ -645,6 +680,7 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
     if (r.status == OptimizerStatus::converged && !converged(p, s, 0))
       r.status = OptimizerStatus::maxIterations;
   }
+  if (p.weakens()) tangentStiffness(p, s, r);
   return finish(p, s, lastStep, r, beta);
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,7 +24,11 @@ enum class OptimizerStatus {
   /// output (one more primal solve) misses the tolerance: round-off of an ill-conditioned
   /// system (ν close to 0.5, slivers) is larger than the tolerance asks. Set by the caller
   /// that judges the written state (FrictionCase), never by an optimizer.
-  inaccurate
+  inaccurate,
+  /// Friction that weakens with slip: no stable quasi-static equilibrium near the previous
+  /// step's (the slipping patch's tangent stiffness is ≤ 0, or Newton found no equilibrium
+  /// while weakening nodes slip): an instability nucleates. Set by FrictionCase.
+  nucleation
 };
 const char* toString(OptimizerStatus s);
 
@@ -44,6 +49,15 @@ struct OptimizerReport {
   /// Back-substitutions spent on operators built once per run (Newton's condensed S), not
   /// on this step: a restarted run builds them again, and its steps must read the same.
   long setupSolves = 0;
+  /// With friction that weakens (ControlProblem::weakens) and an optimizer that holds S: the
+  /// smallest eigenvalue of the symmetric part of W·G on the slipping nodes' components (G the
+  /// Jacobian dD/dβ at the answer, W the nodes' weights), over the mean of W·diag(S_tt) there:
+  /// the slipping patch's tangent stiffness, relative. ≤ 0: the equilibrium is unstable (the
+  /// weakening outruns the rock's stiffness: nucleation). NaN when not computed (no weakening,
+  /// or no node slips).
+  double tangentStiffness = std::numeric_limits<double>::quiet_NaN();
+  /// The number of slipping components it was computed on.
+  long stiffnessComponents = 0;
 };
 
 /// Settings every optimizer shares (keys of the case's 'solver' dictionary).
@@ -69,6 +83,9 @@ class Optimizer {
   /// False where the optimizer cannot take fractures that open (the opening control of
   /// docs/method.md §4, "Fractures that open"); the case refuses that combination.
   virtual bool handlesOpening() const { return true; }
+  /// Friction that weakens with slip (slipWeakening): only an optimizer that can tell a lost
+  /// equilibrium from slow convergence (OptimizerReport::tangentStiffness) takes it.
+  virtual bool handlesWeakening() const { return false; }
 
   /// Build what the optimizer forms once per run (Newton's condensed S in the fractures'
   /// frame) now, before the first step, so that the log says what it costs when it is done
@@ -198,9 +215,13 @@ class SemismoothNewton : public Optimizer {
   InterfaceMethod interfaceMethod() const { return interfaceMethod_; }
   /// The krylov variant's products carry no normal rows yet.
   bool handlesOpening() const override { return variant_ == Variant::condensed; }
+  /// The condensed variant holds S, so it can judge the slipping patch's stability.
+  bool handlesWeakening() const override { return variant_ == Variant::condensed; }
 
  private:
   OptimizerReport minimizeKrylov(ControlProblem& problem, Eigen::VectorXd& beta);
+  /// OptimizerReport::tangentStiffness of the answer s (condensed: S_ is at hand).
+  void tangentStiffness(ControlProblem& p, const ControlState& s, OptimizerReport& r) const;
   bool lineSearch(ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
                   const std::function<ControlState(const Eigen::VectorXd&)>& stateAt,
                   double& lastStep, std::vector<int>& states);

@@ -1,8 +1,10 @@
 // Friction laws and their selection table.
 #include "friction/law/FrictionLaw.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 
 namespace friction {
@@ -62,9 +64,59 @@ const LawEntry lawTable[] = {
        return std::make_unique<CoulombCohesion>(in.mu(),
                                                 in.field("cohesion", Bounds::nonNegative()));
      }},
+    {"slipWeakening",
+     [](const LawInput& in) -> std::unique_ptr<FrictionLaw> {
+       in.d.advise("frictionCoefficient",
+                   "law slipWeakening takes 'staticCoefficient' μ_s and 'dynamicCoefficient' "
+                   "μ_d (μ falls from μ_s to μ_d over the slip path 'criticalSlip' D_c [m])");
+       in.d.advise("frictionAngle",
+                   "law slipWeakening takes 'staticCoefficient' μ_s and 'dynamicCoefficient' "
+                   "μ_d, as numbers or fields (μ = tan φ)");
+       FrictionField muS = in.field("staticCoefficient", Bounds::nonNegative());
+       FrictionField muD = in.field("dynamicCoefficient", Bounds::nonNegative());
+       // μ_d ≤ μ_s: here for numbers, node by node where the case evaluates fields.
+       if (muS.isConstant() && muD.isConstant() && muD.value() > muS.value())
+         in.d.fail("dynamicCoefficient", "key 'dynamicCoefficient': " + formatNumber(muD.value()) +
+                                             " above staticCoefficient " +
+                                             formatNumber(muS.value()) +
+                                             ": slip-weakening needs mu_d <= mu_s");
+       FrictionField dc = in.field("criticalSlip", Bounds::positive());
+       const Weakening form =
+           in.d.getChoiceOr("weakening", {"linear", "exponential"}, "linear") == "linear"
+               ? Weakening::linear
+               : Weakening::exponential;
+       FrictionField c = in.d.found("cohesion") ? in.field("cohesion", Bounds::nonNegative())
+                                                : FrictionField(0.0);
+       return std::make_unique<SlipWeakening>(std::move(muS), std::move(muD), std::move(dc),
+                                              std::move(c), form);
+     }},
 };
 
 }  // namespace
+
+double WeakeningNode::mu(double delta) const {
+  switch (form) {
+    case Weakening::none:
+      return muStatic;
+    case Weakening::linear:
+      return muDynamic + (muStatic - muDynamic) * std::max(0.0, 1.0 - delta / criticalSlip);
+    case Weakening::exponential:
+      return muDynamic + (muStatic - muDynamic) * std::exp(-delta / criticalSlip);
+  }
+  return muStatic;
+}
+
+double WeakeningNode::slope(double delta) const {
+  switch (form) {
+    case Weakening::none:
+      return 0;
+    case Weakening::linear:
+      return delta < criticalSlip ? -(muStatic - muDynamic) / criticalSlip : 0.0;
+    case Weakening::exponential:
+      return -(muStatic - muDynamic) / criticalSlip * std::exp(-delta / criticalSlip);
+  }
+  return 0;
+}
 
 std::vector<std::string> FrictionLaw::names() {
   std::vector<std::string> n;

@@ -3,6 +3,11 @@
 // run-time selectable by name from the table in FrictionLaw.cpp. μ and c are fields along the
 // fracture (FrictionField.hpp): a number, or a table in arclength, values at points, or a
 // function of depth; the case evaluates them at its fracture nodes.
+//
+// slipWeakening (docs/method.md §3): μ falls with the slip path δ [m] a node has slid, from
+// μ_s to μ_d over the critical slip D_c — linear, μ = μ_d + (μ_s − μ_d) max(0, 1 − δ/D_c), or
+// exponential, μ = μ_d + (μ_s − μ_d) e^(−δ/D_c). Its state is δ per node (the case keeps it,
+// writes it in uniform/frictionState and restarts from it); mu() is μ_s, the μ at δ = 0.
 #pragma once
 
 #include <memory>
@@ -11,6 +16,7 @@
 #include <vector>
 
 #include "friction/law/FrictionField.hpp"
+#include "friction/law/Weakening.hpp"
 
 namespace friction {
 
@@ -32,6 +38,11 @@ class FrictionLaw {
   virtual const FrictionField& cohesion() const { return zero_; }
   /// The dictionary key c is read from ('threshold' or 'cohesion'; "" when c = 0).
   virtual std::string cohesionKey() const { return ""; }
+  /// Laws whose μ falls with the slip path (slipWeakening): the form; none for the others.
+  virtual Weakening weakening() const { return Weakening::none; }
+  /// slipWeakening: μ_d (–) and D_c [m] as fields along the fracture.
+  virtual const FrictionField& dynamicCoefficient() const { return zero_; }
+  virtual const FrictionField& criticalSlip() const { return zero_; }
 
  private:
   FrictionField zero_;
@@ -77,6 +88,31 @@ class CoulombCohesion : public FrictionLaw {
 
  private:
   FrictionField mu_, c_;
+};
+
+/// |τ| ≤ c − μ(δ) σ_n with μ falling from μ_s to μ_d over the slip path D_c ('staticCoefficient',
+/// 'dynamicCoefficient', 'criticalSlip', 'weakening' linear or exponential, 'cohesion' ≥ 0
+/// optional).
+class SlipWeakening : public FrictionLaw {
+ public:
+  SlipWeakening(FrictionField muS, FrictionField muD, FrictionField dc, FrictionField c,
+                Weakening form)
+      : muS_(std::move(muS)),
+        muD_(std::move(muD)),
+        dc_(std::move(dc)),
+        c_(std::move(c)),
+        form_(form) {}
+  std::string name() const override { return "slipWeakening"; }
+  const FrictionField& mu() const override { return muS_; }
+  const FrictionField& cohesion() const override { return c_; }
+  std::string cohesionKey() const override { return "cohesion"; }
+  Weakening weakening() const override { return form_; }
+  const FrictionField& dynamicCoefficient() const override { return muD_; }
+  const FrictionField& criticalSlip() const override { return dc_; }
+
+ private:
+  FrictionField muS_, muD_, dc_, c_;
+  Weakening form_;
 };
 
 }  // namespace friction

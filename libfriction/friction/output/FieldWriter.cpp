@@ -118,6 +118,10 @@ std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
     if (dim == 3)  // the hanging wall's slip and τ on strike and down dip
       for (const double x : strikeDipValues(r)) v.push_back(x);
   }
+  if (r.hasWeakening) {
+    v.push_back(r.slipPath);
+    v.push_back(r.frictionCoefficient);
+  }
   return v;
 }
 
@@ -133,13 +137,15 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   // Fractures that open: the opening g before the state.
   const bool opening = !rows.empty() && rows.front().hasOpening;
   const bool hasPressure = !rows.empty() && rows.front().hasPressure;
+  const std::string weakening =
+      !rows.empty() && rows.front().hasWeakening ? "slipPath frictionCoefficient " : "";
   const std::string pressure =
       !hasPressure ? ""
       : dim == 3   ? "pressure sigmaNEffective deltaCFS slipStrike slipDip tauStrike tauDip "
                    : "pressure sigmaNEffective deltaCFS ";
   if (dim != 3) {
     out << "# s x y slip slipIncrement sigmaN tau ST residual " << (opening ? "opening " : "")
-        << pressure << "state\n# " << statusLine << "\n";
+        << pressure << weakening << "state\n# " << statusLine << "\n";
     for (const std::string& note : notes) out << "# " << note << "\n";
     for (const FractureRow& r : rows) {
       for (const double v : fractureTableValues(r, dim)) value(v) << " ";
@@ -150,7 +156,7 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   }
   out << "# x y z nx ny nz slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1 "
          "slipIncrement2 sigmaN tau1 tau2 tauMagnitude ST residual "
-      << (opening ? "opening " : "") << pressure << "state\n# " << statusLine << "\n";
+      << (opening ? "opening " : "") << pressure << weakening << "state\n# " << statusLine << "\n";
   const auto vector = [&out](const Eigen::Vector3d& v) {
     out << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
   };

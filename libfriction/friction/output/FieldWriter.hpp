@@ -18,7 +18,8 @@
 //    comes before "state", in 2D and 3D; with a fluid pressure (fracturePressure,
 //    faultPressure), "pressure sigmaNEffective deltaCFS" (p, σ'_n = σ_n + p and the Coulomb
 //    failure stress change [Pa]) come after it, and in 3D "slipStrike slipDip tauStrike
-//    tauDip" (strikeDipValues()).
+//    tauDip" (strikeDipValues()); with friction that weakens (slipWeakening), "slipPath
+//    frictionCoefficient" (δ [m] and μ(δ)) after those.
 #pragma once
 
 #include <array>
@@ -57,6 +58,12 @@ struct FractureRow {
   /// Coulomb failure stress change against the initial state, Δ|τ| + μ_f Δσ'_n [Pa] (positive
   /// towards failure), NaN at tips; written with the pressure columns.
   double deltaCFS = 0;
+  /// The fracture's friction weakens with slip (law slipWeakening on some fracture of the
+  /// case): the columns slipPath and frictionCoefficient are written (after the pressure
+  /// columns, before state).
+  bool hasWeakening = false;
+  double slipPath = 0;             ///< δ, the length of the path slid [m]
+  double frictionCoefficient = 0;  ///< μ at δ (the law's μ where the friction does not weaken)
   std::string state;
 };
 

@@ -366,6 +366,11 @@ void optionalArrays(ArraySink& sink, std::ostream& s, const std::vector<Fracture
              [](const FractureRow& r) { return r.sigmaNEffective; });
     rowArray(sink, s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
   }
+  if (!rows.empty() && rows.front().hasWeakening) {
+    rowArray(sink, s, "slipPath", rows, [](const FractureRow& r) { return r.slipPath; });
+    rowArray(sink, s, "frictionCoefficient", rows,
+             [](const FractureRow& r) { return r.frictionCoefficient; });
+  }
 }
 
 void writeFracturePolyline(const std::string& path, const std::vector<FractureRow>& rows,

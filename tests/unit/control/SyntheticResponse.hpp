@@ -62,6 +62,8 @@ class SyntheticResponse : public SlipResponse {
     if (sigmaNDual) *sigmaNDual = Snt_ * qt + w_.cwiseInverse().asDiagonal() * Snn_ * qn;
   }
   std::mt19937& rng() { return rng_; }
+  const MatrixXd& Stt() const { return Stt_; }
+  const MatrixXd& Snt() const { return Snt_; }
 
   /// The same body with node i's tangent basis turned by angle[i] (k = 2): components
   /// x' = Rᵀ x, so τ' = Rᵀ τ, S'_tt = Rᵀ S_tt R, S'_nt = S_nt R (R block-diagonal).

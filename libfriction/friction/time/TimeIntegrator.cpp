@@ -1,0 +1,56 @@
+// TimeIntegrator: the selection table and the quasi-static stepping (TimeIntegrator.hpp).
+#include "friction/time/TimeIntegrator.hpp"
+
+#include <functional>
+
+#include "friction/dict/Dictionary.hpp"
+
+namespace friction {
+
+namespace {
+
+struct IntegratorEntry {
+  const char* name;
+  std::function<std::unique_ptr<TimeIntegrator>()> make;
+};
+
+const std::vector<IntegratorEntry>& integratorTable() {
+  static const std::vector<IntegratorEntry> table = {
+      {"quasiStatic", [] { return std::make_unique<QuasiStatic>(); }},
+  };
+  return table;
+}
+
+}  // namespace
+
+std::vector<std::string> TimeIntegrator::names() {
+  std::vector<std::string> n;
+  for (const auto& e : integratorTable()) n.push_back(e.name);
+  return n;
+}
+
+std::unique_ptr<TimeIntegrator> TimeIntegrator::New(const Dictionary& frictionSolution) {
+  const std::string type = frictionSolution.getChoiceOr("timeIntegration", names(), "quasiStatic");
+  for (const auto& e : integratorTable())
+    if (type == e.name) return e.make();
+  return nullptr;  // getChoiceOr accepts only the table's names
+}
+
+void QuasiStatic::advance(StepHost& host, StepResult& r, const StepResult* previous) {
+  StepLoads loads = host.loadsAt(r.time);
+  // Only what changed is recomputed: a step whose loads equal the previous step's has the
+  // previous (converged) solution, with β = 0.
+  if (previous && loads == last_ && previous->report.status == OptimizerStatus::converged) {
+    r.reused = true;
+    r.report.status = OptimizerStatus::converged;
+    r.relResidual = previous->relResidual;
+    r.report.tangentStiffness = previous->report.tangentStiffness;
+    r.report.stiffnessComponents = previous->report.stiffnessComponents;
+    host.keepSolution(loads);
+  } else {
+    host.solveStep(loads, r.time, r);
+  }
+  last_ = std::move(loads);
+}
+
+}  // namespace friction
