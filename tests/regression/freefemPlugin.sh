@@ -79,7 +79,7 @@ print("P%s: slip of the script against frictionSolver on the same files %.1e, ag
       "cases/paperBenchmark %.1e (of the largest slip, %.3e m)" % (order, d1, d2, scale))
 assert d1 <= 1e-12, "P%s: the plug-in's slip differs from frictionSolver's by %g" % (order, d1)
 assert d2 <= 1e-9, "P%s: the slip differs from cases/paperBenchmark's by %g" % (order, d2)
-# every other column of the table too (tips have no traction: nan in both)
+# every other column of the table too (the tips' rows included: the body's stress there)
 for j, name in enumerate("s x y slip slipIncrement sigmaN tau ST residual".split()):
     a, b = got[:, j], same[:, j]
     assert np.array_equal(np.isnan(a), np.isnan(b)), name
