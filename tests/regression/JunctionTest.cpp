@@ -211,6 +211,11 @@ TEST_CASE("junctions: a T whose branch is bonded equals the fracture alone", "[j
         "# junction at (0 0): ends here, its jump held (state junction); meets 'main'");
   const std::size_t junction = rowAt(branch, 0, 0);
   CHECK(branch.state[junction] == "junction");
+  // Its row holds the body's stress at the node (all its copies' cells), as a tip's: finite,
+  // residual 0.
+  CHECK(std::isfinite(branch.at(junction, "sigmaN")));
+  CHECK(std::isfinite(branch.at(junction, "tau")));
+  CHECK(branch.at(junction, "residual") == 0.0);
   int stick = 0;
   for (std::size_t r = 0; r < branch.rows.size(); ++r)
     if (r != junction && branch.state[r] != "tip") CHECK(branch.state[r] == (++stick, "stick"));
@@ -228,9 +233,9 @@ TEST_CASE("junctions: a T whose branch is bonded equals the fracture alone", "[j
     INFO("row " << r);
     CHECK(code[r] == (branch.state[r] == "junction" ? 4 : branch.state[r] == "tip" ? 3 : 0));
   }
-  // Without a junction row the comment reads as it always has.
+  // Without a junction row the legend stops at the tip.
   CHECK_THAT(readText(alone.dir() / "VTK" / "fractures" / "main_1.vtp"),
-             Catch::Contains("3 tip (no traction"));
+             Catch::Contains("2 open, 3 tip -->"));
 }
 
 TEST_CASE("junctions: a fracture cut in two collinear fractures equals the uncut one",

@@ -116,8 +116,8 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     CHECK(std::stod(status.at("equilibriumResidual")) <= 1e-8);
     for (const auto& f : fractures) {
       auto rows = c.table(name, f);
-      // A tip or a held junction node has no traction (nan): leave it out of the norms and
-      // the check below.
+      // A tip or a held junction node has no recovered traction (its row gives the stress
+      // concentration there): leave it out of the norms and the check below.
       rows.erase(
           std::remove_if(rows.begin(), rows.end(),
                          [](const Row& r) { return r.state == "tip" || r.state == "junction"; }),

@@ -52,7 +52,7 @@ constexpr double kSide = 2.0;
 const Eigen::Vector3d kNormal = Eigen::Vector3d(1, 2, 2) / 3;
 const Point kCorner(0.25, -0.5, 1.0);
 constexpr int kEdges[5][2] = {{0, 1}, {1, 2}, {2, 0}, {2, 3}, {3, 0}};
-constexpr int kTip = 3;  // row 3 is a tip: no traction
+constexpr int kTip = 3;  // row 3 is a tip: no recovered traction
 const char* const kStates[3] = {"stick", "slip", "open"};
 
 std::vector<FractureRow> faultRows(int degree) {
