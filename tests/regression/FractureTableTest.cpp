@@ -4,7 +4,7 @@
 //    (the mean over the cells around it, in-situ stress and pore-pressure term included)
 //    resolved on the node's frame. Under a uniform stress that nothing makes slip, that is
 //    exactly what every other node recovers: the tips' σ_n, τ, ST, σ'_n and ΔCFS equal the
-//    interior rows' and the closed form n·σ·n, t·σ·n, in 2D (P1, P2) and 3D.
+//    interior rows' and the closed form n·σ·n, t·σ·n, in 2D and 3D, P1 and P2.
 //  * 2D: nx ny tx ty are n_Γ and t_Γ (unit, orthogonal, n = (t_y, −t_x)), slipX slipY the slip
 //    vector slip·t_Γ; on the inclined crack under vertical compression its sign is the
 //    physical one: the upper block slides down the crack.
@@ -137,59 +137,69 @@ TEST_CASE("fracture tables: a tip's tractions are the body's stress there (3D, u
   // The cube with its fault z = 1/2 (tip line inside the body): sides held in x and y, the
   // bottom fixed, the top moved down by 1 mm: u = (0, 0, −0.001 z), uniform strain. With an
   // in-situ stress whose shear loads the fault, σ = σ⁰ + C:ε everywhere, and μ_f = 10 holds it.
-  Case c("tests:faultInCube", "tipStress3d");
-  c.edit("constant/fractureProperties", "frictionCoefficient 0\\.2;", "frictionCoefficient 10;");
-  c.edit("0/D", "sides +\\{ type free; \\}",
-         "sides   { type fixedDisplacement; components (x y); value (0 0 0); }");
-  c.edit("0/D", "\\(0\\.002 0\\.001 -0\\.001\\)", "(0 0 -0.001)");
-  writeText(c.dir() / "constant/effects",
-            "inSitu { type initialStress; stress (-3e7 -3.5e7 -4e7 1e6 2e6 3e6); }\n");
-  {
-    const std::string dict = readText(c.dir() / "system/controlDict");
-    writeText(c.dir() / "system/controlDict", dict + "\nvtkFormat ascii;\n");
-  }
-  const int rc = c.solve();
-  INFO(c.log());
-  REQUIRE(rc == 0);
-  const Table t = c.namedTable("1", "fault");
-  // E = 1e9 Pa, ν = 0.25: λ + 2μ = 1.2e9 Pa, λ = 4e8 Pa; ε_zz = −0.001.
-  Eigen::Matrix3d sigma;
-  sigma << -3e7 - 4e5, 1e6, 3e6, 1e6, -3.5e7 - 4e5, 2e6, 3e6, 2e6, -4e7 - 1.2e6;
-  std::vector<std::size_t> tips, inside;
-  std::vector<std::size_t> all;
-  splitRows(t, tips, all);
-  // The rows on the sides are held by the rollers, whose reactions their recovered traction
-  // includes: compare with the rows inside.
-  for (const std::size_t i : all)
-    if (std::min({t.at(i, "x"), 1 - t.at(i, "x"), t.at(i, "y"), 1 - t.at(i, "y")}) > 1e-9)
-      inside.push_back(i);
-  REQUIRE(inside.size() >= 3);
-  const auto n = [&](std::size_t i) {
-    return Eigen::Vector3d(t.at(i, "nx"), t.at(i, "ny"), t.at(i, "nz"));
-  };
-  // The table's tangent basis: t₁ = tangentBasis(n) for this flat fault, from the frame line.
-  std::smatch m;
-  REQUIRE(t.comments.size() >= 2);
-  REQUIRE(std::regex_search(t.comments[1], m,
+  // P2: the tip line's edge midpoints are tips too.
+  for (const int order : {1, 2}) {
+    DYNAMIC_SECTION("P" << order) {
+      Case c("tests:faultInCube", "tipStress3d-P" + std::to_string(order));
+      if (order == 2) c.edit("system/frictionSolution", "elementOrder +1;", "elementOrder 2;");
+      c.edit("constant/fractureProperties", "frictionCoefficient 0\\.2;",
+             "frictionCoefficient 10;");
+      c.edit("0/D", "sides +\\{ type free; \\}",
+             "sides   { type fixedDisplacement; components (x y); value (0 0 0); }");
+      c.edit("0/D", "\\(0\\.002 0\\.001 -0\\.001\\)", "(0 0 -0.001)");
+      writeText(c.dir() / "constant/effects",
+                "inSitu { type initialStress; stress (-3e7 -3.5e7 -4e7 1e6 2e6 3e6); }\n");
+      {
+        const std::string dict = readText(c.dir() / "system/controlDict");
+        writeText(c.dir() / "system/controlDict", dict + "\nvtkFormat ascii;\n");
+      }
+      const int rc = c.solve();
+      INFO(c.log());
+      REQUIRE(rc == 0);
+      const Table t = c.namedTable("1", "fault");
+      // E = 1e9 Pa, ν = 0.25: λ + 2μ = 1.2e9 Pa, λ = 4e8 Pa; ε_zz = −0.001.
+      Eigen::Matrix3d sigma;
+      sigma << -3e7 - 4e5, 1e6, 3e6, 1e6, -3.5e7 - 4e5, 2e6, 3e6, 2e6, -4e7 - 1.2e6;
+      std::vector<std::size_t> tips, inside;
+      std::vector<std::size_t> all;
+      splitRows(t, tips, all);
+      // The rows on the sides are held by the rollers, whose reactions their recovered traction
+      // includes: compare with the rows inside.
+      for (const std::size_t i : all)
+        if (std::min({t.at(i, "x"), 1 - t.at(i, "x"), t.at(i, "y"), 1 - t.at(i, "y")}) > 1e-9)
+          inside.push_back(i);
+      REQUIRE(inside.size() >= 3);
+      const auto n = [&](std::size_t i) {
+        return Eigen::Vector3d(t.at(i, "nx"), t.at(i, "ny"), t.at(i, "nz"));
+      };
+      // The table's tangent basis: t₁ = tangentBasis(n) for this flat fault, from the frame line.
+      std::smatch m;
+      REQUIRE(t.comments.size() >= 2);
+      REQUIRE(
+          std::regex_search(t.comments[1], m,
                             std::regex("t1 \\(([^ ]+) ([^ ]+) ([^ )]+)\\) t2 \\(([^ ]+) ([^ ]+) "
                                        "([^ )]+)\\)")));
-  const Eigen::Vector3d t1(std::stod(m[1]), std::stod(m[2]), std::stod(m[3]));
-  const Eigen::Vector3d t2(std::stod(m[4]), std::stod(m[5]), std::stod(m[6]));
-  const double scale = 4e7;
-  checkColumn(t, "sigmaN", tips, inside, scale,
-              [&](std::size_t i) { return n(i).dot(sigma * n(i)); });
-  checkColumn(t, "tau1", tips, inside, scale, [&](std::size_t i) { return t1.dot(sigma * n(i)); });
-  checkColumn(t, "tau2", tips, inside, scale, [&](std::size_t i) { return t2.dot(sigma * n(i)); });
-  checkColumn(t, "ST", tips, inside, 1.0, [&](std::size_t i) {
-    const Eigen::Vector3d s = sigma * n(i);
-    return (s - s.dot(n(i)) * n(i)).norm() / -s.dot(n(i));
-  });
-  for (const std::size_t i : tips) {
-    INFO("tip row " << i);
-    CHECK(t.at(i, "residual") == 0.0);
-    CHECK(t.at(i, "slipMagnitude") == 0.0);
+      const Eigen::Vector3d t1(std::stod(m[1]), std::stod(m[2]), std::stod(m[3]));
+      const Eigen::Vector3d t2(std::stod(m[4]), std::stod(m[5]), std::stod(m[6]));
+      const double scale = 4e7;
+      checkColumn(t, "sigmaN", tips, inside, scale,
+                  [&](std::size_t i) { return n(i).dot(sigma * n(i)); });
+      checkColumn(t, "tau1", tips, inside, scale,
+                  [&](std::size_t i) { return t1.dot(sigma * n(i)); });
+      checkColumn(t, "tau2", tips, inside, scale,
+                  [&](std::size_t i) { return t2.dot(sigma * n(i)); });
+      checkColumn(t, "ST", tips, inside, 1.0, [&](std::size_t i) {
+        const Eigen::Vector3d s = sigma * n(i);
+        return (s - s.dot(n(i)) * n(i)).norm() / -s.dot(n(i));
+      });
+      for (const std::size_t i : tips) {
+        INFO("tip row " << i);
+        CHECK(t.at(i, "residual") == 0.0);
+        CHECK(t.at(i, "slipMagnitude") == 0.0);
+      }
+      checkNoNan(c.dir());
+    }
   }
-  checkNoNan(c.dir());
 }
 
 TEST_CASE("fracture tables: 2D frame and slip-vector columns and the slip's physical sign",
