@@ -81,7 +81,7 @@ struct Table {
 /// One row of <time>/fractures/<name>.dat.
 struct Row {
   double s, x, y, slip, slipIncrement, sigmaN, tau, ST, residual;
-  std::string state;  ///< stick, slip, open or tip (a tip's sigmaN, tau, ST, residual are NaN)
+  std::string state;  ///< stick, slip, open or tip (a tip's sigmaN, tau, ST: the body's stress)
 };
 
 class Case {
@@ -193,9 +193,10 @@ class Case {
     std::string line;
     while (std::getline(in, line)) {
       if (line.empty() || line[0] == '#') continue;
-      // strtod, not >>: a tip's "nan" is a value, which operator>> refuses.
-      // The state is the last item: columns such as opening, pressure and sigmaNEffective
-      // come between the residual and it (README, "Fracture tables").
+      // strtod, not >>: a "nan" would be read as a value (the checks then fail on it), which
+      // operator>> refuses. The state is the last item: columns such as opening, pressure,
+      // sigmaNEffective and nx ny tx ty slipX slipY come between the residual and it (README,
+      // "Fracture tables").
       std::istringstream s(line);
       std::string item[10];
       for (auto& i : item) s >> i;

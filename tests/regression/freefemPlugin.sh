@@ -64,8 +64,10 @@ import re, sys
 import numpy as np
 ff, cli, paper, order = sys.argv[1:]
 
+COLUMNS = "s x y slip slipIncrement sigmaN tau ST residual nx ny tx ty slipX slipY".split()
+
 def table(path):
-    return np.loadtxt(path, comments="#", usecols=range(9), ndmin=2)
+    return np.loadtxt(path, comments="#", usecols=range(len(COLUMNS)), ndmin=2)
 
 got = np.loadtxt(ff + "/postProcessing/freefemTable.dat", ndmin=2)
 same = table(cli + "/1/fractures/fracture.dat")
@@ -79,8 +81,9 @@ print("P%s: slip of the script against frictionSolver on the same files %.1e, ag
       "cases/paperBenchmark %.1e (of the largest slip, %.3e m)" % (order, d1, d2, scale))
 assert d1 <= 1e-12, "P%s: the plug-in's slip differs from frictionSolver's by %g" % (order, d1)
 assert d2 <= 1e-9, "P%s: the slip differs from cases/paperBenchmark's by %g" % (order, d2)
-# every other column of the table too (tips have no traction: nan in both)
-for j, name in enumerate("s x y slip slipIncrement sigmaN tau ST residual".split()):
+# every other column of the table too (the tips' rows included: the body's stress there)
+assert got.shape[1] == len(COLUMNS) + 1, "the plug-in's table has %d columns" % got.shape[1]
+for j, name in enumerate(COLUMNS):
     a, b = got[:, j], same[:, j]
     assert np.array_equal(np.isnan(a), np.isnan(b)), name
     m = ~np.isnan(a)

@@ -93,12 +93,13 @@ grep -qF "(tractions and slip)" <<<"$out" || fail "tresca: ST panel drawn: $out"
 out=$(variant frictionless 's/x/x/' 's/law *coulomb;/law frictionless;/; s/frictionCoefficient 0.2;//')
 grep -qF "(tractions and slip)" <<<"$out" || fail "frictionless: ST panel drawn: $out"
 
-# Tips: state tip, nan tractions; plotted without an error.
+# Tips: state tip, the body's stress in the traction columns (no nan); plotted without an error.
 ic=$work/inclinedCrack
 cp -r "$src/cases/inclinedCrack" "$ic" && "$ic/Allclean" >/dev/null
 "$split" -case "$ic" >"$ic/log.splitFractureNodes" 2>&1 || fail "inclinedCrack: split failed"
 "$solver" -case "$ic" >"$ic/log.frictionSolver" 2>&1 || fail "inclinedCrack: solver failed"
-grep -q " nan nan nan nan tip$" "$ic/1/fractures/crack.dat" || fail "inclinedCrack: no tip row"
+grep -q " tip$" "$ic/1/fractures/crack.dat" || fail "inclinedCrack: no tip row"
+! grep -qi "nan" "$ic/1/fractures/crack.dat" || fail "inclinedCrack: nan in the table"
 out=$("$python" "$plot" -case "$ic" -noConvergence 2>&1) || fail "inclinedCrack: $out"
 grep -qF "(slip tendency and slip)" <<<"$out" || fail "inclinedCrack: $out"
 isPng "$ic/postProcessing/fracture_crack.png" || fail "inclinedCrack: no PNG"

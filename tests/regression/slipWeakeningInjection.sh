@@ -29,7 +29,7 @@ grep -q "status nucleation" 6.05/fractures/fault.dat ||
   { echo "FAIL: the table of 6.05 does not carry the status nucleation"; exit 1; }
 grep -q "slipping on 'fault' .* nodes, s from" log.frictionSolver ||
   { echo "FAIL: the nucleation's note does not locate the patch"; exit 1; }
-head -1 6.05/fractures/fault.dat | grep -q "slipPath frictionCoefficient state$" ||
+head -1 6.05/fractures/fault.dat | grep -q "slipPath frictionCoefficient nx ny tx ty slipX slipY state$" ||
   { echo "FAIL: the table lacks the columns slipPath frictionCoefficient"; exit 1; }
 echo "PASS: stopped at the nucleation (6.05), its status, note and the law's columns"
 

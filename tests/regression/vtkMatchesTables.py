@@ -5,8 +5,10 @@ Usage: vtkMatchesTables.py CASE_DIR TIME FRACTURE NUM_POINTS NUM_CELLS
 Checks: the .pvd names files that exist; the .vtu has the split mesh's point and cell
 counts, connectivity in range (VTK itself does not check it) and finite arrays; the .vtp
 has one point per table row with sigmaN, tau, ST, slip, residual, opening (fractures that
-open), pressure, sigmaNEffective and deltaCFS (a fluid pressure) and state equal to the table's values (the table is written with writePrecision digits: relative 1e-6 is ample);
-a tip's row has NaN tractions in both, and state code 3.
+open), pressure, sigmaNEffective and deltaCFS (a fluid pressure), normal and tangent (nx ny
+and tx ty, z = 0) and state equal to the table's values (the table is written with
+writePrecision digits: relative 1e-6 is ample); every value of both is finite (a tip's row
+gives the body's stress there), and a tip has state code 3.
 """
 import math
 import os
@@ -51,24 +53,30 @@ p.SetFileName(os.path.join(vtkdir, vtp))
 p.Update()
 poly = p.GetOutput()
 assert poly.GetNumberOfPoints() == len(rows), (poly.GetNumberOfPoints(), len(rows))
-# 10 columns, 11 with fractures that open (the opening before the state), 3 more with a
-# fluid pressure (pressure, sigmaNEffective and deltaCFS, before the state)
-assert header[-1] == "state" and len(header) in (10, 11, 13, 14), header
+# 16 columns, 17 with fractures that open (the opening after the residual), 3 more with a
+# fluid pressure (pressure, sigmaNEffective and deltaCFS after it); nx ny tx ty slipX slipY
+# last before the state
+assert header[-1] == "state" and len(header) in (16, 17, 19, 20), header
+assert header[-7:-1] == ["nx", "ny", "tx", "ty", "slipX", "slipY"], header
 assert rows and all(len(r) == len(header) for r in rows), "expected %d columns per row" % len(header)
 last = len(header) - 1
+for i, row in enumerate(rows):
+    assert all(math.isfinite(float(v)) for v in row[:last]), ("not finite", i, row)
 names = ["slip", "sigmaN", "tau", "ST", "residual"] + (["opening"] if "opening" in header else [])
 names += ["pressure", "sigmaNEffective", "deltaCFS"] if "pressure" in header else []
-columns = {name: header.index(name) for name in names}
-for name, col in columns.items():
+columns = {name: (header.index(name), 0) for name in names}
+# The frame: point arrays of 3 components (z = 0) against the columns nx ny, tx ty.
+columns.update({"normal": (header.index("nx"), 3), "tangent": (header.index("tx"), 3)})
+for name, (col, components) in columns.items():
     array = poly.GetPointData().GetArray(name)
     assert array is not None, "no point array " + name
     a = vtk_to_numpy(array)
+    assert all(map(math.isfinite, a.ravel())), "a value of %s is not finite" % name
     for i, row in enumerate(rows):
-        want = float(row[col])
-        if math.isnan(want):  # a tip's traction: NaN in both, nowhere else
-            assert row[last] == "tip" and math.isnan(a[i]), (name, i, a[i], row)
-            continue
-        assert math.isclose(a[i], want, rel_tol=1e-6, abs_tol=1e-12 * (1 + abs(want))), (name, i, a[i], want)
+        for k in range(max(components, 1)):
+            got = a[i] if components == 0 else a[i][k]
+            want = 0.0 if k == 2 else float(row[col + k])
+            assert math.isclose(got, want, rel_tol=1e-6, abs_tol=1e-12 * (1 + abs(want))), (name, i, got, want)
 codes = {"stick": 0, "slip": 1, "open": 2, "tip": 3}
 state = vtk_to_numpy(poly.GetPointData().GetArray("state"))
 assert [int(s) for s in state] == [codes[row[last]] for row in rows], "state differs"

@@ -153,8 +153,8 @@ RunSummary checkRun(Case& c, int exitCode) {
   for (const auto& [time, name] : folders) {
     const fs::path dir = c.dir() / name;
     INFO("time folder " << name);
-    // No NaN or Inf written, except a tip row's traction columns.
-    checkWrittenFinite(dir, 21, 14, 19);
+    // No NaN or Inf written (a tip row holds the body's stress there).
+    checkWrittenFinite(dir);
     const auto status = readStatus(dir / "solverStatus");
     REQUIRE(status.count("status"));
     REQUIRE(status.count("relResidual"));

@@ -103,8 +103,8 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     if (!e.is_directory() || name == "0" || *end != '\0' || name[0] == '.') continue;
     ++sum.steps;
     INFO("time folder " << name);
-    // No NaN or Inf written, except a tip row's traction columns.
-    checkWrittenFinite(e.path(), 10, 5, 8);
+    // No NaN or Inf written (a tip row holds the body's stress there).
+    checkWrittenFinite(e.path());
     const auto status = readStatus(e.path() / "solverStatus");
     REQUIRE(status.count("status"));
     sum.statuses.push_back(status.at("status"));
@@ -116,8 +116,8 @@ RunSummary checkRun(Case& c, const std::vector<std::string>& fractures, int exit
     CHECK(std::stod(status.at("equilibriumResidual")) <= 1e-8);
     for (const auto& f : fractures) {
       auto rows = c.table(name, f);
-      // A tip or a held junction node has no traction (nan): leave it out of the norms and
-      // the check below.
+      // A tip or a held junction node has no recovered traction (its row gives the stress
+      // concentration there): leave it out of the norms and the check below.
       rows.erase(
           std::remove_if(rows.begin(), rows.end(),
                          [](const Row& r) { return r.state == "tip" || r.state == "junction"; }),
@@ -618,7 +618,7 @@ TEST_CASE("stability: a block held only by a fracture that opens entirely is dia
   CHECK_THAT(log, Catch::Contains("where they open (contact unilateral) entirely it is free"));
   CHECK_THAT(log, Catch::Contains("a rigid-body motion); fix a patch of it (0/D)"));
   // 41 control nodes, none a tip (the fracture ends on the sides): every item finite.
-  checkWrittenFinite(loose.dir() / "1", 11, 5, 8);
+  checkWrittenFinite(loose.dir() / "1");
   CHECK(readStatus(loose.dir() / "1" / "solverStatus")["status"] == "stalled");
   checkHistoryDecreasing(loose.dir());
 

@@ -14,15 +14,16 @@ Figure 1, per fracture (default <case>/postProcessing/fracture_<name>.png):
           fluid pressure (columns 'pressure sigmaNEffective': fracturePressure, faultPressure)
           a last panel, p and sigma'_n = sigma_n + p [Pa] along s, and ST and the check for
           compressed nodes then use sigma'_n.
-Tips (state 'tip': a single node, no traction) are left out of the traction and ST curves;
-their slip, 0 (the jump is held there), is drawn.
+Tips and junction ends (states 'tip', 'junction': no jump, no recovered traction; the table
+gives the body's stress there, a stress concentration that grows under refinement) are left
+out of the traction and ST curves; their slip, 0 (the jump is held there), is drawn.
 Figure 2 (default <case>/postProcessing/convergence.png, when postProcessing/convergence.dat
 exists): J and the relative residual |D|/|Sigma| against the iteration, log scale, one curve
 per time step.
 
 Input: <case>/<time>/fractures/<name>.dat as frictionSolver writes it (README.md,
-"frictionSolver": a "# s x y slip ..." header line, a "# status ..." line, then rows; "nan"
-in a tip's traction columns) and <case>/postProcessing/convergence.dat (columns time
+"frictionSolver": a "# s x y slip ..." header line, a "# status ..." line, then rows; columns
+by name, a "nan" of older tables read as a missing value) and <case>/postProcessing/convergence.dat (columns time
 iteration J relResidual stepNorm after a "#" header). Time folders are the numeric folder
 names other than 0.
 
@@ -224,7 +225,7 @@ def plotFracture(case, name, times, out):
         cols, status = readTable(os.path.join(case, t, "fractures", name + ".dat"))
         tables.append((t, cols, statusWord(status)))
     # ST = |tau| / -sigma_n and the line ST = mu_f mean something only for a Coulomb law at
-    # compressed nodes; a tip (no traction) counts for nothing.
+    # compressed nodes; a tip or junction end (no recovered traction) counts for nothing.
     # With a fluid pressure (columns pressure, sigmaNEffective) the law and ST act on the
     # effective normal stress sigma'_n = sigma_n + p: a node is compressed where sigma'_n < 0.
     pressure = any("pressure" in cols and "sigmaNEffective" in cols for _, cols, _ in tables)
@@ -242,7 +243,7 @@ def plotFracture(case, name, times, out):
     colors = plt.cm.viridis([0.15 + 0.7 * i / max(1, len(times) - 1) for i in range(len(times))])
     for (t, cols, word), color in zip(tables, colors):
         label = f"t = {t}" + (f" ({word})" if word and word != "converged" else "")
-        keep = [i for i, state in enumerate(cols["state"]) if state != "tip"]
+        keep = [i for i, state in enumerate(cols["state"]) if state not in ("tip", "junction")]
         s = [cols["s"][i] for i in keep]
         if showST:
             axTop.plot(s, [cols["ST"][i] for i in keep], ".-", color=color, ms=3, lw=1, label=label)
@@ -348,7 +349,8 @@ def plotConvergence(case, path, times, out):
 STATES = ("tip", "stick", "slip", "open")
 COLUMNS_3D = ("x", "y", "z", "nx", "ny", "nz", "slip1", "slip2", "slipX", "slipY", "slipZ",
               "slipMagnitude", "sigmaN", "tauMagnitude", "ST", "state")
-# Columns that are finite on every row (a tip's tractions are nan, its slip 0).
+# Columns that are finite on every row (every column is, but tables of older versions had nan
+# tractions at tips, and the tips are left out of the traction maps anyway).
 FINITE_3D = ("x", "y", "z", "nx", "ny", "nz", "slip1", "slip2", "slipX", "slipY", "slipZ",
              "slipMagnitude")
 FRAME_FLAT = re.compile(r"frame\s+n\s*\(([^()]*)\)\s*t1\s*\(([^()]*)\)\s*t2\s*\(([^()]*)\)\s*$")

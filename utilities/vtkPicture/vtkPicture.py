@@ -12,7 +12,8 @@ draws, at one written time:
     array and the time;
   * z up (3D; y up in 2D), the camera looking at the faults along their mean normal (-view
     normal, the default), or from the south-east above (-view iso), or from above (-view top).
-Fractures whose array is absent are drawn grey. Tips' NaN values are drawn in the NaN colour.
+Fractures whose array is absent are drawn grey. A NaN value (the solver writes none) is drawn in
+the NaN colour.
 
 Usage:
   vtkPicture -case DIR [-time T] [-array NAME] [-view normal|iso|top] [-size W,H]

@@ -2,6 +2,7 @@
 #include "friction/case/FrictionCase.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -555,6 +556,27 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
           break;
         }
     shearModulus_[f] = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  }
+  // The cells around each tip and junction end, for the stress the tables give there: those
+  // holding a node of the split space at the tip's position (every copy of it; copies share
+  // their coordinates exactly, P2 midpoints included).
+  tipCells_.assign(nodes.size(), {});
+  {
+    const LagrangeSpace& space = system_->splitSpace();
+    std::map<std::array<double, 3>, std::vector<std::size_t>> tipsAt;
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      if (nodes[k].tip) {
+        const Point& x = space.point(nodes[k].plus);
+        tipsAt[{x.x(), x.y(), x.z()}].push_back(k);
+      }
+    if (!tipsAt.empty())
+      for (Index c = 0; c < space.numCells(); ++c)
+        for (const Index node : space.cellNodes(c)) {
+          const Point& x = space.point(node);
+          const auto it = tipsAt.find({x.x(), x.y(), x.z()});
+          if (it == tipsAt.end()) continue;
+          for (const std::size_t k : it->second) tipCells_[k].push_back(c);
+        }
   }
   // Effects that vary along the fractures (faultPressure's fields) are evaluated at the
   // control nodes once, here, and checked node by node.
@@ -1435,6 +1457,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       break;
     }
     const Eigen::VectorXd& pressure = pressure_;
+    lastTime_ = r.time;
 
     // The step's own solves: operators built once per run (Newton's condensed S) are counted
     // apart, so that a restarted run, which builds them again, writes the same numbers.
@@ -1828,6 +1851,33 @@ std::string FrictionCase::nodeState(Eigen::Index k) const {
   return law == SlipState::open ? (effective >= 0 ? "open" : "slip") : toString(law);
 }
 
+bool FrictionCase::hasStressOffset() const {
+  for (const auto& e : effects_)
+    if (e->givesStressOffset()) return true;
+  return false;
+}
+
+Eigen::Matrix3d FrictionCase::stressOffset(Index cell, const Point& x, double t) const {
+  // 2D: the in-plane block and σ_zz (Effect.hpp).
+  Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
+  for (const auto& e : effects_) s += e->stressOffset(cell, x, t);
+  return s;
+}
+
+Eigen::Matrix3d FrictionCase::tipStress(std::size_t k, const Eigen::VectorXd& u, double t) const {
+  const std::vector<Index>& cells = tipCells_[k];
+  FRICTION_ASSERT(!cells.empty(), "a tip lies in some cell");
+  const ElasticityAssembler& assembler = system_->splitAssembler();
+  const Point& x = system_->controlNodes()[k].position;
+  const bool offset = hasStressOffset();
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  for (const Index c : cells) {
+    sum += assembler.stress(u, c, x);
+    if (offset) sum += stressOffset(c, x, t);
+  }
+  return sum / static_cast<double>(cells.size());
+}
+
 std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f) const {
   FRICTION_ASSERT(f < split_.fractures.size(), "a fracture of the case");
   return fractureRows(f, lastBeta_, nullptr);
@@ -1839,7 +1889,9 @@ std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::
   const auto& nodes = sys.controlNodes();
   // k tangential components per node (k = d − 1), node-major in last_.tau, last_.D, slip_, beta.
   const int kb = sys.blockSize();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // The split displacement for the stress at tips (that of the last primal solve, which the
+  // time folder's D holds too); zero before any solve.
+  Eigen::VectorXd u;
   std::vector<FractureRow> rows;
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     if (nodes[k].fracture != static_cast<int>(f)) continue;
@@ -1850,39 +1902,52 @@ std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::
     row.position = nodes[k].position;
     row.normal = nodes[k].normal;
     row.tangent = nodes[k].tangent;
+    // At a tip (single node, or a junction end) the two sides are not told apart and no
+    // traction is recovered; the row gives the body's stress there resolved on the node's
+    // frame, τ_c = t_c·σ n_Γ and σ_n = n_Γ·σ n_Γ (SignConventions.hpp), the quantity the other
+    // rows recover. The law is not imposed there (no unknown): its residual is 0.
+    Eigen::Vector2d tipTau = Eigen::Vector2d::Zero();
+    double sn = 0;
+    if (tip) {
+      if (u.size() == 0)
+        u = sys.lastUnsplitSolution().size() > 0
+                ? sys.lastSplitDisplacement()
+                : Eigen::VectorXd::Zero(sys.splitSpace().numDofs());
+      const Eigen::Vector3d traction = tipStress(k, u, lastTime_) * nodes[k].normal;
+      sn = traction.dot(nodes[k].normal);
+      for (int c = 0; c < kb; ++c) tipTau[c] = traction.dot(nodes[k].tangent[c]);
+    } else {
+      sn = last_.sigmaN[k];
+    }
     for (int c = 0; c < kb; ++c) {
       row.slip[c] = slip_[at + c];
       row.slipIncrement[c] = beta[at + c];
-      // At a tip (single node) the two sides are not told apart: no traction is recovered,
-      // and the table says so (nan, state tip) rather than show a zero that plots would draw.
-      row.tau[c] = tip ? nan : last_.tau[at + c];
-      row.residual[c] = tip ? nan : last_.D[at + c];
+      row.tau[c] = tip ? tipTau[c] : last_.tau[at + c];
+      row.residual[c] = tip ? 0.0 : last_.D[at + c];
     }
-    const double sn = last_.sigmaN[k];
-    row.sigmaN = tip ? nan : sn;
+    row.sigmaN = sn;
     // Slip tendency |τ| / −σ'_n on the effective normal stress σ'_n = σ_n + p (p = 0 without
     // fracturePressure); |τ| of k = 1 is |τ₁| exactly (blockNorm).
     const double effective = sn + (pressure_.size() ? pressure_[k] : 0.0);
-    const double tauNorm = blockNorm(last_.tau.segment(at, kb));
+    const double tauNorm = tip ? blockNorm(tipTau.head(kb)) : blockNorm(last_.tau.segment(at, kb));
     row.state = nodeState(static_cast<Eigen::Index>(k));
     // Open faces (σ'_n = 0 up to round-off) have no slip tendency: 0, not round-off over
     // round-off. Bilateral nodes are open only where σ'_n ≥ 0, where ST is 0 already.
-    row.ST = tip ? nan : row.state == "open" ? 0.0 : effective < 0 ? tauNorm / -effective : 0.0;
+    row.ST = row.state == "open" ? 0.0 : effective < 0 ? tauNorm / -effective : 0.0;
     if (opening_) {
       row.hasOpening = true;
       row.opening = beta[kb * static_cast<Eigen::Index>(nodes.size()) + k];
     }
     if (hasPressure_) {
-      // The fluid's pressure and the effective normal stress σ'_n = σ_n + p (NaN at tips, as
-      // σ_n): the stress the friction law and ST use.
+      // The fluid's pressure and the effective normal stress σ'_n = σ_n + p: the stress the
+      // friction law and ST use.
       row.hasPressure = true;
       row.pressure = pressure_.size() ? pressure_[k] : 0.0;
-      row.sigmaNEffective = tip ? nan : effective;
+      row.sigmaNEffective = effective;
       // ΔCFS = Δ|τ| + μ_f Δσ'_n against the initial state (setup()): positive towards failure.
       const Eigen::Index i = static_cast<Eigen::Index>(k);
       row.deltaCFS =
-          tip ? nan
-              : (tauNorm - initialTauNorm_[i]) + mu_[i] * (effective - initialSigmaNEffective_[i]);
+          (tauNorm - initialTauNorm_[i]) + mu_[i] * (effective - initialSigmaNEffective_[i]);
     }
     if (weakening_) {
       row.hasWeakening = true;
@@ -2012,15 +2077,8 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
     // The total stress: C:ε(u) plus what the effects add (initialStress's σ⁰, porePressure's
     // −α_B Δp_b I); nothing to add without them.
     std::function<Eigen::Matrix3d(Index, const Point&)> offset;
-    bool hasOffset = false;
-    for (const auto& e : effects_) hasOffset |= e->givesStressOffset();
-    if (hasOffset)
-      offset = [this, t = r.time](Index cell, const Point& x) {
-        // 2D: the in-plane block and σ_zz (Effect.hpp).
-        Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
-        for (const auto& e : effects_) s += e->stressOffset(cell, x, t);
-        return s;
-      };
+    if (hasStressOffset())
+      offset = [this, t = r.time](Index cell, const Point& x) { return stressOffset(cell, x, t); };
     vtk_->write(r.time, time_->timeName(r.time), sys.splitSpace(), sys.splitAssembler(), u,
                 vtkFractures, precision, offset);
   }

@@ -135,6 +135,20 @@ class FrictionCase : private StepHost {
   /// Where the nodes of fractures whose friction weakens slip in the last step, per fracture
   /// (2D: the arclength span; 3D: area, centre, extent); "" when none slips.
   std::string patchOfWeakeningSlip() const;
+  /// What the effects add at time t to the stress C:ε(u) of cell `cell` at x to make the
+  /// total stress [Pa] (Effect::stressOffset summed), or nothing: false when no effect gives
+  /// one. The .vtu's stress and the tables' values at tips add the same.
+  bool hasStressOffset() const;
+  Eigen::Matrix3d stressOffset(Index cell, const Point& x, double t) const;
+  /// The total stress [Pa] of the body at tip (or junction end) k for the split displacement
+  /// u at time t: the mean over the split-mesh cells that hold the node (every copy of it,
+  /// all sides) of C:ε(u) plus stressOffset(). Under a uniform stress it is the traction the
+  /// other nodes recover; at a crack tip it grows under refinement, as the stress there does.
+  Eigen::Matrix3d tipStress(std::size_t k, const Eigen::VectorXd& u, double t) const;
+  /// Per control node: the cells of the split space that hold it, for tips and junction ends
+  /// (tipStress); empty for the other nodes. Set by finishSetup().
+  std::vector<std::vector<Index>> tipCells_;
+  double lastTime_ = 0;  ///< the time of the last step computed (fractureRows())
   /// Judge the state to be written (last_, the primal solve just done): non-finite values
   /// make the step diverged; a residual above the tolerance makes a 'converged' step
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.

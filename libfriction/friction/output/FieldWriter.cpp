@@ -122,6 +122,12 @@ std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
     v.push_back(r.slipPath);
     v.push_back(r.frictionCoefficient);
   }
+  if (dim != 3) {
+    // The frame and the slip vector last, so that every earlier column keeps its place.
+    const Eigen::Vector3d slip = r.slip[0] * r.tangent[0];
+    v.insert(v.end(),
+             {r.normal.x(), r.normal.y(), r.tangent[0].x(), r.tangent[0].y(), slip.x(), slip.y()});
+  }
   return v;
 }
 
@@ -130,7 +136,8 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
                         const std::vector<std::string>& notes) {
   std::ostringstream out;
   out.precision(precision);
-  // One spelling of NaN ("nan", never "-nan"), which numpy, pandas and VTK read.
+  // The rows are finite (FrictionCase writes no diverged step); should one not be, one
+  // spelling of NaN ("nan", never "-nan"), which numpy, pandas and VTK read.
   const auto value = [&out](double v) -> std::ostream& {
     return std::isnan(v) ? out << "nan" : out << v;
   };
@@ -145,7 +152,7 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
                    : "pressure sigmaNEffective deltaCFS ";
   if (dim != 3) {
     out << "# s x y slip slipIncrement sigmaN tau ST residual " << (opening ? "opening " : "")
-        << pressure << weakening << "state\n# " << statusLine << "\n";
+        << pressure << weakening << "nx ny tx ty slipX slipY state\n# " << statusLine << "\n";
     for (const std::string& note : notes) out << "# " << note << "\n";
     for (const FractureRow& r : rows) {
       for (const double v : fractureTableValues(r, dim)) value(v) << " ";

@@ -4,22 +4,23 @@
 //    foamDictionary reads it.
 //  * writeFractureTable: <time>/fractures/<name>.dat, whitespace-separated, one row per control
 //    node; line 2 gives the step's solver status (2D: then one comment per junction node, see
-//    junctionNotes). state is stick, slip, open, tip or junction; a tip has
-//    no traction: its traction columns are "nan" (numpy.loadtxt, pandas and VTK read it as
-//    NaN), every other value is finite.
-//    2D: line 1 "# s x y slip slipIncrement sigmaN tau ST residual state", rows in arclength
-//    order.
+//    junctionNotes). state is stick, slip, open, tip or junction; every value is finite: a
+//    tip (and a junction end) has no jump and no recovered traction, and its traction columns
+//    hold the body's stress at the node instead (FrictionCase::fractureRows), its residual 0.
+//    2D: line 1 "# s x y slip slipIncrement sigmaN tau ST residual nx ny tx ty slipX slipY
+//    state" (n_Γ, t_Γ and the slip vector slip·t_Γ [m]), rows in arclength order.
 //    3D: line 1 "# x y z nx ny nz slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1
 //    slipIncrement2 sigmaN tau1 tau2 tauMagnitude ST residual state" (components on the node's
 //    t₁, t₂ and, for the slip, in x y z; residual = |D|); line 3 the frame: "# frame n (..)
 //    t1 (..) t2 (..)" when every node has the same one (a flat fault), else "# frame per
 //    node: ...". Rows in the control-node order of FractureSystem.
 //    With fractures that open (contact unilateral), a column "opening" (g = −[[u]]·n_Γ [m])
-//    comes before "state", in 2D and 3D; with a fluid pressure (fracturePressure,
+//    comes after "residual", in 2D and 3D; with a fluid pressure (fracturePressure,
 //    faultPressure), "pressure sigmaNEffective deltaCFS" (p, σ'_n = σ_n + p and the Coulomb
 //    failure stress change [Pa]) come after it, and in 3D "slipStrike slipDip tauStrike
 //    tauDip" (strikeDipValues()); with friction that weakens (slipWeakening), "slipPath
-//    frictionCoefficient" (δ [m] and μ(δ)) after those.
+//    frictionCoefficient" (δ [m] and μ(δ)) after those. 2D: "nx ny tx ty slipX slipY" come
+//    after all of them, just before "state", so that the earlier columns keep their places.
 #pragma once
 
 #include <array>
@@ -54,9 +55,9 @@ struct FractureRow {
   /// are written (after opening, before state).
   bool hasPressure = false;
   double pressure = 0;         ///< p [Pa] (fluid, positive)
-  double sigmaNEffective = 0;  ///< σ'_n = σ_n + p [Pa], NaN at tips
+  double sigmaNEffective = 0;  ///< σ'_n = σ_n + p [Pa]
   /// Coulomb failure stress change against the initial state, Δ|τ| + μ_f Δσ'_n [Pa] (positive
-  /// towards failure), NaN at tips; written with the pressure columns.
+  /// towards failure); written with the pressure columns.
   double deltaCFS = 0;
   /// The fracture's friction weakens with slip (law slipWeakening on some fracture of the
   /// case): the columns slipPath and frictionCoefficient are written (after the pressure
@@ -90,12 +91,12 @@ std::array<double, 4> strikeDipValues(const FractureRow& row);
 /// without the state: 2D s x y slip slipIncrement sigmaN tau ST residual; 3D x y z nx ny nz
 /// slip1 slip2 slipX slipY slipZ slipMagnitude slipIncrement1 slipIncrement2 sigmaN tau1
 /// tau2 tauMagnitude ST residual; then opening if the row has one, then pressure,
-/// sigmaNEffective and deltaCFS if it has them (3D: also slipStrike slipDip tauStrike tauDip).
-/// NaN at tips.
+/// sigmaNEffective and deltaCFS if it has them (3D: also slipStrike slipDip tauStrike tauDip);
+/// 2D then nx ny tx ty slipX slipY.
 std::vector<double> fractureTableValues(const FractureRow& row, int dim);
 
 /// dim: 2 or 3, the layout of the file comment (2D: components [0]; 3D: both, the magnitudes
-/// and slipX.. = slip[0] t₁ + slip[1] t₂ derived here). NaN values are written "nan".
+/// and slipX.. = slip[0] t₁ + slip[1] t₂ derived here; 2D: slipX slipY = slip[0] t₁).
 /// `notes`: more comment lines after the status line (2D: the fracture's junctions), each
 /// written as "# " + note.
 void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,

@@ -73,7 +73,8 @@ const char* const kFileAttributes =
     " version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
 
 /// How a Float64 array's non-finite values are written: Finite maps them to numbers (finite()),
-/// KeepNan writes NaN as NaN (a tip's tractions) and the rest as Finite, Raw as they are.
+/// KeepNan writes NaN as NaN (a value that is not known; the fracture rows have none) and the
+/// rest as Finite, Raw as they are.
 enum class Values { Finite, KeepNan, Raw };
 
 /// The DataArrays of one file, in ASCII inline or binary appended form. ASCII: the values
@@ -325,8 +326,8 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 
 namespace {
 
-// A Float64 point-data array of one value per row, NaN kept: a tip has no traction, and VTK's
-// ASCII reader (9.1) and ParaView read "nan" as NaN.
+// A Float64 point-data array of one value per row, NaN kept (the rows have none: a tip's
+// tractions are the body's stress there; VTK's ASCII reader (9.1) and ParaView read "nan").
 template <class Value>
 void rowArray(ArraySink& sink, std::ostream& s, const char* name,
               const std::vector<FractureRow>& rows, const Value& value) {
@@ -380,7 +381,7 @@ void writeFracturePolyline(const std::string& path, const std::vector<FractureRo
   std::ostringstream s;
   s.precision(precision);
   s << kHeader << "<!-- fracture table as a polyline; point array state: " << stateLegend(rows)
-    << " (no traction: nan) -->\n"
+    << " -->\n"
     << "<VTKFile type=\"PolyData\"" << sink.fileAttributes() << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\""
@@ -394,6 +395,9 @@ void writeFracturePolyline(const std::string& path, const std::vector<FractureRo
   rowArray(sink, s, "ST", rows, [](const FractureRow& r) { return r.ST; });
   rowArray(sink, s, "residual", rows, [](const FractureRow& r) { return r.residual[0]; });
   optionalArrays(sink, s, rows);
+  // The frame as the fault surface's normal, z = 0: the table's nx ny tx ty.
+  rowVectorArray(sink, s, "normal", rows, [](const FractureRow& r) { return r.normal; });
+  rowVectorArray(sink, s, "tangent", rows, [](const FractureRow& r) { return r.tangent[0]; });
   stateArray(sink, s, rows);
   s << "      </PointData>\n";
 
@@ -448,7 +452,7 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
   s << kHeader
     << "<!-- fault surface (P2: four triangles per fault triangle, at its edge midpoints); point "
        "array state: "
-    << stateLegend(rows) << " (no traction: nan) -->\n"
+    << stateLegend(rows) << " -->\n"
     << "<VTKFile type=\"PolyData\"" << sink.fileAttributes() << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n

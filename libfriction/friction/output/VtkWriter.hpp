@@ -87,7 +87,8 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 /// writeVtu's).
 ///  * 2D (`triangles` empty): the points (x, y, 0) [m] in row order (arclength order) joined by
 ///    one VTK_POLY_LINE, and point data s [m], slip [m], slipIncrement [m], sigmaN [Pa],
-///    tau [Pa], ST [-], residual [Pa] (components [0] of the rows' arrays).
+///    tau [Pa], ST [-], residual [Pa] (components [0] of the rows' arrays), normal and
+///    tangent (3, n_Γ and t_Γ, z = 0).
 ///  * 3D: the fault surface. Points: the rows' positions in row order. `triangles`: row
 ///    indices of each fault triangle, v0 v1 v2 (nodesPerTriangle 3, P1) or v0 v1 v2 mid01
 ///    mid12 mid20 (6, P2). Cells: VTK_TRIANGLE (5), one per triangle for P1; VTK's poly data
@@ -97,7 +98,7 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 ///    (3, x y z: slip₁ t₁ + slip₂ t₂), slipMagnitude [m], slipIncrement [m] (3, x y z),
 ///    sigmaN [Pa], traction [Pa] (3, the tangential traction τ in x y z), tauMagnitude [Pa],
 ///    ST [-], residual [Pa] (|D|).
-/// Both: Float64, NaN written as "nan" (binary: NaN) at tips, which have no traction, and state
+/// Both: Float64 (tips: the rows' values, the body's stress there), and state
 /// (Int32: 0 stick, 1 slip, 2 open, 3 tip, 4 junction; see vtkStateCode). The file also says the
 /// state coding in an XML comment. No rows: an empty data set (no points, no cells). The folder
 /// must exist.

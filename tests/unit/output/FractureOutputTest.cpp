@@ -52,7 +52,7 @@ constexpr double kSide = 2.0;
 const Eigen::Vector3d kNormal = Eigen::Vector3d(1, 2, 2) / 3;
 const Point kCorner(0.25, -0.5, 1.0);
 constexpr int kEdges[5][2] = {{0, 1}, {1, 2}, {2, 0}, {2, 3}, {3, 0}};
-constexpr int kTip = 3;  // row 3 is a tip: no traction
+constexpr int kTip = 3;  // row 3 is a tip: no recovered traction
 const char* const kStates[3] = {"stick", "slip", "open"};
 
 std::vector<FractureRow> faultRows(int degree) {
@@ -71,12 +71,12 @@ std::vector<FractureRow> faultRows(int degree) {
     r.tangent = t;
     r.slip = {1e-3 * (1 + s), -4e-4 * s};
     r.slipIncrement = {2e-4 * s, 1e-4};
+    // A tip's row has the body's stress there and residual 0 (FrictionCase::fractureRows).
     const bool tip = i == static_cast<std::size_t>(kTip);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    r.sigmaN = tip ? nan : -1e6 * (1 + s);
-    r.tau = {tip ? nan : 3e5 * (1 + s), tip ? nan : -4e5 * (1 + s)};
-    r.ST = tip ? nan : std::hypot(r.tau[0], r.tau[1]) / -r.sigmaN;
-    r.residual = {tip ? nan : 3e-9 * s, tip ? nan : 4e-9 * s};
+    r.sigmaN = -1e6 * (1 + s);
+    r.tau = {3e5 * (1 + s), -4e5 * (1 + s)};
+    r.ST = std::hypot(r.tau[0], r.tau[1]) / -r.sigmaN;
+    r.residual = {tip ? 0.0 : 3e-9 * s, tip ? 0.0 : 4e-9 * s};
     r.state = tip ? "tip" : kStates[i % 3];
     rows.push_back(r);
   }
@@ -93,7 +93,7 @@ double number(const std::string& w) { return w == "nan" ? std::nan("") : std::st
 
 }  // namespace
 
-TEST_CASE("3D fracture table: columns, frame line, slip in x y z, magnitudes, nan at tips",
+TEST_CASE("3D fracture table: columns, frame line, slip in x y z, magnitudes, tips",
           "[output][fracture][3d]") {
   const fs::path dir = freshTempDir("table");
   std::vector<FractureRow> rows = faultRows(2);
@@ -152,22 +152,17 @@ TEST_CASE("3D fracture table: columns, frame line, slip in x y z, magnitudes, na
     CHECK(col(w, "slipIncrement1") == r.slipIncrement[0]);
     CHECK(col(w, "slipIncrement2") == r.slipIncrement[1]);
     CHECK(w.back() == r.state);
-    if (r.state == "tip") {
-      ++tips;
-      for (const char* c : {"sigmaN", "tau1", "tau2", "tauMagnitude", "ST", "residual"})
-        CHECK(w[std::find(names.begin(), names.end(), c) - names.begin() - 1] == "nan");
-      for (const char* c : {"slip1", "slip2", "slipX", "slipY", "slipZ", "slipMagnitude"})
-        CHECK(std::isfinite(col(w, c)));
-      continue;
-    }
+    // A tip's row is written as any other (its values are the body's stress there).
+    if (r.state == "tip") ++tips;
     CHECK(col(w, "sigmaN") == r.sigmaN);
     CHECK(col(w, "tau1") == r.tau[0]);
     CHECK(col(w, "tau2") == r.tau[1]);
     // τ = (3, −4)·1e5 (1 + i): |τ| = 5e5 (1 + i), to round-off.
     CHECK(std::abs(col(w, "tauMagnitude") - 5e5 * (1.0 + i)) < 1e-15 * 5e5 * (1.0 + i));
     CHECK(col(w, "ST") == r.ST);
-    // residual = |D| = 5e-9 i.
-    CHECK(std::abs(col(w, "residual") - 5e-9 * i) < 1e-15 * 5e-9 * (1.0 + i));
+    // residual = |D| = 5e-9 i; 0 at the tip.
+    const double residual = r.state == "tip" ? 0.0 : 5e-9 * i;
+    CHECK(std::abs(col(w, "residual") - residual) < 1e-15 * 5e-9 * (1.0 + i));
   }
   CHECK(tips == 1);
 
@@ -197,17 +192,39 @@ TEST_CASE("2D fracture table: the layout of the 2D solver, components [0]", "[ou
   r.tau = {-2e5, 7.0};
   r.ST = 0.2;
   r.residual = {-3e-9, 7.0};
+  // t_Γ = (0.6, 0.8), n_Γ = (t_y, −t_x): nx ny tx ty, and the slip vector slip·t_Γ.
+  r.tangent[0] = Eigen::Vector3d(0.6, 0.8, 0);
+  r.normal = Eigen::Vector3d(0.8, -0.6, 0);
   r.state = "slip";
-  FractureRow tip = r;
-  tip.sigmaN = tip.ST = tip.tau[0] = tip.residual[0] = std::nan("");
+  FractureRow tip = r;  // a tip's row: the body's stress, residual 0, written alike
+  tip.slip[0] = tip.slipIncrement[0] = tip.residual[0] = 0;
   tip.state = "tip";
   writeFractureTable((dir / "a.dat").string(), {r, tip}, "status converged", 6, 2);
   const auto text = lines(dir / "a.dat");
   REQUIRE(text.size() == 4);
-  CHECK(text[0] == "# s x y slip slipIncrement sigmaN tau ST residual state");
+  CHECK(text[0] ==
+        "# s x y slip slipIncrement sigmaN tau ST residual nx ny tx ty slipX slipY state");
   CHECK(text[1] == "# status converged");
-  CHECK(text[2] == "0.5 0.25 0.75 0.001 0.0002 -1e+06 -200000 0.2 -3e-09 slip");
-  CHECK(text[3] == "0.5 0.25 0.75 0.001 0.0002 nan nan nan nan tip");
+  CHECK(text[2] ==
+        "0.5 0.25 0.75 0.001 0.0002 -1e+06 -200000 0.2 -3e-09 0.8 -0.6 0.6 0.8 0.0006 0.0008 slip");
+  CHECK(text[3] == "0.5 0.25 0.75 0 0 -1e+06 -200000 0.2 0 0.8 -0.6 0.6 0.8 0 0 tip");
+  // The new columns come last before the state: the first nine keep their places, and the
+  // opening and pressure columns come between them and the frame.
+  FractureRow o = r;
+  o.hasOpening = o.hasPressure = true;
+  o.opening = 1e-4;
+  o.pressure = 2e5;
+  o.sigmaNEffective = -8e5;
+  o.deltaCFS = 3e4;
+  writeFractureTable((dir / "b.dat").string(), {o}, "status converged", 6, 2);
+  const auto withColumns = lines(dir / "b.dat");
+  REQUIRE(withColumns.size() == 3);
+  CHECK(withColumns[0] ==
+        "# s x y slip slipIncrement sigmaN tau ST residual opening pressure "
+        "sigmaNEffective deltaCFS nx ny tx ty slipX slipY state");
+  CHECK(withColumns[2] ==
+        "0.5 0.25 0.75 0.001 0.0002 -1e+06 -200000 0.2 -3e-09 0.0001 200000 "
+        "-800000 30000 0.8 -0.6 0.6 0.8 0.0006 0.0008 slip");
   fs::remove_all(dir);
 }
 
