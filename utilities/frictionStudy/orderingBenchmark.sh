@@ -44,6 +44,8 @@ orderA = float(num(r"^Setup: ordering and analysis.*?ordering A ([0-9.e+-]+) s")
 factor = re.search(r"^Factor: (\S+) ordering.*?, ([0-9.e+]+) entries.*?, ([0-9.e+]+) flops.*?; "
                    r"([0-9.e+-]+) s ordering and analysis, ([0-9.e+-]+) s numeric", text, re.M)
 used, entries, flops, analysis, numeric = factor.groups()
+if "AMD then METIS tried" in factor.group(0):
+    used += " (AMD tried first)"  # CHOLMOD's strategy ordered twice
 solves = re.search(r"^Factorisations .*back-substitutions (\d+) \(([0-9.e+-]+) s\)", text, re.M)
 solve = float(solves.group(2)) / int(solves.group(1))
 analysis, numeric = float(analysis), float(numeric)
