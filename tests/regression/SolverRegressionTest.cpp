@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "CaseRunner.hpp"
+#include "friction/linalg/SparseFactor.hpp"
 
 using namespace friction::regression;
 
@@ -278,9 +279,11 @@ TEST_CASE("one factorisation for a multi-step run", "[regression]") {
   CHECK(std::stod(m[1]) < 10);
   REQUIRE(std::regex_search(
       log, m,
-      std::regex("\nFactor: (AMD|METIS|NESDIS) ordering, ([0-9.e+]+) entries \\(([0-9.e+-]+) GB "
-                 "of values\\), ([0-9.e+]+) flops, jump unknowns last; [0-9.e+-]+ s ordering and "
-                 "analysis, [0-9.e+-]+ s numeric, [0-9.e+-]+ s the complement\n")));
+      std::regex(
+          "\nFactor: (AMD|METIS|NESDIS) ordering \\(auto, 2D, [0-9]+ unknowns\\), ([0-9.e+]+) "
+          "entries \\(([0-9.e+-]+) GB "
+          "of values\\), ([0-9.e+]+) flops, jump unknowns last; [0-9.e+-]+ s ordering and "
+          "analysis, [0-9.e+-]+ s numeric, [0-9.e+-]+ s the complement\n")));
   const std::regex dofs("([0-9]+) dofs");
   std::smatch d;
   REQUIRE(std::regex_search(log, d, dofs));
@@ -288,6 +291,62 @@ TEST_CASE("one factorisation for a multi-step run", "[regression]") {
   // The values' memory: at least 8 bytes per entry (dense supernodes add padding zeros).
   CHECK(std::stod(m[3]) >= std::stod(m[2]) * 8 / 1e9 * (1 - 1e-3));
   CHECK(std::stod(m[4]) >= std::stod(m[2]));
+}
+
+TEST_CASE("the ordering of system/frictionSolution is the factor's and the log states it",
+          "[regression]") {
+  // The default (auto) and each ordering named: the log's settings line repeats the key, the
+  // factor line says which ordering CHOLMOD's factor used and what chose it; another
+  // ordering changes only the round-off (the tolerance is 1e-10 of the largest value).
+  Case ref("paperBenchmark", "paperBenchmark-ordering-auto");
+  REQUIRE(ref.solve() == 0);
+  const std::string refLog = ref.log();
+  CHECK_THAT(refLog, Catch::Contains("linear solver cholmod, ordering auto\n"));
+  std::smatch m;
+  REQUIRE(std::regex_search(refLog, m,
+                            std::regex("\nFactor: (AMD|METIS|NESDIS) ordering \\(auto, 2D, "
+                                       "([0-9]+) unknowns\\), ")));
+  // The rule's choice for this size, and the size is the factored matrix's (fewer than the
+  // dofs: the clamped side's are taken out).
+  const std::string autoUsed = m[1];
+  const long unknowns = std::stol(m[2]);
+  const std::string names[] = {"AMD", "METIS", "NESDIS"};
+  CHECK(autoUsed == names[static_cast<int>(friction::automaticOrdering(2, unknowns)) - 1]);
+  const std::vector<Row> expected = ref.table("1", "fracture");
+  double scale = 0;
+  for (const Row& r : expected)
+    scale = std::max({scale, std::abs(r.slip), std::abs(r.sigmaN), std::abs(r.tau)});
+  REQUIRE(scale > 0);
+  for (const char* ordering : {"amd", "metis", "nesdis", "cholmodDefault"}) {
+    DYNAMIC_SECTION(ordering) {
+      Case c("paperBenchmark", std::string("paperBenchmark-ordering-") + ordering);
+      c.edit("system/frictionSolution", "linearSolver +cholmod;",
+             std::string("linearSolver cholmod; ordering ") + ordering + ";");
+      REQUIRE(c.solve() == 0);
+      const std::string log = c.log();
+      CHECK_THAT(
+          log, Catch::Contains(std::string("linear solver cholmod, ordering ") + ordering + "\n"));
+      const std::string word = ordering;
+      if (word == "cholmodDefault")
+        CHECK(std::regex_search(log, std::regex("\nFactor: [A-Z]+ ordering \\(cholmodDefault, "
+                                                "AMD (only|then METIS) tried\\), ")));
+      else
+        CHECK_THAT(log, Catch::Contains("\nFactor: " +
+                                        std::string(word == "amd"     ? "AMD"
+                                                    : word == "metis" ? "METIS"
+                                                                      : "NESDIS") +
+                                        " ordering (ordering " + word + "), "));
+      const std::vector<Row> rows = c.table("1", "fracture");
+      REQUIRE(rows.size() == expected.size());
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        CHECK(rows[i].state == expected[i].state);
+        if (expected[i].state == "tip") continue;  // no traction there (NaN)
+        CHECK(std::abs(rows[i].slip - expected[i].slip) <= 1e-10 * scale);
+        CHECK(std::abs(rows[i].sigmaN - expected[i].sigmaN) <= 1e-10 * scale);
+        CHECK(std::abs(rows[i].tau - expected[i].tau) <= 1e-10 * scale);
+      }
+    }
+  }
 }
 
 TEST_CASE("the paper's steepest descent and Armijo decrease J", "[regression][paper]") {

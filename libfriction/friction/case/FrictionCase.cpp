@@ -268,6 +268,15 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
   if (sol.found("linearSolver"))
     SparseFactor::requireInBuild(sol.getWord("linearSolver"), sol.location("linearSolver"));
   linearSolver_ = sol.getChoiceOr("linearSolver", SparseFactor::backendNames(), "cholmod");
+  // The fill-reducing ordering: cholmod's to choose; the other solvers have their own, and a
+  // case that names one for them is told so rather than ignored.
+  ordering_ = orderingNamed(sol.getChoiceOr("ordering", orderingNames(), "auto"));
+  if (ordering_ != Ordering::automatic && linearSolver_ != "cholmod")
+    throw InputError(sol.location("ordering"),
+                     "key 'ordering': linear solver '" + linearSolver_ +
+                         "' has its own ordering (simplicialLDLT: AMD, mumps: METIS); 'ordering " +
+                         toString(ordering_) +
+                         "' needs 'linearSolver cholmod' (or use 'ordering auto')");
   // Several ranks share the factorisation: only the mumps solver can.
   if (parallel::size() > 1 && linearSolver_ != "mumps")
     throw InputError(sol.found("linearSolver") ? sol.location("linearSolver") : sol.location(),
@@ -348,7 +357,9 @@ void FrictionCase::printSettings(std::ostream& log) const {
           << " Pa, nu " << m.poissonRatio() << "\n";
     }
   }
-  log << "Elements: P" << order_ << ", linear solver " << linearSolver_ << "\n";
+  log << "Elements: P" << order_ << ", linear solver " << linearSolver_;
+  if (linearSolver_ == "cholmod") log << ", ordering " << toString(ordering_);
+  log << "\n";
   if (fractures_.empty()) log << "Fractures: none (a plain elastic solve, no control loop)\n";
   for (const auto& f : fractures_) {
     log << "Fracture " << f.name << ": law " << f.law->name();
@@ -455,7 +466,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       exitStatusOf);
   FactorStatus status = system_->factor(
       linearSolver_, optimizer_->wantsInterfaceOperator(),
-      [&](const std::string& phase, double seconds) { logPhase(log, phase, seconds); });
+      [&](const std::string& phase, double seconds) { logPhase(log, phase, seconds); }, ordering_);
   // A part that nothing holds, or a direction no patch fixes: K is singular, whatever its
   // pivots say. The backends' pivot checks see it on one rank, but MUMPS on several does not
   // (measured on a free 3D body, cases/pennyCrack with every patch free: INFOG(28) null pivots
@@ -690,7 +701,8 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
   // What the factor costs: at 10⁶ unknowns in 3D it sets the run's time and memory.
   if (const FactorAnalysis& a = f.analysis(); a.entries > 0) {
     std::ostringstream line;
-    line << std::setprecision(3) << "Factor: " << a.ordering << " ordering, " << a.entries
+    line << std::setprecision(3) << "Factor: " << a.ordering << " ordering"
+         << (a.orderingChoice.empty() ? "" : " (" + a.orderingChoice + ")") << ", " << a.entries
          << " entries (" << a.bytes / 1e9 << " GB of values), " << a.flops << " flops"
          << (f.schurComplement().size() > 0 && f.schurSolves() == 0 ? ", jump unknowns last" : "");
     if (a.numericSeconds > 0) {

@@ -193,6 +193,7 @@ class FrictionCase : private StepHost {
   std::vector<FractureSettings> fractures_;
   int order_ = 1;
   std::string linearSolver_ = "cholmod";
+  Ordering ordering_ = Ordering::automatic;  ///< the key `ordering` (cholmod only)
   double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
   bool gammaAbsolute_ = false, warmStart_ = false;
   /// Where gamma and gammaNormal were given (absolute values are checked against E/h once h is

@@ -85,9 +85,10 @@ class FractureSystem : public SlipResponse {
   /// (docs/method.md §4): the stiffness in the variables (free dofs, jumps) is factored
   /// with the jumps last, and the Schur complement on the jumps is M·S.
   /// `phases` is told each part of the work as it ends (assemblies, the factorisation's
-  /// phases), for the log.
+  /// phases), for the log. `ordering`: the fill-reducing ordering (SparseFactor::setOrdering;
+  /// automatic decides by the mesh's dimension and the size).
   FactorStatus factor(const std::string& backend = "cholmod", bool withInterfaceOperator = false,
-                      const PhaseReport& phases = {});
+                      const PhaseReport& phases = {}, Ordering ordering = Ordering::automatic);
   const SparseFactor& factorization() const { return *factor_; }
 
   /// This step's data: the load vector on the SPLIT space (tractions, body force) [N], and

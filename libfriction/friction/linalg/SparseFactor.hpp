@@ -3,7 +3,8 @@
 //
 // Backends, chosen by name:
 //   cholmod         CHOLMOD supernodal LLᵀ (SuiteSparse) through Eigen's CholmodSupernodalLLT;
-//                   fill-reducing ordering by CHOLMOD (AMD / METIS). The default.
+//                   fill-reducing ordering chosen by setOrdering() (AMD, METIS or NESDIS, one
+//                   of them, or CHOLMOD's own strategy). The default.
 //   simplicialLDLT  Eigen's SimplicialLDLT with AMD ordering: no external library; slower on
 //                   large 2D problems, kept as a fallback and a cross-check.
 //   mumps           MUMPS (multifrontal LDLᵀ, symmetric mode) shared by the ranks of an MPI run
@@ -38,17 +39,42 @@ enum class FactorStatus {
 /// "ok", "notPositiveDefinite", "failed", "nonFinite".
 const char* toString(FactorStatus status);
 
+/// The fill-reducing ordering of the cholmod backend (system/frictionSolution, key `ordering`;
+/// README "The ordering of the factorisation"). cholmodDefault is CHOLMOD's own strategy: it
+/// orders by AMD and, where AMD's factor looks costly (≥ 500 flops per entry and ≥ 5 × A's
+/// entries), orders by METIS as well and keeps the smaller factor: two orderings per run.
+/// amd, metis and nesdis (CHOLMOD's nested dissection) order once; automatic picks one of
+/// them by dimension and size (automaticOrdering()).
+enum class Ordering { automatic, amd, metis, nesdis, cholmodDefault };
+
+/// The key's words, in the enum's order: "auto", "amd", "metis", "nesdis", "cholmodDefault".
+const std::vector<std::string>& orderingNames();
+/// The word of an ordering (orderingNames()).
+const std::string& toString(Ordering ordering);
+/// The ordering of a word of orderingNames() (checked by the caller: asserts otherwise).
+Ordering orderingNamed(const std::string& name);
+/// What `auto` orders by, for a matrix of `unknowns` rows from a `dimension`-D mesh. Chosen by
+/// measurement (utilities/frictionStudy/orderingBenchmark.sh, README): never amd, metis or
+/// nesdis against each other at run time.
+Ordering automaticOrdering(int dimension, Eigen::Index unknowns);
+
 /// What the last analysis of a sparse Cholesky factorisation chose and will cost (for the log:
 /// at 10⁶ unknowns in 3D the factor, not the control loop, sets the time and the memory).
 struct FactorAnalysis {
   std::string ordering;  ///< fill-reducing ordering, e.g. "METIS" (empty: unknown)
-  double entries = 0;    ///< nonzeros of the factor L (0: unknown)
-  double bytes = 0;      ///< memory of L's values, padding of dense blocks included (0: unknown)
-  double flops = 0;      ///< floating-point operations of the numeric factorisation (0: unknown)
+  /// What chose it, for the log: "auto: 2D" (Ordering::automatic, with the reason), "ordering
+  /// metis" (the case's key), "cholmodDefault" (CHOLMOD's strategy); empty for backends that
+  /// take no ordering.
+  std::string orderingChoice;
+  double entries = 0;  ///< nonzeros of the factor L (0: unknown)
+  double bytes = 0;    ///< memory of L's values, padding of dense blocks included (0: unknown)
+  double flops = 0;    ///< floating-point operations of the numeric factorisation (0: unknown)
   // Wall time of the phases [s] (0: unknown): the ordering and the symbolic analysis (with a
   // border: A's ordering, then the bordered matrix's analysis), the numeric factorisation,
-  // and the dense work that turns the border's block into the complement.
+  // and the dense work that turns the border's block into the complement. orderingSeconds is
+  // the part of analysisSeconds spent ordering A (with a border; 0 otherwise: unknown).
   double analysisSeconds = 0;
+  double orderingSeconds = 0;
   double numericSeconds = 0;
   double complementSeconds = 0;
   // Distributed backends (mumps): the ranks that share the factor, and the memory the
@@ -76,6 +102,15 @@ class SparseFactor {
   /// without FRICTION_MUMPS), saying how to get it; anything else passes.
   static void requireInBuild(const std::string& backend, const SourceLocation& where);
   const std::string& backend() const { return backend_; }
+
+  /// The fill-reducing ordering of the next factorisations; `dimension` (2 or 3) is the
+  /// mesh's, which Ordering::automatic needs. Only a backend that takesOrdering() accepts
+  /// another than Ordering::automatic (asserted: the case refuses the key first).
+  void setOrdering(Ordering ordering, int dimension);
+  Ordering ordering() const { return ordering_; }
+  /// Whether the backend orders as setOrdering() says (cholmod); the others have their own
+  /// (simplicialLDLT: AMD, mumps: METIS).
+  bool takesOrdering() const;
 
   /// Analyse and factor the symmetric matrix A (its lower triangle is read). Besides the
   /// backend's own check, every pivot d_k (D of LDLᵀ, or L_kk² of LLᵀ) must exceed
@@ -173,6 +208,8 @@ class SparseFactor {
   Eigen::Index rows_ = 0;
   double pivotTolerance_ = 1e-10;
   bool summed_ = false;
+  Ordering ordering_ = Ordering::automatic;
+  int dimension_ = 2;
   double minPivotRatio_ = std::numeric_limits<double>::quiet_NaN();
   double maxAbsEntry_ = 0.0;
   long numFactorizations_ = 0;

@@ -40,6 +40,11 @@ class SparseFactor::Backend {
   /// Backends that judge their pivots themselves (pivots() empty) take the relative tolerance
   /// here, before factor().
   virtual void setPivotTolerance(double /*tolerance*/) {}
+  /// Backends that take a fill-reducing ordering (SparseFactor::takesOrdering): the one of the
+  /// next analyses, never Ordering::automatic (SparseFactor resolves it), and what chose it
+  /// (FactorAnalysis::orderingChoice).
+  virtual bool takesOrdering() const { return false; }
+  virtual void setOrdering(Ordering /*ordering*/, const std::string& /*choice*/) {}
   /// The ordering and size of the last analysis, as far as the backend knows them.
   virtual FactorAnalysis analysis() const { return {}; }
   /// Told each phase of a factorisation as it ends (SparseFactor::setPhaseReport); a backend

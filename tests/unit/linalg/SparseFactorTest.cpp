@@ -1,6 +1,7 @@
 // SparseFactor (linalg/SparseFactor.hpp): both backends solve an SPD system to round-off,
 // for one and several right-hand sides; the counters count; singular and indefinite matrices
-// give a status value; a typo in the backend name is an InputError listing valid names.
+// give a status value; a typo in the backend name is an InputError listing valid names; the
+// cholmod backend orders as told (SparseFactor::setOrdering).
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -304,3 +305,76 @@ TEST_CASE("linalg SparseFactor mumps reports its ordering, factor size and memor
   CHECK(mumps.analysis().entries >= a.entries + 0.5 * 40 * 41);
 }
 #endif
+
+TEST_CASE("linalg SparseFactor cholmod orders as told, once, and says what chose the ordering",
+          "[linalg]") {
+  const Eigen::SparseMatrix<double> A = spdMatrix();
+  const Eigen::Index n = A.rows();
+  Eigen::SparseMatrix<double> B, C;
+  border(n, 40, B, C);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  SparseFactor reference("cholmod");
+  reference.setOrdering(Ordering::amd, 2);
+  REQUIRE(reference.factor(A) == FactorStatus::ok);
+  const Eigen::VectorXd x0 = reference.solve(b);
+
+  // Each ordering is the one CHOLMOD's factor says it used (L->ordering), with and without the
+  // border, and the answer is the same to round-off.
+  const struct {
+    Ordering ordering;
+    const char* word;
+    const char* used;
+  } cases[] = {{Ordering::amd, "amd", "AMD"},
+               {Ordering::metis, "metis", "METIS"},
+               {Ordering::nesdis, "nesdis", "NESDIS"}};
+  std::vector<double> entries;
+  for (const auto& c : cases) {
+    CAPTURE(c.word);
+    CHECK(toString(c.ordering) == c.word);
+    CHECK(orderingNamed(c.word) == c.ordering);
+    SparseFactor f("cholmod");
+    REQUIRE(f.takesOrdering());
+    f.setOrdering(c.ordering, 2);
+    REQUIRE(f.factor(A) == FactorStatus::ok);
+    CHECK(f.analysis().ordering == c.used);
+    CHECK(f.analysis().orderingChoice == std::string("ordering ") + c.word);
+    entries.push_back(f.analysis().entries);
+    CHECK((f.solve(b) - x0).norm() <= 1e-10 * x0.norm());
+    REQUIRE(f.factorWithSchur(A, B, C) == FactorStatus::ok);
+    REQUIRE(f.schurSolves() == 0);
+    CHECK(f.analysis().ordering == c.used);
+    CHECK(f.analysis().orderingSeconds > 0);
+    CHECK((f.solve(b) - x0).norm() <= 1e-10 * x0.norm());
+  }
+  // Different orderings, different factors: the setting reached CHOLMOD.
+  CHECK(entries[0] != entries[1]);
+  CHECK(entries[0] != entries[2]);
+
+  // auto: the rule's ordering for the dimension and the size, and the log's reason.
+  for (int dim : {2, 3}) {
+    CAPTURE(dim);
+    SparseFactor f("cholmod");
+    f.setOrdering(Ordering::automatic, dim);
+    REQUIRE(f.factorWithSchur(A, B, C) == FactorStatus::ok);
+    const Ordering chosen = automaticOrdering(dim, n);
+    REQUIRE(chosen != Ordering::automatic);
+    REQUIRE(chosen != Ordering::cholmodDefault);  // one ordering, not several tried
+    for (const auto& c : cases)
+      if (c.ordering == chosen) CHECK(f.analysis().ordering == c.used);
+    CHECK(f.analysis().orderingChoice ==
+          "auto, " + std::to_string(dim) + "D, " + std::to_string(n) + " unknowns");
+  }
+
+  // CHOLMOD's own strategy: its choice, and whether it tried METIS after AMD.
+  SparseFactor f("cholmod");
+  f.setOrdering(Ordering::cholmodDefault, 2);
+  REQUIRE(f.factor(A) == FactorStatus::ok);
+  CHECK_THAT(f.analysis().orderingChoice, Catch::StartsWith("cholmodDefault, AMD "));
+  CHECK((f.solve(b) - x0).norm() <= 1e-10 * x0.norm());
+
+  // The other backends have their own ordering and report no choice.
+  SparseFactor ldlt("simplicialLDLT");
+  CHECK_FALSE(ldlt.takesOrdering());
+  REQUIRE(ldlt.factor(A) == FactorStatus::ok);
+  CHECK(ldlt.analysis().orderingChoice.empty());
+}
