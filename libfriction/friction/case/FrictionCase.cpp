@@ -209,6 +209,7 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
         fd.getChoiceOr("contact", {"bilateral", "unilateral"}, "bilateral") == "unilateral";
     fractures_.push_back({g.name, FrictionLaw::New(fd, caseDir, split_.mesh.dim), unilateral});
     opening_ |= unilateral;
+    rateState_ |= fractures_.back().law->rateAndState();
     if (fractures_.back().law->weakening() != Weakening::none) {
       weakening_ = true;
       if (unilateral)
@@ -219,6 +220,18 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
     }
   }
   fp.checkAllRead();
+  if (rateState_) {
+    for (std::size_t f = 0; f < fractures_.size(); ++f)
+      if (!fractures_[f].law->rateAndState())
+        fp.fail(fractures_[f].name,
+                "fracture '" + fractures_[f].name + "': law " + fractures_[f].law->name() +
+                    " beside law rateState on another fracture: a quasi-dynamic run integrates "
+                    "rate-and-state faults only; give every fracture law rateState");
+    if (opening_)
+      throw InputError(fp.location(),
+                       "law rateState with contact unilateral: faces that open are not yet "
+                       "integrated quasi-dynamically; use contact bilateral");
+  }
   if (weakening_ && opening_)
     throw InputError(fp.location(),
                      "law slipWeakening on one fracture and contact unilateral on another: "
@@ -320,6 +333,22 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
   warmStart_ = control.getBoolOr("warmStart", false);
   optimizer_ = Optimizer::New(control.subDict("optimizer"));
   timeIntegrator_ = TimeIntegrator::New(sol);
+  const SourceLocation integratorAt =
+      sol.found("timeIntegration") ? sol.location("timeIntegration") : sol.location();
+  if (rateState_ && !timeIntegrator_->takesRateState())
+    throw InputError(integratorAt,
+                     "law rateState (constant/fractureProperties) is integrated in time: set "
+                     "'timeIntegration { type quasiDynamic; }' (timeIntegration is " +
+                         timeIntegrator_->name() + ")");
+  if (!rateState_ && timeIntegrator_->takesRateState())
+    throw InputError(integratorAt, "timeIntegration " + timeIntegrator_->name() +
+                                       " integrates rate-and-state faults: give the fractures "
+                                       "law rateState in constant/fractureProperties");
+  if (rateState_ && !optimizer_->handlesWeakening())
+    control.subDict("optimizer")
+        .fail("type",
+              "key 'type': timeIntegration quasiDynamic takes the interface operator S from "
+              "optimizer semismoothNewton with variant condensed");
   if (weakening_ && !optimizer_->handlesWeakening())
     control.subDict("optimizer")
         .fail("type",
@@ -364,7 +393,13 @@ void FrictionCase::printSettings(std::ostream& log) const {
   for (const auto& f : fractures_) {
     log << "Fracture " << f.name << ": law " << f.law->name();
     const FrictionField &mu = f.law->mu(), &c = f.law->cohesion();
-    if (f.law->weakening() != Weakening::none)
+    if (const auto* rs = dynamic_cast<const RateStateLaw*>(f.law.get())) {
+      const RateStateLaw::Fields& F = rs->fields();
+      log << ", a " << F.a.describe() << ", b " << F.b.describe() << ", characteristicSlip "
+          << F.L.describe() << " m, referenceFriction " << F.f0.describe() << ", referenceSlipRate "
+          << F.V0.describe() << " m/s, initialSlipRate " << F.initialV.describe()
+          << " m/s, stateEvolution " << (F.aging ? "aging" : "slip");
+    } else if (f.law->weakening() != Weakening::none)
       log << ", staticCoefficient " << mu.describe() << ", dynamicCoefficient "
           << f.law->dynamicCoefficient().describe() << ", criticalSlip "
           << f.law->criticalSlip().describe() << " m ("
@@ -395,7 +430,8 @@ void FrictionCase::printSettings(std::ostream& log) const {
   log << ", tolerance " << optimizer_->stopRule().tolerance << " ("
       << (optimizer_->stopRule().on == StopRule::On::residual ? "residual" : "step")
       << "), maxIterations " << optimizer_->stopRule().maxIterations << "\n";
-  log << "Time integration: " << timeIntegrator_->name() << "\n";
+  log << "Time integration: " << timeIntegrator_->name()
+      << (timeIntegrator_->describe().empty() ? "" : ", " + timeIntegrator_->describe()) << "\n";
   // The effects switched on, and those that cost nothing because they are not.
   std::vector<std::string> off;
   for (const std::string& type : Effect::names()) {
@@ -567,6 +603,38 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
           break;
         }
     shearModulus_[f] = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  }
+  // Rate-and-state faults: each node's law, η from the rock's G where c_s is given.
+  if (rateState_) {
+    rateLaws_.assign(static_cast<std::size_t>(n), RateState{});
+    initialSlipRate_ = Eigen::VectorXd::Zero(n);
+    psi_ = Eigen::VectorXd::Zero(n);
+    slipRate_ = Eigen::VectorXd::Zero(system_->blockSize() * n);
+    for (std::size_t f = 0; f < fractures_.size(); ++f) {
+      const auto* law = dynamic_cast<const RateStateLaw*>(fractures_[f].law.get());
+      FRICTION_ASSERT(law, "every fracture of a rate-and-state case has law rateState");
+      const RateStateLaw::Fields& F = law->fields();
+      std::vector<const ControlNode*> on;
+      std::vector<Eigen::Index> index;
+      for (Eigen::Index k = 0; k < n; ++k)
+        if (nodes[k].fracture == static_cast<int>(f)) on.push_back(&nodes[k]), index.push_back(k);
+      const Eigen::VectorXd a = F.a.evaluate(on), b = F.b.evaluate(on), L = F.L.evaluate(on),
+                            f0 = F.f0.evaluate(on), V0 = F.V0.evaluate(on),
+                            vi = F.initialV.evaluate(on);
+      const double eta =
+          F.radiationDamping >= 0 ? F.radiationDamping : shearModulus_[f] / (2 * F.shearWaveSpeed);
+      for (std::size_t i = 0; i < index.size(); ++i) {
+        const Eigen::Index j = static_cast<Eigen::Index>(i);
+        RateState& r = rateLaws_[static_cast<std::size_t>(index[i])];
+        r.a = a[j], r.b = b[j], r.L = L[j], r.f0 = f0[j], r.V0 = V0[j], r.eta = eta;
+        r.evolution = F.aging ? StateEvolution::aging : StateEvolution::slip;
+        initialSlipRate_[index[i]] = vi[j];
+      }
+      log << "Fracture " << fractures_[f].name << ": radiation damping eta " << eta << " Pa s/m"
+          << (F.radiationDamping >= 0 ? ""
+                                      : " (G/(2 c_s), G " + formatNumber(shearModulus_[f]) + " Pa)")
+          << "\n";
+    }
   }
   // The cells around each tip and junction end, for the stress the tables give there: those
   // holding a node of the split space at the tip's position (every copy of it; copies share
@@ -1256,6 +1324,40 @@ long FrictionCase::restart(std::ostream& log) {
                              " values, expected one per fracture node (" +
                              std::to_string(system_->size()) + ")");
   }
+  // Rate-and-state faults: ψ and the last slip rates; the integrator's state.
+  std::vector<double> psi, rates;
+  if (rateState_) {
+    if (!st.found("psi"))
+      throw InputError(st.location(),
+                       "no key 'psi': this folder was written by a run without rate-and-state "
+                       "faults; start again (" +
+                           overwriteHint_ + ")");
+    psi = st.getScalarList("psi");
+    rates = st.getScalarList("slipRate");
+    if (static_cast<Eigen::Index>(psi.size()) != system_->size() ||
+        static_cast<Eigen::Index>(rates.size()) != system_->blockSize() * system_->size())
+      st.fail("psi", "key 'psi': " + std::to_string(psi.size()) +
+                         " values, expected one per fracture node (" +
+                         std::to_string(system_->size()) + ")");
+  } else if (st.found("psi")) {
+    st.fail("psi",
+            "key 'psi': this folder was written by a run with rate-and-state faults (law "
+            "rateState), and none are now; start again (" +
+                overwriteHint_ + ")");
+  }
+  if (timeIntegrator_->hasState()) {
+    if (!st.isDict("integrator"))
+      throw InputError(st.location(),
+                       "no 'integrator' state: this folder was written by a run "
+                       "with another timeIntegration; start again (" +
+                           overwriteHint_ + ")");
+    timeIntegrator_->readState(st.subDict("integrator"));
+  } else if (st.found("integrator")) {
+    st.fail("integrator",
+            "'integrator': this folder was written by a run with timeIntegration "
+            "quasiDynamic; restore it, or start again (" +
+                overwriteHint_ + ")");
+  }
   // The laws' state: the slip path of friction that weakens.
   std::vector<double> path;
   if (!weakening_ && st.found("slipPath"))
@@ -1306,6 +1408,13 @@ long FrictionCase::restart(std::ostream& log) {
   for (std::size_t i = 0; i < opening.size(); ++i)
     lastBeta_[expected + static_cast<Eigen::Index>(i)] = opening[i];
   if (weakening_) slipPath_ = Eigen::Map<const Eigen::VectorXd>(path.data(), system_->size());
+  if (rateState_) {
+    psi_ = Eigen::Map<const Eigen::VectorXd>(psi.data(), system_->size());
+    slipRate_ =
+        Eigen::Map<const Eigen::VectorXd>(rates.data(), static_cast<Eigen::Index>(rates.size()));
+    psiKnown_ = true;
+  }
+  lastTime_ = t0;
 
   // What a killed run wrote after t0 goes: every time after it has a name that reads back
   // above both t0 and the value of t0's own name (names are distinct, TimeControl.hpp).
@@ -1383,6 +1492,104 @@ void FrictionCase::solveStep(const StepLoads& loads, double t, StepResult& r) {
   pressure_ = loads.pressure;
 }
 
+const InterfaceOperator& FrictionCase::faultOperator() {
+  const InterfaceOperator* S = optimizer_->heldOperator();
+  FRICTION_ASSERT(S, "the condensed Newton holds S once prepareSolver() ran");
+  return *S;
+}
+
+void FrictionCase::tractionsAt(const StepLoads& loads, double t, Eigen::VectorXd& tau,
+                               Eigen::VectorXd& sigmaN) {
+  FractureSystem& sys = *system_;
+  const Eigen::Index n = sys.size(), perNode = sys.blockSize();
+  sys.setStep(loads.load, slip_);
+  Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(perNode * n);
+  for (const auto& e : effects_) e->addFractureTraction(sys.controlNodes(), t, sn0, tau0);
+  sys.setTractionOffset(sn0, tau0);
+  sys.primal(Eigen::VectorXd::Zero(perNode * n), tau, sigmaN);
+}
+
+RateStateFault FrictionCase::rateStateFault() {
+  RateStateFault f;
+  f.k = system_->blockSize();
+  f.laws = &rateLaws_;
+  f.slip = &slip_;
+  f.psi = &psi_;
+  f.componentMask = system_->componentMask();
+  return f;
+}
+
+void FrictionCase::initialiseRateState() {
+  // ψ₀ so that each node slides at its initialSlipRate under the stresses of the start.
+  const double t = lastTime_;
+  const StepLoads loads = loadsAt(t);
+  Eigen::VectorXd tau, sigmaN;
+  tractionsAt(loads, t, tau, sigmaN);
+  const FractureSystem& sys = *system_;
+  const int k = sys.blockSize();
+  const Eigen::VectorXd mask = sys.componentMask();
+  for (Eigen::Index i = 0; i < sys.size(); ++i) {
+    Block phi(k);
+    for (int c = 0; c < k; ++c) phi[c] = -tau[k * i + c] * mask[k * i + c];
+    if (blockNorm(phi) == 0 && mask.segment(k * i, k).isZero()) continue;  // held: no slip
+    RateState law = rateLaws_[static_cast<std::size_t>(i)];
+    law.sigmaBar = -(sigmaN[i] + loads.pressure[i]);
+    const std::optional<double> psi =
+        law.sigmaBar > 0 ? law.stateFor(initialSlipRate_[i], blockNorm(phi)) : std::nullopt;
+    if (!psi) {
+      const Point& x = sys.controlNodes()[static_cast<std::size_t>(i)].position;
+      std::ostringstream m;
+      m << std::setprecision(4) << "law rateState: at the node at (" << x.x() << ", " << x.y();
+      if (sys.dimension() == 3) m << ", " << x.z();
+      m << ") of fracture '"
+        << fractures_[sys.controlNodes()[static_cast<std::size_t>(i)].fracture].name
+        << "' no state gives initialSlipRate " << initialSlipRate_[i]
+        << " m/s under the initial shear " << blockNorm(phi) << " Pa and normal compression "
+        << law.sigmaBar << " Pa (it needs compression, and a shear above eta x initialSlipRate = "
+        << law.eta * initialSlipRate_[i] << " Pa)";
+      throw InputError((fs::path(caseDir_) / "constant" / "fractureProperties").string(), m.str());
+    }
+    psi_[i] = *psi;
+  }
+  psiKnown_ = true;
+}
+
+void FrictionCase::finishRateStep(const StepLoads& loads, double t, const Eigen::VectorXd& slip,
+                                  const Eigen::VectorXd& V, StepResult& r) {
+  FractureSystem& sys = *system_;
+  const Eigen::Index n = sys.size(), k = sys.blockSize();
+  // One solve of the body with the new slip: its tractions are the outputs' and the check of
+  // the ones S gave the integration.
+  sys.setStep(loads.load, slip_);
+  Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(k * n);
+  for (const auto& e : effects_) e->addFractureTraction(sys.controlNodes(), t, sn0, tau0);
+  sys.setTractionOffset(sn0, tau0);
+  const Eigen::VectorXd beta = slip - slip_;
+  Eigen::VectorXd tau, sigmaN;
+  sys.primal(beta.cwiseProduct(sys.componentMask()), tau, sigmaN);
+  // The friction the law gives at (V, ψ) as a coefficient of the compression, so that the
+  // node states read as the complementarity reads them; D is the balance's residual
+  // τ + (σ̄ f(V, ψ) + η|V|) V̂ (0 where the law holds).
+  Eigen::VectorXd muEff = Eigen::VectorXd::Zero(n), D = Eigen::VectorXd::Zero(k * n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    RateState law = rateLaws_[static_cast<std::size_t>(i)];
+    law.sigmaBar = -(sigmaN[i] + loads.pressure[i]);
+    const Block v = V.segment(k * i, k);
+    const double speed = blockNorm(v);
+    if (law.sigmaBar <= 0 || speed == 0) continue;
+    const double strength = law.sigmaBar * law.friction(speed, psi_[i]) + law.eta * speed;
+    muEff[i] = strength / law.sigmaBar;
+    for (Eigen::Index c = 0; c < k; ++c) D[k * i + c] = tau[k * i + c] + strength * v[c] / speed;
+  }
+  ControlProblem problem(sys, muEff, -muEff.cwiseProduct(loads.pressure), gamma_, 0.0, gradient_);
+  last_ = problem.stateFrom(beta.cwiseProduct(problem.componentMask()), tau, sigmaN);
+  last_.D = D.cwiseProduct(problem.componentMask());
+  last_.J = 0.5 * problem.dot(last_.D, last_.D);
+  r.relResidual = problem.relativeResidual(last_);
+  slipRate_ = V;
+  pressure_ = loads.pressure;
+}
+
 std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   std::vector<StepResult> results;
   FractureSystem& sys = *system_;
@@ -1391,6 +1598,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
   // The control: β (k·n), then with openings g (n).
   const Eigen::Index controlSize = opening_ ? perNode * n + n : perNode * n;
   lastBeta_ = Eigen::VectorXd::Zero(controlSize);
+  lastTime_ = time_->startTime();
   // Rank 0 prepares the outputs (postProcessing/ may be a file, the folder read-only): every
   // rank learns whether it could before the first shared solve (parallel::agree).
   long first = 1;
@@ -1422,6 +1630,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     std::string built;
     try {
       built = timeIntegrator_->prepare(*this);
+      if (rateState_ && !psiKnown_) initialiseRateState();
     } catch (const StopNow& s) {
       if (parallel::size() > 1) {
         log << "\nStopped while forming the interface operator (" << s.what()
@@ -1612,13 +1821,23 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     trailer << std::setprecision(4) << "  maxSlip " << maxSlip << " m";
     if (opening_) trailer << "  maxOpening " << maxOpening << " m";
     // Friction that weakens: the slipping patch's relative tangent stiffness (≤ 0: unstable).
+    if (r.maxSlipRate >= 0) trailer << "  maxSlipRate " << r.maxSlipRate << " m/s";
     if (weakening_ && !std::isnan(r.report.tangentStiffness))
       trailer << "  patchStiffness " << r.report.tangentStiffness;
     log << trailer.str() << loadFields(r.time, pressure) << "  ["
         << formatSeconds(secondsSinceStart()) << "]\n";
     log.flush();
     const bool nucleated = r.report.status == OptimizerStatus::nucleation;
+    // A quasi-dynamic step whose integration stopped: later steps would start from a state
+    // that is not the one of their time.
+    const bool integrationStopped = rateState_ && r.report.status != OptimizerStatus::converged &&
+                                    r.report.status != OptimizerStatus::inaccurate;
     results.push_back(std::move(r));
+    if (integrationStopped) {
+      log << "\nStopped at time " << time_->timeName(time_->time(k))
+          << ": the time integration did not reach it (see the step's note)\n";
+      break;
+    }
     if (nucleated) {
       // Past the loss of equilibrium the slip is dynamic: a quasi-static step has no answer.
       log << "\nStopped at time " << time_->timeName(time_->time(k))
@@ -1961,6 +2180,11 @@ std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::
       row.deltaCFS =
           (tauNorm - initialTauNorm_[i]) + mu_[i] * (effective - initialSigmaNEffective_[i]);
     }
+    if (rateState_) {
+      row.hasRateState = true;
+      row.slipRate = blockNorm(slipRate_.segment(kb * static_cast<Eigen::Index>(k), kb));
+      row.psi = psi_[static_cast<Eigen::Index>(k)];
+    }
     if (weakening_) {
       row.hasWeakening = true;
       row.slipPath = slipPath_[static_cast<Eigen::Index>(k)];
@@ -2063,6 +2287,17 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   if (opening_)
     state.entry("opening",
                 std::vector<double>(beta.data() + slip_.size(), beta.data() + beta.size()));
+  // Rate-and-state faults: the state ψ per node and the integrator's own state.
+  if (rateState_) {
+    state.entry("psi", std::vector<double>(psi_.data(), psi_.data() + psi_.size()));
+    state.entry("slipRate",
+                std::vector<double>(slipRate_.data(), slipRate_.data() + slipRate_.size()));
+  }
+  if (timeIntegrator_->hasState()) {
+    state.beginDict("integrator");
+    timeIntegrator_->writeState(state);
+    state.endDict();
+  }
   // Friction that weakens: the laws' state, the slip path δ per fracture node [m].
   if (weakening_)
     state.entry("slipPath",

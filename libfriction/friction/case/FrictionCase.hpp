@@ -35,6 +35,7 @@
 #include "friction/fracture/FractureSystem.hpp"
 #include "friction/fracture/SplitMesh.hpp"
 #include "friction/law/FrictionLaw.hpp"
+#include "friction/law/RateState.hpp"
 #include "friction/output/FieldWriter.hpp"
 #include "friction/output/VtkWriter.hpp"
 #include "friction/time/TimeControl.hpp"
@@ -124,6 +125,17 @@ class FrictionCase : private StepHost {
   StepLoads loadsAt(double t) override;
   void solveStep(const StepLoads& loads, double t, StepResult& r) override;
   void keepSolution(const StepLoads& loads) override;
+  double stateTime() const override { return lastTime_; }
+  const InterfaceOperator& faultOperator() override;
+  void tractionsAt(const StepLoads& loads, double t, Eigen::VectorXd& tau,
+                   Eigen::VectorXd& sigmaN) override;
+  RateStateFault rateStateFault() override;
+  void finishRateStep(const StepLoads& loads, double t, const Eigen::VectorXd& slip,
+                      const Eigen::VectorXd& V, StepResult& r) override;
+  /// Rate-and-state faults at the run's start: ψ₀ per node from the law's initialSlipRate
+  /// under the stresses of startTime (RateState::stateFor); InputError naming the node where
+  /// that slip rate cannot be (the shear too small for it).
+  void initialiseRateState();
 
   void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step);
   /// Fracture f's rows for the control β (and the state of the last step); rowOfPlus, if
@@ -219,6 +231,12 @@ class FrictionCase : private StepHost {
   /// Friction that weakens with slip (law slipWeakening on some fracture): per control node
   /// its weakening and cohesion (WeakeningSettings), and the laws' state, the slip path δ [m]
   /// of every node (written in uniform/frictionState, restarted from it).
+  /// Rate-and-state faults (law rateState, timeIntegration quasiDynamic): per control node
+  /// the law (σ̄ set when used), its initial slip rate, and the state ψ (written in
+  /// uniform/frictionState, restarted from it); the last slip rates [m/s] (k per node).
+  bool rateState_ = false, psiKnown_ = false;
+  std::vector<RateState> rateLaws_;
+  Eigen::VectorXd initialSlipRate_, psi_, slipRate_;
   bool weakening_ = false;
   WeakeningSettings weakeningSettings_;
   Eigen::VectorXd slipPath_;

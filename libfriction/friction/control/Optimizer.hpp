@@ -86,6 +86,8 @@ class Optimizer {
   /// Friction that weakens with slip (slipWeakening): only an optimizer that can tell a lost
   /// equilibrium from slow convergence (OptimizerReport::tangentStiffness) takes it.
   virtual bool handlesWeakening() const { return false; }
+  /// The interface operator S the optimizer holds (formed by prepare()), or nullptr.
+  virtual const InterfaceOperator* heldOperator() const { return nullptr; }
 
   /// Build what the optimizer forms once per run (Newton's condensed S in the fractures'
   /// frame) now, before the first step, so that the log says what it costs when it is done
@@ -205,6 +207,9 @@ class SemismoothNewton : public Optimizer {
         preconditioner_(preconditioner),
         probingDistance_(probingDistance) {}
   std::string prepare(SlipResponse& response, bool withOpening) override;
+  const InterfaceOperator* heldOperator() const override {
+    return variant_ == Variant::condensed && cachedFor_ ? &S_ : nullptr;
+  }
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "semismoothNewton"; }
   /// Active-set changes over the last call's iterations (a cycling diagnostic).

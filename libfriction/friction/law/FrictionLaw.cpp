@@ -90,6 +90,27 @@ const LawEntry lawTable[] = {
        return std::make_unique<SlipWeakening>(std::move(muS), std::move(muD), std::move(dc),
                                               std::move(c), form);
      }},
+    {"rateState",
+     [](const LawInput& in) -> std::unique_ptr<FrictionLaw> {
+       in.d.advise("frictionCoefficient",
+                   "law rateState takes 'referenceFriction' f0 (the friction at the reference "
+                   "slip rate), 'a', 'b' and 'characteristicSlip'");
+       RateStateLaw::Fields f;
+       f.a = in.field("a", Bounds::positive());
+       f.b = in.field("b", Bounds::positive());
+       f.L = in.field("characteristicSlip", Bounds::positive());
+       f.f0 = in.d.found("referenceFriction") ? in.field("referenceFriction", Bounds::positive())
+                                              : FrictionField(0.6);
+       f.V0 = in.d.found("referenceSlipRate") ? in.field("referenceSlipRate", Bounds::positive())
+                                              : FrictionField(1e-6);
+       f.initialV = in.field("initialSlipRate", Bounds::positive());
+       f.aging = in.d.getChoiceOr("stateEvolution", {"aging", "slip"}, "aging") == "aging";
+       if (in.d.alternative({{"shearWaveSpeed"}, {"radiationDamping"}}) == 0)
+         f.shearWaveSpeed = in.d.getScalar("shearWaveSpeed", Bounds::positive());
+       else
+         f.radiationDamping = in.d.getScalar("radiationDamping", Bounds::nonNegative());
+       return std::make_unique<RateStateLaw>(std::move(f));
+     }},
 };
 
 }  // namespace

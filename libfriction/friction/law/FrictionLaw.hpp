@@ -43,6 +43,9 @@ class FrictionLaw {
   /// slipWeakening: μ_d (–) and D_c [m] as fields along the fracture.
   virtual const FrictionField& dynamicCoefficient() const { return zero_; }
   virtual const FrictionField& criticalSlip() const { return zero_; }
+  /// Rate-and-state friction (law rateState): integrated in time by timeIntegration
+  /// quasiDynamic only (TimeIntegrator.hpp).
+  virtual bool rateAndState() const { return false; }
 
  private:
   FrictionField zero_;
@@ -113,6 +116,28 @@ class SlipWeakening : public FrictionLaw {
  private:
   FrictionField muS_, muD_, dc_, c_;
   Weakening form_;
+};
+
+/// Regularised rate-and-state friction (RateState.hpp; docs/method.md §3): keys 'a', 'b',
+/// 'characteristicSlip' L [m], 'referenceFriction' f₀ (0.6), 'referenceSlipRate' V₀ [m/s]
+/// (1e-6), 'initialSlipRate' V_init [m/s] (the slip rate the state ψ₀ gives under the initial
+/// stress), 'stateEvolution' aging (default) or slip, and the radiation damping: 'shearWaveSpeed'
+/// c_s [m/s] (η = G/(2 c_s), G of the rock at the fault) or 'radiationDamping' η [Pa s/m].
+class RateStateLaw : public FrictionLaw {
+ public:
+  struct Fields {
+    FrictionField a, b, L, f0, V0, initialV;
+    bool aging = true;
+    double shearWaveSpeed = 0, radiationDamping = -1;  ///< one of the two given (else < 0 / 0)
+  };
+  explicit RateStateLaw(Fields f) : f_(std::move(f)) {}
+  std::string name() const override { return "rateState"; }
+  const FrictionField& mu() const override { return f_.f0; }
+  bool rateAndState() const override { return true; }
+  const Fields& fields() const { return f_; }
+
+ private:
+  Fields f_;
 };
 
 }  // namespace friction

@@ -118,6 +118,10 @@ std::vector<double> fractureTableValues(const FractureRow& r, int dim) {
     if (dim == 3)  // the hanging wall's slip and τ on strike and down dip
       for (const double x : strikeDipValues(r)) v.push_back(x);
   }
+  if (r.hasRateState) {
+    v.push_back(r.slipRate);
+    v.push_back(r.psi);
+  }
   if (r.hasWeakening) {
     v.push_back(r.slipPath);
     v.push_back(r.frictionCoefficient);
@@ -145,7 +149,8 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
   const bool opening = !rows.empty() && rows.front().hasOpening;
   const bool hasPressure = !rows.empty() && rows.front().hasPressure;
   const std::string weakening =
-      !rows.empty() && rows.front().hasWeakening ? "slipPath frictionCoefficient " : "";
+      std::string(!rows.empty() && rows.front().hasRateState ? "slipRate psi " : "") +
+      (!rows.empty() && rows.front().hasWeakening ? "slipPath frictionCoefficient " : "");
   const std::string pressure =
       !hasPressure ? ""
       : dim == 3   ? "pressure sigmaNEffective deltaCFS slipStrike slipDip tauStrike tauDip "

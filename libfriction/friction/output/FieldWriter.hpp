@@ -62,6 +62,10 @@ struct FractureRow {
   /// The fracture's friction weakens with slip (law slipWeakening on some fracture of the
   /// case): the columns slipPath and frictionCoefficient are written (after the pressure
   /// columns, before state).
+  /// Rate-and-state faults (law rateState): the columns slipRate (|V| [m/s]) and psi (the
+  /// state ψ) are written (after the pressure columns, before slipPath's).
+  bool hasRateState = false;
+  double slipRate = 0, psi = 0;
   bool hasWeakening = false;
   double slipPath = 0;             ///< δ, the length of the path slid [m]
   double frictionCoefficient = 0;  ///< μ at δ (the law's μ where the friction does not weaken)

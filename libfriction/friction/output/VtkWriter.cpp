@@ -367,6 +367,10 @@ void optionalArrays(ArraySink& sink, std::ostream& s, const std::vector<Fracture
              [](const FractureRow& r) { return r.sigmaNEffective; });
     rowArray(sink, s, "deltaCFS", rows, [](const FractureRow& r) { return r.deltaCFS; });
   }
+  if (!rows.empty() && rows.front().hasRateState) {
+    rowArray(sink, s, "slipRate", rows, [](const FractureRow& r) { return r.slipRate; });
+    rowArray(sink, s, "psi", rows, [](const FractureRow& r) { return r.psi; });
+  }
   if (!rows.empty() && rows.front().hasWeakening) {
     rowArray(sink, s, "slipPath", rows, [](const FractureRow& r) { return r.slipPath; });
     rowArray(sink, s, "frictionCoefficient", rows,

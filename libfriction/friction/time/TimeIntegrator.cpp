@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "friction/dict/Dictionary.hpp"
+#include "friction/time/QuasiDynamic.hpp"
 
 namespace friction {
 
@@ -11,12 +12,16 @@ namespace {
 
 struct IntegratorEntry {
   const char* name;
-  std::function<std::unique_ptr<TimeIntegrator>()> make;
+  std::function<std::unique_ptr<TimeIntegrator>(const Dictionary*)> make;
 };
 
 const std::vector<IntegratorEntry>& integratorTable() {
   static const std::vector<IntegratorEntry> table = {
-      {"quasiStatic", [] { return std::make_unique<QuasiStatic>(); }},
+      {"quasiStatic", [](const Dictionary*) { return std::make_unique<QuasiStatic>(); }},
+      {"quasiDynamic",
+       [](const Dictionary* d) -> std::unique_ptr<TimeIntegrator> {
+         return std::make_unique<QuasiDynamic>(d);
+       }},
   };
   return table;
 }
@@ -30,9 +35,21 @@ std::vector<std::string> TimeIntegrator::names() {
 }
 
 std::unique_ptr<TimeIntegrator> TimeIntegrator::New(const Dictionary& frictionSolution) {
-  const std::string type = frictionSolution.getChoiceOr("timeIntegration", names(), "quasiStatic");
+  // A word, or a sub-dictionary with its 'type' and the integrator's settings.
+  const Dictionary* settings = nullptr;
+  std::string type = "quasiStatic";
+  if (frictionSolution.isDict("timeIntegration")) {
+    settings = &frictionSolution.subDict("timeIntegration");
+    type = settings->getChoice("type", names());
+  } else {
+    type = frictionSolution.getChoiceOr("timeIntegration", names(), "quasiStatic");
+  }
   for (const auto& e : integratorTable())
-    if (type == e.name) return e.make();
+    if (type == e.name) {
+      auto integrator = e.make(settings);
+      if (settings) settings->checkAllRead();
+      return integrator;
+    }
   return nullptr;  // getChoiceOr accepts only the table's names
 }
 

@@ -3,10 +3,15 @@
 // run-time selectable in system/frictionSolution (README.md, "Time integration"):
 //
 //   timeIntegration quasiStatic;        // the default
+//   timeIntegration { type quasiDynamic; relativeTolerance 1e-8; }   // rate-and-state faults
 //
 // quasiStatic: at each time of the grid the loads of that time are applied and the control
 // problem gives the step's slip increment (docs/method.md §5): friction equilibrium, no
 // inertia. A step whose loads equal the previous (converged) step's keeps its solution.
+//
+// quasiDynamic (QuasiDynamic.hpp): rate-and-state faults (law rateState) integrated in time on
+// the fault alone, τ from the interface operator S, radiation damping, an adaptive embedded
+// Runge–Kutta method between the times of the grid (docs/method.md §3).
 //
 // What every integrator shares stays with the case's driver (FrictionCase::run): restart,
 // the stop requests, the time folders and histories, the log's step lines. An integrator
@@ -33,7 +38,8 @@ struct StepResult {
   OptimizerReport report;
   long backSubstitutions = 0;
   double J = 0, relResidual = 0, maxExcessST = 0, lastStepNorm = 0;
-  double equilibrium = 0;  ///< ‖K x − b‖/‖b‖ of the step's final primal solve
+  double equilibrium = 0;   ///< ‖K x − b‖/‖b‖ of the step's final primal solve
+  double maxSlipRate = -1;  ///< quasiDynamic: the largest |V| at the step's end [m/s] (< 0: none)
   bool written = false;
   bool reused = false;     ///< loads unchanged since the previous step: its solution reused
   bool nonFinite = false;  ///< the results overflowed: the step is diverged and not written
@@ -46,6 +52,20 @@ struct StepLoads {
   bool operator==(const StepLoads& o) const {
     return load == o.load && dirichlet == o.dirichlet && pressure == o.pressure;
   }
+};
+
+struct InterfaceOperator;
+struct RateState;
+class DictionaryWriter;
+
+/// What a quasi-dynamic integrator advances on the faults (StepHost::rateStateFault): per
+/// control node its law, and the case's state, k slip components and one ψ per node.
+struct RateStateFault {
+  int k = 1;                                     ///< tangential components per node
+  const std::vector<RateState>* laws = nullptr;  ///< per node (σ̄ set per evaluation)
+  const Eigen::VectorXd* slip = nullptr;         ///< k·n, the slip at the step's start [m]
+  Eigen::VectorXd* psi = nullptr;                ///< n, the state ψ (–), advanced in place
+  Eigen::VectorXd componentMask;                 ///< k·n: 1 where a slip component is free
 };
 
 /// What the case offers a time integrator (FrictionCase implements it).
@@ -64,6 +84,22 @@ class StepHost {
   /// The step keeps the previous step's solution under `loads`: no slip increment, the
   /// openings stay.
   virtual void keepSolution(const StepLoads& loads) = 0;
+
+  // For integrators of rate-and-state faults (quasiDynamic):
+  /// The time the case's state is at (startTime, a restart's time, or the last step's).
+  virtual double stateTime() const = 0;
+  /// The interface operator S (prepareSolver() formed it).
+  virtual const InterfaceOperator& faultOperator() = 0;
+  /// The tractions at the control nodes under `loads` at time t with the slip at the step's
+  /// start (no increment): τ (k·n) and σ_n (n) [Pa]. One back-substitution.
+  virtual void tractionsAt(const StepLoads& loads, double t, Eigen::VectorXd& tau,
+                           Eigen::VectorXd& sigmaN) = 0;
+  virtual RateStateFault rateStateFault() = 0;
+  /// Ends a step that moved the slip to `slip` (k·n) at slip rates V (k·n) [m/s] under `loads`
+  /// at time t: the case's last state becomes that slip's (one back-substitution); sets
+  /// r.relResidual.
+  virtual void finishRateStep(const StepLoads& loads, double t, const Eigen::VectorXd& slip,
+                              const Eigen::VectorXd& V, StepResult& r) = 0;
 };
 
 class TimeIntegrator {
@@ -82,6 +118,15 @@ class TimeIntegrator {
   /// the case's last state at r.time. `previous`: the step before, computed in this run
   /// (nullptr for the run's first step).
   virtual void advance(StepHost& host, StepResult& r, const StepResult* previous) = 0;
+  /// Whether the integrator has a state of its own to restart from (written under
+  /// 'integrator' in uniform/frictionState).
+  virtual bool hasState() const { return false; }
+  virtual void writeState(DictionaryWriter& /*out*/) const {}
+  virtual void readState(const Dictionary& /*in*/) {}
+  /// Rate-and-state faults: the one integrator that takes them.
+  virtual bool takesRateState() const { return false; }
+  /// For the log's settings line ("" when there is nothing to add to the name).
+  virtual std::string describe() const { return ""; }
 };
 
 /// The quasi-static stepping: one control problem per time of the grid.

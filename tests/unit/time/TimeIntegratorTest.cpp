@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,17 @@ struct RecordingHost : StepHost {
     r.relResidual = 1e-9;
   }
   void keepSolution(const StepLoads&) override { calls.push_back("keep"); }
+  // The quasi-static stepping asks nothing of these.
+  double stateTime() const override { return 0; }
+  const InterfaceOperator& faultOperator() override { throw std::logic_error("not used"); }
+  void tractionsAt(const StepLoads&, double, Eigen::VectorXd&, Eigen::VectorXd&) override {
+    calls.push_back("tractions");
+  }
+  RateStateFault rateStateFault() override { return {}; }
+  void finishRateStep(const StepLoads&, double, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                      StepResult&) override {
+    calls.push_back("finishRate");
+  }
 };
 
 std::unique_ptr<TimeIntegrator> select(const std::string& text) {

@@ -1,0 +1,150 @@
+// QuasiDynamic: rate-and-state faults integrated on the fault alone (QuasiDynamic.hpp).
+#include "friction/time/QuasiDynamic.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "friction/control/Complementarity.hpp"
+#include "friction/control/SlipResponse.hpp"
+#include "friction/dict/Dictionary.hpp"
+#include "friction/dict/DictionaryWriter.hpp"
+#include "friction/law/RateState.hpp"
+
+namespace friction {
+
+QuasiDynamic::QuasiDynamic(const Dictionary* d) {
+  if (!d) return;
+  relTol_ = d->getScalarOr("relativeTolerance", relTol_, Bounds{1e-14, 1e-1});
+  absSlip_ = d->getScalarOr("absoluteSlipTolerance", absSlip_, Bounds::positive());
+  absState_ = d->getScalarOr("absoluteStateTolerance", absState_, Bounds::positive());
+  maxStep_ = d->getScalarOr("maxStep", 0.0, Bounds::nonNegative());
+  scheme_ = d->getChoiceOr("scheme", {"dormandPrince54", "bogackiShampine32"}, "dormandPrince54") ==
+                    "dormandPrince54"
+                ? RungeKuttaScheme::dormandPrince54
+                : RungeKuttaScheme::bogackiShampine32;
+}
+
+std::string QuasiDynamic::describe() const {
+  std::ostringstream s;
+  s << (scheme_ == RungeKuttaScheme::dormandPrince54 ? "Dormand-Prince 5(4)"
+                                                     : "Bogacki-Shampine 3(2)")
+    << ", relativeTolerance " << relTol_ << ", absoluteSlipTolerance " << absSlip_
+    << " m, absoluteStateTolerance " << absState_;
+  if (maxStep_ > 0) s << ", maxStep " << maxStep_ << " s";
+  return s.str();
+}
+
+std::string QuasiDynamic::prepare(StepHost& host) {
+  // The tractions come from S: the condensed Newton's operator, formed once per run.
+  return host.prepareSolver();
+}
+
+void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*previous*/) {
+  const double tA = host.stateTime(), tB = r.time;
+  const StepLoads loadsA = host.loadsAt(tA);
+  Eigen::VectorXd tauA, sigmaA, tauB, sigmaB;
+  host.tractionsAt(loadsA, tA, tauA, sigmaA);
+  const StepLoads loadsB = host.loadsAt(tB);
+  host.tractionsAt(loadsB, tB, tauB, sigmaB);
+  const InterfaceOperator& S = host.faultOperator();
+  RateStateFault fault = host.rateStateFault();
+  const int k = fault.k;
+  const Eigen::Index n = fault.psi->size(), kn = k * n;
+  const Eigen::VectorXd sA = *fault.slip;
+  const Eigen::VectorXd& mask = fault.componentMask;
+  std::vector<RateState> laws = *fault.laws;
+  const double span = tB - tA;
+
+  // The slip rate of every free component at (t, s, ψ), into V (k·n); false where a node's
+  // balance has no solution (σ̄ ≤ 0: the fault opens; a law's solve failed).
+  const auto slipRates = [&](double t, const Eigen::VectorXd& s, const Eigen::VectorXd& psi,
+                             Eigen::VectorXd& V) {
+    const double theta = span > 0 ? (t - tA) / span : 1.0;
+    const Eigen::VectorXd ds = (s - sA).cwiseProduct(mask);
+    const Eigen::VectorXd tau = tauA + theta * (tauB - tauA) + S.Stt * ds;
+    const Eigen::VectorXd sigma = sigmaA + theta * (sigmaB - sigmaA) + S.Snt * ds;
+    const Eigen::VectorXd p = loadsA.pressure + theta * (loadsB.pressure - loadsA.pressure);
+    V.setZero(kn);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      bool free = false;
+      for (int c = 0; c < k; ++c) free |= mask[k * i + c] != 0;
+      if (!free) continue;
+      RateState& law = laws[static_cast<std::size_t>(i)];
+      law.sigmaBar = -(sigma[i] + p[i]);
+      if (!(law.sigmaBar > 0)) return false;
+      // φ = −τ on the free components; V along φ.
+      Block phi(k);
+      for (int c = 0; c < k; ++c) phi[c] = -tau[k * i + c] * mask[k * i + c];
+      const double phiNorm = blockNorm(phi);
+      if (phiNorm == 0) continue;
+      const SlipRate v = law.slipRate(phiNorm, psi[i]);
+      if (!v.converged()) return false;
+      for (int c = 0; c < k; ++c) V[k * i + c] = v.V * phi[c] / phiNorm;
+    }
+    return true;
+  };
+  const RightHandSide rhs = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+    const Eigen::VectorXd s = y.head(kn), psi = y.tail(n);
+    Eigen::VectorXd V;
+    if (!slipRates(t, s, psi, V)) return false;
+    dydt.resize(kn + n);
+    dydt.head(kn) = V;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double speed = blockNorm(V.segment(k * i, k));
+      dydt[kn + i] = mask.segment(k * i, k).any()
+                         ? laws[static_cast<std::size_t>(i)].stateRate(speed, psi[i])
+                         : 0.0;
+    }
+    return true;
+  };
+
+  RungeKuttaSettings settings;
+  settings.scheme = scheme_;
+  settings.relTol = Eigen::VectorXd::Constant(1, relTol_);
+  settings.absTol.resize(kn + n);
+  settings.absTol.head(kn).setConstant(absSlip_);
+  settings.absTol.tail(n).setConstant(absState_);
+  settings.initialStep = nextStep_;
+  if (maxStep_ > 0) settings.maxStep = maxStep_;
+  EmbeddedRungeKutta rk(rhs, settings);
+  Eigen::VectorXd y(kn + n);
+  y.head(kn) = sA;
+  y.tail(n) = *fault.psi;
+  const IntegrationReport report = rk.integrate(tA, tB, y);
+  accepted_ += report.work.acceptedSteps;
+  rejected_ += report.work.rejectedSteps;
+  evaluations_ += report.work.evaluations;
+  r.report.iterations = static_cast<int>(report.work.acceptedSteps);
+  if (!report.ok()) {
+    std::ostringstream note;
+    note << "the time integration stopped at t = " << report.t << " s ("
+         << (report.status == IntegrationStatus::stepTooSmall ? "step too small"
+             : report.status == IntegrationStatus::initialEvaluationFailed
+                 ? "no slip rate at the start: a node's normal stress is not compressive, or its "
+                   "law has no solution"
+                 : "too many steps")
+         << "); the state written is the one reached";
+    r.report.status = OptimizerStatus::diverged;
+    r.report.note = note.str();
+  } else {
+    r.report.status = OptimizerStatus::converged;
+    nextStep_ = report.nextStep;
+  }
+  *fault.psi = y.tail(n);
+  Eigen::VectorXd V;
+  if (!slipRates(report.t, y.head(kn), y.tail(n), V)) V = Eigen::VectorXd::Zero(kn);
+  double vmax = 0;
+  for (Eigen::Index i = 0; i < n; ++i) vmax = std::max(vmax, blockNorm(V.segment(k * i, k)));
+  r.maxSlipRate = vmax;
+  host.finishRateStep(loadsB, tB, y.head(kn), V, r);
+  if (!report.ok()) r.report.status = OptimizerStatus::diverged;
+}
+
+void QuasiDynamic::writeState(DictionaryWriter& out) const { out.entry("nextStep", nextStep_); }
+
+void QuasiDynamic::readState(const Dictionary& in) {
+  nextStep_ = in.getScalar("nextStep", Bounds::nonNegative());
+}
+
+}  // namespace friction

@@ -1,0 +1,51 @@
+// QuasiDynamic: rate-and-state faults integrated in time on the fault alone (TimeIntegrator.hpp;
+// docs/method.md §3; ../shared/METHOD.md §12).
+//
+// Between two times t_A, t_B of the case's grid the state y = (slip s, ψ) of every control node
+// advances by an adaptive embedded Runge–Kutta method (EmbeddedRungeKutta.hpp). Its right-hand
+// side is fault-only work: the elastic tractions
+//   τ(s, t) = τ_A + θ (τ_B − τ_A) + S_tt (s − s_A),   σ_n likewise with S_nt,   θ = (t − t_A)/(t_B
+//   − t_A),
+// (τ_A, τ_B: one back-substitution each, the loads of t_A and t_B at the slip s_A; exact for
+// loads linear in time between the two), then per node the slip rate from the quasi-dynamic
+// balance φ − ηV = σ̄ f(V, ψ) with φ = −τ (the shear that drives the slip: the traction on Ω⁺
+// opposes it, docs/method.md §2) and σ̄ = −(σ_n + p), and dψ/dt of the evolution law
+// (RateState.hpp). In 3D V is along φ. At t_B one more back-substitution gives the body's
+// state for the outputs.
+//
+// Settings (timeIntegration { type quasiDynamic; ... } in system/frictionSolution):
+//   relativeTolerance (1e-8), absoluteSlipTolerance [m] (1e-9), absoluteStateTolerance (1e-9)
+//   of the error control, scheme dormandPrince54 (default) or bogackiShampine32, maxStep [s]
+//   (none). Each interval starts from the step size the last one proposed (the integrator's
+//   state, restarted from uniform/frictionState), so a restarted run steps as an uninterrupted
+//   one.
+#pragma once
+
+#include <string>
+
+#include "friction/time/EmbeddedRungeKutta.hpp"
+#include "friction/time/TimeIntegrator.hpp"
+
+namespace friction {
+
+class QuasiDynamic : public TimeIntegrator {
+ public:
+  /// settings: the timeIntegration sub-dictionary (nullptr: the defaults).
+  explicit QuasiDynamic(const Dictionary* settings);
+  std::string name() const override { return "quasiDynamic"; }
+  std::string describe() const override;
+  std::string prepare(StepHost& host) override;
+  void advance(StepHost& host, StepResult& r, const StepResult* previous) override;
+  bool hasState() const override { return true; }
+  void writeState(DictionaryWriter& out) const override;
+  void readState(const Dictionary& in) override;
+  bool takesRateState() const override { return true; }
+
+ private:
+  double relTol_ = 1e-8, absSlip_ = 1e-9, absState_ = 1e-9, maxStep_ = 0;
+  RungeKuttaScheme scheme_ = RungeKuttaScheme::dormandPrince54;
+  double nextStep_ = 0;  ///< the step size the last interval proposed [s] (0: choose)
+  long accepted_ = 0, rejected_ = 0, evaluations_ = 0;  ///< over the run, for the log
+};
+
+}  // namespace friction

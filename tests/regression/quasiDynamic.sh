@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# timeIntegration quasiDynamic with law rateState (issue #30), on cases/paperBenchmark's mesh
+# (a unit square cut across its width by a horizontal fault: the upper block can slide) in
+# rock of E = 30 GPa under an in-situ stress (σ_n = −10 MPa, τ = 5.5 MPa), the top moved
+# sideways at V_p = 1e-6 m/s. A velocity-strengthening fault (a = 0.015 > b = 0.01, L = 0.1 mm)
+# started at 1e-7 m/s must reach steady sliding: after 10 L/V_p every free node slides at V_p
+# (to 1e-3) with the steady-state friction of the regularised law plus radiation damping,
+# |τ| = σ̄ a asinh[½ (V/V₀)^(1 − b/a) e^(f₀/a)] + η V node by node (to 1e-6: the integration's
+# tolerance), and the tractions of the full solve agree with those S gave the integration
+# (relResidual, the balance residual of the written state, ≤ 1e-12). Then: the check fails for
+# a law other than the run's (a = 0.016); stopped at t = 300 s and restarted, the run writes
+# the very bytes of the uninterrupted one; law rateState without quasiDynamic, and
+# quasiDynamic without law rateState, are refused naming the key and the way out.
+# Usage: quasiDynamic.sh BIN_DIR SOURCE_DIR WORK_DIR
+set -euo pipefail
+bin=$1 src=$2 work=$3
+rm -rf "$work"
+mkdir -p "$work"
+cp -r "$src/cases/paperBenchmark" "$work/case"
+cd "$work/case"
+rm -rf [1-9]* VTK postProcessing log.* constant/splitMesh
+cat >constant/mechanicalProperties <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object mechanicalProperties; }
+E 30e9;
+nu 0.25;
+DICT
+cat >constant/effects <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object effects; }
+inSitu { type initialStress; stress (-10e6 -10e6 5.5e6); }
+DICT
+cat >constant/fractureProperties <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object fractureProperties; }
+fracture
+{
+    law rateState; a 0.015; b 0.01; characteristicSlip 1e-4; referenceFriction 0.6;
+    referenceSlipRate 1e-5; initialSlipRate 1e-7; shearWaveSpeed 3464;
+}
+DICT
+cat >system/frictionSolution <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object frictionSolution; }
+elementOrder    1;
+timeIntegration { type quasiDynamic; relativeTolerance 1e-8; }
+control { gammaRelative 1; optimizer { type semismoothNewton; tolerance 1e-10; maxIterations 100; } }
+DICT
+sed -i 's/value   table ((0 (0 0)) (1 (-0.02 -0.025)));/value table ((0 (0 0)) (1000 (1e-3 0)));/' 0/D
+grep -q "(1000 (1e-3 0))" 0/D
+sed -i 's/^endTime .*/endTime 1000;/; s/^deltaT .*/deltaT 100;/' system/controlDict
+"$bin/splitFractureNodes" -case . >log.splitFractureNodes 2>&1
+cp -r . ../restarted
+"$bin/frictionSolver" -case . >log.frictionSolver 2>&1
+cat >../check.py <<'PY'
+import math, sys
+case, a = sys.argv[1], float(sys.argv[2])
+b, f0, V0, Vp = 0.01, 0.6, 1e-5, 1e-6
+eta = 30e9 / 2.5 / 2 / 3464  # G/(2 c_s), G = E/(2(1 + nu))
+lines = open(f"{case}/1000/fractures/fracture.dat").read().splitlines()
+h = lines[0][1:].split()
+rows = [l.split() for l in lines if not l.startswith("#")]
+iV, itau, isn, ist = (h.index(c) for c in ("slipRate", "tau", "sigmaN", "state"))
+free = [r for r in rows if r[ist] != "tip"]
+assert len(free) >= 10, f"only {len(free)} free nodes"
+worstV = max(abs(float(r[iV]) / Vp - 1) for r in free)
+worstTau = 0.0
+for r in free:
+    sb, V = -float(r[isn]), float(r[iV])
+    fss = a * math.asinh(0.5 * (V / V0) ** (1 - b / a) * math.exp(f0 / a))
+    worstTau = max(worstTau, abs(abs(float(r[itau])) - (sb * fss + eta * V)) / (sb * fss))
+status = open(f"{case}/1000/solverStatus").read()
+rel = float(status.split("relResidual")[1].split(";")[0])
+print(f"V/V_p - 1 up to {worstV:.2e}, |tau| off the steady state by {worstTau:.2e} (relative), "
+      f"relResidual {rel:.2e}, {len(free)} nodes")
+ok = worstV <= 1e-3 and worstTau <= 1e-6 and rel <= 1e-12
+sys.exit(0 if ok else 1)
+PY
+/usr/bin/python3 ../check.py . 0.015 || { echo "FAIL: not the steady state"; exit 1; }
+[[ $(grep -c "^Time = .* converged" log.frictionSolver) == 10 ]] || { echo "FAIL: 10 converged steps expected"; exit 1; }
+echo "PASS: steady sliding at V_p with the law's steady-state friction"
+if /usr/bin/python3 ../check.py . 0.016 >/dev/null; then echo "FAIL: the check passed for another law"; exit 1; fi
+echo "PASS: the check rejects another law (a = 0.016)"
+
+# Restart, byte for byte.
+cd ../restarted
+sed -i 's/^endTime .*/endTime 300;/' system/controlDict
+"$bin/frictionSolver" -case . >log.1 2>&1
+sed -i 's/^endTime .*/endTime 1000;/; s/^startFrom .*/startFrom       latestTime;/' system/controlDict
+"$bin/frictionSolver" -case . >log.2 2>&1
+cd ..
+n=0
+for f in case/[1-9]*/fractures/fracture.dat case/[1-9]*/solverStatus case/[1-9]*/uniform/frictionState case/[1-9]*/D; do
+  cmp -s "$f" "restarted/${f#case/}" || { echo "FAIL: restarted/${f#case/} differs"; exit 1; }
+  n=$((n + 1))
+done
+((n == 40)) || { echo "FAIL: $n files compared, 40 expected"; exit 1; }
+grep -q "nextStep" restarted/300/uniform/frictionState
+echo "PASS: stopped at 300 s and restarted: $n files byte for byte as the uninterrupted run's"
+
+# Refusals.
+cp -r restarted quasiStatic
+rm -rf quasiStatic/[1-9]* quasiStatic/VTK quasiStatic/postProcessing
+sed -i 's/^timeIntegration .*/timeIntegration quasiStatic;/' quasiStatic/system/frictionSolution
+sed -i 's/^startFrom .*/startFrom       startTime;/' quasiStatic/system/controlDict
+rc=0
+"$bin/frictionSolver" -case quasiStatic >quasiStatic/log 2>&1 || rc=$?
+[[ $rc == 1 ]] && grep -q "law rateState (constant/fractureProperties) is integrated in time: set 'timeIntegration { type quasiDynamic; }'" quasiStatic/log ||
+  { echo "FAIL: law rateState with quasiStatic (exit $rc)"; cat quasiStatic/log; exit 1; }
+cp -r quasiStatic coulomb
+sed -i 's/^timeIntegration .*/timeIntegration { type quasiDynamic; }/' coulomb/system/frictionSolution
+cat >coulomb/constant/fractureProperties <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object fractureProperties; }
+fracture { law coulomb; frictionCoefficient 0.6; }
+DICT
+rc=0
+"$bin/frictionSolver" -case coulomb >coulomb/log 2>&1 || rc=$?
+[[ $rc == 1 ]] && grep -q "frictionSolution:.*timeIntegration quasiDynamic integrates rate-and-state faults" coulomb/log ||
+  { echo "FAIL: quasiDynamic with law coulomb (exit $rc)"; cat coulomb/log; exit 1; }
+echo "PASS: rateState without quasiDynamic and quasiDynamic without rateState are refused"
