@@ -112,14 +112,6 @@ friction::Mesh symmetricX(int perUnit) {
   return m;
 }
 
-/// Rows of a table by their point (rounded to 1e-9 m), for comparisons across meshes.
-std::map<std::pair<long long, long long>, std::size_t> byPoint(const Table& t) {
-  std::map<std::pair<long long, long long>, std::size_t> rows;
-  for (std::size_t r = 0; r < t.rows.size(); ++r)
-    rows[{std::llround(t.at(r, "x") * 1e9), std::llround(t.at(r, "y") * 1e9)}] = r;
-  return rows;
-}
-
 /// Whether row r has a recovered traction: not a tip or a junction end, whose rows give the
 /// body's stress at the node (the stress concentration there, which depends on the mesh).
 bool hasTraction(const Table& t, std::size_t r) {

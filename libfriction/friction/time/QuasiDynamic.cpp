@@ -7,6 +7,7 @@
 
 #include "friction/control/Complementarity.hpp"
 #include "friction/control/SlipResponse.hpp"
+#include "friction/core/StopRequest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 #include "friction/law/RateState.hpp"
@@ -85,6 +86,9 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     return true;
   };
   const RightHandSide rhs = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+    // A second SIGINT/SIGTERM abandons the step here, as between two solves of the
+    // quasi-static stepping (an interval may take many steps).
+    throwIfStopNow();
     const Eigen::VectorXd s = y.head(kn), psi = y.tail(n);
     Eigen::VectorXd V;
     if (!slipRates(t, s, psi, V)) return false;
