@@ -1821,7 +1821,9 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     trailer << std::setprecision(4) << "  maxSlip " << maxSlip << " m";
     if (opening_) trailer << "  maxOpening " << maxOpening << " m";
     // Friction that weakens: the slipping patch's relative tangent stiffness (≤ 0: unstable).
-    if (r.maxSlipRate >= 0) trailer << "  maxSlipRate " << r.maxSlipRate << " m/s";
+    if (r.maxSlipRate >= 0)
+      trailer << "  maxSlipRate " << r.maxSlipRate << " m/s  peakSlipRate " << r.peakSlipRate
+              << " m/s";
     if (weakening_ && !std::isnan(r.report.tangentStiffness))
       trailer << "  patchStiffness " << r.report.tangentStiffness;
     log << trailer.str() << loadFields(r.time, pressure) << "  ["

@@ -40,6 +40,8 @@ struct StepResult {
   double J = 0, relResidual = 0, maxExcessST = 0, lastStepNorm = 0;
   double equilibrium = 0;   ///< ‖K x − b‖/‖b‖ of the step's final primal solve
   double maxSlipRate = -1;  ///< quasiDynamic: the largest |V| at the step's end [m/s] (< 0: none)
+  /// quasiDynamic: the largest |V| over the step's interval, at the integration's steps [m/s]
+  double peakSlipRate = -1;
   bool written = false;
   bool reused = false;     ///< loads unchanged since the previous step: its solution reused
   bool nonFinite = false;  ///< the results overflowed: the step is diverged and not written
