@@ -650,11 +650,10 @@ Ordering automaticOrdering(int dimension, Eigen::Index unknowns) {
   // default run, on a 2-core machine shared with other jobs. 2D, 10⁴ to 10⁶ unknowns, P1 and
   // P2: METIS and NESDIS save 35–65 % of AMD's flops but take 3–5× its time to order, so
   // ordering plus numeric factorisation is shorter with AMD up to 2.4·10⁵ unknowns and
-  // about even at 10⁶ (uniform P2, graded P1; NESDIS ahead on the uniform P1 mesh), while
-  // AMD's ordering and analysis take 28–65 % of its numeric factorisation (the least at
-  // 10⁶) against 100–200 % for theirs; CHOLMOD's own strategy ordered twice at 10⁶. 3D (P1,
-  // 2.4·10⁴ and 5·10⁴ unknowns): METIS halves AMD's flops for an ordering of a few % of the
-  // factorisation. No size in the measured range changes the choice.
+  // about even at 10⁶, while AMD's ordering and analysis take 19–65 % of its numeric
+  // factorisation (the least at 10⁶) against 80–200 % for theirs; CHOLMOD's own strategy ordered
+  // twice at 10⁶. 3D (P1, 2.4·10⁴ and 5·10⁴ unknowns): METIS halves AMD's flops for an ordering of
+  // a few % of the factorisation. No size in the measured range changes the choice.
   (void)unknowns;
   return dimension == 2 ? Ordering::amd : Ordering::metis;
 }
