@@ -10,21 +10,26 @@
 # Meshes: 2D, the paperBenchmark square (FreeFEM, n segments per side) at P1 and P2 from about
 # 10⁴ to 10⁶ unknowns; 3D, the penny crack (gmsh) at P1, two small sizes (a few minutes).
 #
-# Usage: orderingBenchmark.sh [BIN_DIR] [WORK_DIR] [SET]
-#   SET: all (default), 2d, 3d, or quick (2D up to 10⁵ unknowns, a minute).
+# Usage: orderingBenchmark.sh [BIN_DIR] [WORK_DIR] [SET] [ORDERINGS]
+#   SET: all (default), 2d, 3d, quick (2D up to 10⁵ unknowns, a minute) or large (the two 2D
+#   meshes of about 10⁶ unknowns, P1 and P2). ORDERINGS: the orderings to run, separated by
+#   commas (default: auto,amd,metis,nesdis,cholmodDefault).
 # Takes about 15 minutes and 3 GB on 2 cores for `all`; runs one solver at a time.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bin=${1:-$root/build/bin}
 work=${2:-$root/build/orderingBenchmark}
 set=${3:-all}
-case $set in all | 2d | 3d | quick) ;; *) echo "orderingBenchmark: SET is all, 2d, 3d or quick (got '$set')" >&2; exit 2 ;; esac
+case $set in all | 2d | 3d | quick | large) ;; *) echo "orderingBenchmark: SET is all, 2d, 3d, quick or large (got '$set')" >&2; exit 2 ;; esac
 for tool in frictionSolver splitFractureNodes; do
   [[ -x "$bin/$tool" ]] || { echo "orderingBenchmark: $bin/$tool not found (build first)" >&2; exit 1; }
 done
 rm -rf "$work" && mkdir -p "$work"
 work=$(cd "$work" && pwd)
-orderings=(auto amd metis nesdis cholmodDefault)
+IFS=, read -r -a orderings <<<"${4:-auto,amd,metis,nesdis,cholmodDefault}"
+for o in "${orderings[@]}"; do
+  case $o in auto | amd | metis | nesdis | cholmodDefault) ;; *) echo "orderingBenchmark: unknown ordering '$o'" >&2; exit 2 ;; esac
+done
 
 # One row per run: the numbers are read from the log of that run only.
 row() { # row LABEL CASE ORDERING
@@ -97,7 +102,11 @@ sweep() { # sweep LABEL CASE: one run per ordering
 if [[ $set != 3d ]]; then
   command -v FreeFem++ >/dev/null || { echo "orderingBenchmark: FreeFem++ not found" >&2; exit 1; }
   # n segments per side: P1 dofs ≈ 2.3 n², P2 dofs ≈ 9 n².
-  if [[ $set == quick ]]; then p1=(66 208); p2=(33 104); else p1=(66 208 330 660); p2=(33 104 160 330); fi
+  case $set in
+    quick) p1=(66 208) p2=(33 104) ;;
+    large) p1=(660) p2=(330) ;;
+    *) p1=(66 208 330 660) p2=(33 104 160 330) ;;
+  esac
   echo "2D: paperBenchmark square, bordered factor (jump unknowns last)"
   header
   for n in "${p1[@]}"; do c=$(square "$n" 1) && sweep "2D P1 n=$n" "$c"; done

@@ -72,12 +72,15 @@ class CholmodLlt : public Eigen::CholmodSupernodalLLT<CholmodMatrix, Eigen::Lowe
   }
 };
 
-// Pivots of a CHOLMOD factor (d of LDLᵀ, l² of LLᵀ) for the first `rows` original rows.
-Eigen::VectorXd cholmodPivots(const cholmod_factor& L, Eigen::Index rows) {
+// Pivots of a CHOLMOD factor (d of LDLᵀ, l² of LLᵀ) for the first `rows` original rows. Row k
+// of the factor is row perm[k] of the matrix: L's own permutation, unless `perm` is given (a
+// factor of a matrix that was permuted before CHOLMOD saw it).
+Eigen::VectorXd cholmodPivots(const cholmod_factor& L, Eigen::Index rows,
+                              const CholmodIndex* perm = nullptr) {
   using I = CholmodIndex;
   const auto n = static_cast<Eigen::Index>(L.n);
   const double* x = static_cast<const double*>(L.x);
-  const I* perm = static_cast<const I*>(L.Perm);
+  if (!perm) perm = static_cast<const I*>(L.Perm);
   Eigen::VectorXd inFactorOrder(n);
   if (L.is_super) {
     // Supernode s: columns super[s] .. super[s+1]−1, stored as a dense column-major block
@@ -124,6 +127,29 @@ cholmod_sparse viewLower(const CholmodMatrix& A) {
   c.sorted = 1;
   c.packed = 1;
   return c;
+}
+
+// The lower triangle of A with CHOLMOD's indices, written in compressed form directly (the
+// rows of a column stay in A's order).
+CholmodMatrix lowerTriangle(const Eigen::SparseMatrix<double>& A) {
+  using I = CholmodIndex;
+  const I n = A.cols();
+  CholmodMatrix lower(A.rows(), n);
+  I nnz = 0;
+  for (I j = 0; j < n; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) nnz += it.row() >= j;
+  lower.resizeNonZeros(nnz);
+  I* outer = lower.outerIndexPtr();
+  I* inner = lower.innerIndexPtr();
+  double* value = lower.valuePtr();
+  I pos = 0;
+  for (I j = 0; j < n; ++j) {
+    outer[j] = pos;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (it.row() >= j) inner[pos] = it.row(), value[pos++] = it.value();
+  }
+  outer[n] = pos;
+  return lower;
 }
 
 cholmod_dense viewDense(Eigen::MatrixXd& X) {
@@ -212,7 +238,7 @@ class CholmodBackend : public SparseFactor::Backend {
     return status < 0 ? FactorStatus::failed : FactorStatus::ok;
   }
   Eigen::VectorXd pivots() const override {
-    return bordered_ ? cholmodPivots(*bordered_, rows_)
+    return bordered_ ? cholmodPivots(*bordered_, rows_, borderedPerm_.data())
                      : cholmodPivots(*llt_.cholmodFactor(),
                                      static_cast<Eigen::Index>(llt_.cholmodFactor()->n));
   }
@@ -230,6 +256,13 @@ class CholmodBackend : public SparseFactor::Backend {
   // L₂₂ L₂₂ᵀ = C − Bᵀ A⁻¹ B. C is shifted by σ I (σ = the largest diagonal entry of C)
   // before factoring, and σ taken off again, because the complement itself may be only
   // semi-definite (a part held only by a fracture can move rigidly with the jump).
+  //
+  // The bordered matrix is written already permuted, and CHOLMOD analyses and factors it in
+  // its natural order: given a permutation instead, CHOLMOD permutes (transposes) the matrix
+  // twice for the analysis, twice more for the supernodes and twice with the values in the
+  // numeric factorisation, which at 10⁶ unknowns in 2D took longer than AMD itself. The
+  // symbolic and numeric factors are those of the same permuted matrix, so the factor is the
+  // same, bit for bit; only the permutation is applied here (solveBordered, pivots).
   bool factorBordered(const SparseMatrix& A32, const SparseMatrix& B, const SparseMatrix& C,
                       Eigen::MatrixXd& schur, FactorStatus& status, std::string& whyNot) override {
     freeBordered();
@@ -240,14 +273,17 @@ class CholmodBackend : public SparseFactor::Backend {
     // 1. A's own fill-reducing ordering, chosen exactly as factor() chooses it (the same
     //    permutation, postorder included). Only the ordering is kept, so the analysis is
     //    simplicial: CHOLMOD orders and postorders before its supernodal analysis, which here
-    //    would be of A alone and thrown away (step 3 analyses the bordered matrix).
-    std::vector<I> perm(static_cast<std::size_t>(n + m));
+    //    would be of A alone and thrown away (step 3 analyses the bordered matrix). CHOLMOD
+    //    reads A's lower triangle only: the upper one is not copied (half the entries for
+    //    its copies and transposes to skip; the ordering is the same).
+    std::vector<I>& perm = borderedPerm_;
+    perm.assign(static_cast<std::size_t>(n + m), 0);
     int orderingA = -1;
     llt_.release();  // a factor of an earlier factor(): at 10⁶ unknowns in 3D memory counts
     auto clock = std::chrono::steady_clock::now();
+    CholmodMatrix Alower = lowerTriangle(A32);
     {
-      const CholmodMatrix A64 = A32;
-      cholmod_sparse viewA = viewLower(A64);
+      cholmod_sparse viewA = viewLower(Alower);
       applyOrdering();
       const int supernodal = cm.supernodal;
       cm.supernodal = CHOLMOD_SIMPLICIAL;
@@ -267,49 +303,71 @@ class CholmodBackend : public SparseFactor::Backend {
     }
     const double orderingSeconds = secondsSince(clock);
 
-    // 2. The bordered matrix, lower triangle.
+    // 2. The bordered matrix in the order perm, lower triangle: row and column k are row and
+    //    column perm[k] of [A B; Bᵀ C + σ I]. A's entry (i, j) moves to (max, min) of their
+    //    new indices; B(j, a) to row n + a of column j's new index; C stays last.
     double sigma = 0;
     for (I a = 0; a < m; ++a) sigma = std::max(sigma, C.coeff(a, a));
     if (!(sigma > 0)) sigma = 1;
-    // Written column by column in compressed form (no triplet sort: at 10⁶ unknowns the
-    // sort alone took seconds): column j < n holds A's entries on and below the diagonal,
-    // then row n + a for every B(j, a); column n + a holds C's lower part plus σ.
+    std::vector<I> inverse(static_cast<std::size_t>(n));
+    for (I k = 0; k < n; ++k) inverse[perm[k]] = k;
     const Eigen::SparseMatrix<double, Eigen::RowMajor> Brows = B;  // row j: the a with B(j, a)
     Eigen::SparseMatrix<double> Clower = C.triangularView<Eigen::Lower>();
     for (I a = 0; a < m; ++a) Clower.coeffRef(a, a) += sigma;
     Clower.makeCompressed();
     CholmodMatrix Ab(n + m, n + m);
-    Eigen::Index nnz = Brows.nonZeros() + Clower.nonZeros();
-    for (I j = 0; j < n; ++j)
-      for (SparseMatrix::InnerIterator it(A32, j); it; ++it) nnz += it.row() >= j;
-    Ab.resizeNonZeros(nnz);
+    Ab.resizeNonZeros(Alower.nonZeros() + Brows.nonZeros() + Clower.nonZeros());
     I* outer = Ab.outerIndexPtr();
     I* inner = Ab.innerIndexPtr();
     double* value = Ab.valuePtr();
-    I pos = 0;
+    // Count the entries of each new column, then place them (next: each column's free slot).
+    std::fill(outer, outer + n + m + 1, I(0));
+    const I* aOuter = Alower.outerIndexPtr();
+    const I* aInner = Alower.innerIndexPtr();
+    const double* aValue = Alower.valuePtr();
     for (I j = 0; j < n; ++j) {
-      outer[j] = pos;
-      for (SparseMatrix::InnerIterator it(A32, j); it; ++it)
-        if (it.row() >= j) inner[pos] = it.row(), value[pos++] = it.value();
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Brows, j); it; ++it)
-        inner[pos] = n + it.col(), value[pos++] = it.value();
+      const I cj = inverse[j];
+      for (I p = aOuter[j]; p < aOuter[j + 1]; ++p) ++outer[std::min(inverse[aInner[p]], cj) + 1];
+      outer[cj + 1] += Brows.outerIndexPtr()[j + 1] - Brows.outerIndexPtr()[j];
     }
-    for (I a = 0; a < m; ++a) {
-      outer[n + a] = pos;
-      for (SparseMatrix::InnerIterator it(Clower, a); it; ++it)
-        inner[pos] = n + it.row(), value[pos++] = it.value();
+    for (I a = 0; a < m; ++a)
+      outer[n + a + 1] = Clower.outerIndexPtr()[a + 1] - Clower.outerIndexPtr()[a];
+    for (I k = 0; k < n + m; ++k) outer[k + 1] += outer[k];
+    std::vector<I> next(outer, outer + n + m);
+    for (I j = 0; j < n; ++j) {
+      const I cj = inverse[j];
+      for (I p = aOuter[j]; p < aOuter[j + 1]; ++p) {
+        const I ri = inverse[aInner[p]];
+        const I q = next[std::min(ri, cj)]++;
+        inner[q] = std::max(ri, cj);
+        value[q] = aValue[p];
+      }
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Brows, j); it; ++it) {
+        const I q = next[cj]++;
+        inner[q] = n + it.col();
+        value[q] = it.value();
+      }
     }
-    outer[n + m] = pos;
-    FRICTION_ASSERT(pos == nnz, "bordered matrix: entry count");
+    for (I a = 0; a < m; ++a)
+      for (SparseMatrix::InnerIterator it(Clower, a); it; ++it) {
+        const I q = next[n + a]++;
+        inner[q] = n + it.row();
+        value[q] = it.value();
+      }
+    FRICTION_ASSERT(outer[n + m] == Ab.nonZeros(), "bordered matrix: entry count");
+    CholmodMatrix().swap(Alower);
+    std::vector<I>().swap(next);
+    std::vector<I>().swap(inverse);
     cholmod_sparse view = viewLower(Ab);
+    view.sorted = 0;  // a column's rows come in A's order, not the new one
 
-    // 3. Symbolic analysis with that ordering, not postordered (a postorder could move a
+    // 3. Symbolic analysis in that (natural) order, not postordered (a postorder could move a
     //    part of the body that no fracture touches behind the border).
     const int nmethods = cm.nmethods, ordering = cm.method[0].ordering, postorder = cm.postorder;
     cm.nmethods = 1;
-    cm.method[0].ordering = CHOLMOD_GIVEN;
+    cm.method[0].ordering = CHOLMOD_NATURAL;
     cm.postorder = 0;
-    cholmod_factor* L = cholmod_l_analyze_p(&view, perm.data(), nullptr, 0, &cm);
+    cholmod_factor* L = cholmod_l_analyze(&view, &cm);
     cm.nmethods = nmethods;
     cm.method[0].ordering = ordering;
     cm.postorder = postorder;
@@ -318,12 +376,8 @@ class CholmodBackend : public SparseFactor::Backend {
       if (L) cholmod_l_free_factor(&L, &cm);
       return false;
     }
-    const I* permL = static_cast<const I*>(L->Perm);
-    bool borderLast = permL != nullptr;
-    for (I a = 0; borderLast && a < m; ++a) borderLast = permL[n + a] == n + a;
-    if (!borderLast || !L->is_super) {
-      whyNot = borderLast ? "CHOLMOD chose a simplicial factor for the bordered matrix"
-                          : "CHOLMOD did not keep the jump unknowns last";
+    if (!L->is_super) {
+      whyNot = "CHOLMOD chose a simplicial factor for the bordered matrix";
       cholmod_l_free_factor(&L, &cm);
       return false;
     }
@@ -461,16 +515,17 @@ class CholmodBackend : public SparseFactor::Backend {
 
   // A⁻¹ B with the bordered factor: forward substitution through the border, the border's
   // part set to zero, backward substitution; the border's unknowns then come out zero and
-  // the leading ones are A⁻¹ B (L₁₁ L₁₁ᵀ = A in the leading block).
+  // the leading ones are A⁻¹ B (L₁₁ L₁₁ᵀ = A in the leading block). The factor is of the
+  // permuted matrix: row k of it is row perm[k] of A (k < n; the border is last).
   Eigen::MatrixXd solveBordered(const Eigen::MatrixXd& B) const {
     cholmod_common& cm = llt_.cholmod();
     const Eigen::Index n = rows_, N = static_cast<Eigen::Index>(bordered_->n);
+    const CholmodIndex* perm = borderedPerm_.data();
     Eigen::MatrixXd X = Eigen::MatrixXd::Zero(N, B.cols());
-    X.topRows(n) = B;
+    for (Eigen::Index c = 0; c < B.cols(); ++c)
+      for (Eigen::Index k = 0; k < n; ++k) X(k, c) = B(perm[k], c);
     cholmod_dense view = viewDense(X);
-    cholmod_dense* y = cholmod_l_solve(CHOLMOD_P, bordered_, &view, &cm);
-    cholmod_dense* z = y ? cholmod_l_solve(CHOLMOD_L, bordered_, y, &cm) : nullptr;
-    cholmod_l_free_dense(&y, &cm);
+    cholmod_dense* z = cholmod_l_solve(CHOLMOD_L, bordered_, &view, &cm);
     if (z) {
       // The border is last in the factor's order: rows n … N−1 of the permuted vector.
       double* zx = static_cast<double*>(z->x);
@@ -479,14 +534,13 @@ class CholmodBackend : public SparseFactor::Backend {
     }
     cholmod_dense* w = z ? cholmod_l_solve(CHOLMOD_Lt, bordered_, z, &cm) : nullptr;
     cholmod_l_free_dense(&z, &cm);
-    cholmod_dense* u = w ? cholmod_l_solve(CHOLMOD_Pt, bordered_, w, &cm) : nullptr;
-    cholmod_l_free_dense(&w, &cm);
-    FRICTION_ASSERT(u != nullptr, "CHOLMOD solve with the bordered factor failed");
+    FRICTION_ASSERT(w != nullptr, "CHOLMOD solve with the bordered factor failed");
     Eigen::MatrixXd out(n, B.cols());
-    const double* ux = static_cast<const double*>(u->x);
+    const double* wx = static_cast<const double*>(w->x);
     for (Eigen::Index c = 0; c < B.cols(); ++c)
-      for (Eigen::Index r = 0; r < n; ++r) out(r, c) = ux[r + c * static_cast<Eigen::Index>(u->d)];
-    cholmod_l_free_dense(&u, &cm);
+      for (Eigen::Index k = 0; k < n; ++k)
+        out(perm[k], c) = wx[k + c * static_cast<Eigen::Index>(w->d)];
+    cholmod_l_free_dense(&w, &cm);
     return out;
   }
 
@@ -494,6 +548,7 @@ class CholmodBackend : public SparseFactor::Backend {
   Ordering ordering_ = Ordering::amd;
   std::string choice_ = "ordering amd";
   cholmod_factor* bordered_ = nullptr;
+  std::vector<CholmodIndex> borderedPerm_;  // the bordered factor's order (factorBordered)
   Eigen::Index rows_ = 0;
   FactorAnalysis analysis_;
 };
@@ -595,11 +650,10 @@ Ordering automaticOrdering(int dimension, Eigen::Index unknowns) {
   // default run, on a 2-core machine shared with other jobs. 2D, 10⁴ to 10⁶ unknowns, P1 and
   // P2: METIS and NESDIS save 35–65 % of AMD's flops but take 3–5× its time to order, so
   // ordering plus numeric factorisation is shorter with AMD up to 2.4·10⁵ unknowns and
-  // about even at 10⁶ (uniform P2, graded P1; NESDIS ahead on the uniform P1 mesh), while
-  // AMD's ordering and analysis take 28–65 % of its numeric factorisation (the least at
-  // 10⁶) against 100–200 % for theirs; CHOLMOD's own strategy ordered twice at 10⁶. 3D (P1,
-  // 2.4·10⁴ and 5·10⁴ unknowns): METIS halves AMD's flops for an ordering of a few % of the
-  // factorisation. No size in the measured range changes the choice.
+  // about even at 10⁶, while AMD's ordering and analysis take 19–65 % of its numeric
+  // factorisation (the least at 10⁶) against 80–200 % for theirs; CHOLMOD's own strategy ordered
+  // twice at 10⁶. 3D (P1, 2.4·10⁴ and 5·10⁴ unknowns): METIS halves AMD's flops for an ordering of
+  // a few % of the factorisation. No size in the measured range changes the choice.
   (void)unknowns;
   return dimension == 2 ? Ordering::amd : Ordering::metis;
 }
