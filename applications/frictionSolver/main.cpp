@@ -28,6 +28,7 @@
 #include "friction/effect/Effect.hpp"
 #include "friction/law/FrictionLaw.hpp"
 #include "friction/linalg/SparseFactor.hpp"
+#include "friction/time/TimeIntegrator.hpp"
 
 namespace po = boost::program_options;
 using namespace friction;
@@ -57,9 +58,12 @@ int main(int argc, char** argv) {
   if (!parsed) return 2;
   const po::variables_map& args = *parsed;
   if (args.count("help")) {
-    std::cout << "Usage: frictionSolver [-case DIR] [-overwrite] [-parallel] [-listModels]\n\n"
-                 "Runs the case in DIR (split by splitFractureNodes) through quasi-static time.\n\n"
-              << options;
+    std::cout
+        << "Usage: frictionSolver [-case DIR] [-overwrite] [-parallel] [-listModels]\n\n"
+           "Runs the case in DIR (split by splitFractureNodes) through its times: quasi-static\n"
+           "stepping, or rate-and-state faults integrated quasi-dynamically\n"
+           "(system/frictionSolution, timeIntegration).\n\n"
+        << options;
     return 0;
   }
   if (args.count("listModels")) {
@@ -72,6 +76,8 @@ int main(int argc, char** argv) {
               << joinWords(Optimizer::names()) << "\n"
               << "linear solvers (system/frictionSolution, linearSolver): "
               << joinWords(SparseFactor::backendNames()) << "\n"
+              << "time integrators (system/frictionSolution, timeIntegration): "
+              << joinWords(TimeIntegrator::names()) << "\n"
               << "effects (constant/effects, key 'type'): " << joinWords(Effect::names()) << "\n";
     return 0;
   }
