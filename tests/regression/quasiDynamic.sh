@@ -16,36 +16,9 @@ set -euo pipefail
 bin=$1 src=$2 work=$3
 rm -rf "$work"
 mkdir -p "$work"
-cp -r "$src/cases/paperBenchmark" "$work/case"
+source "$src/utilities/frictionStudy/rateStateBlock.sh"
+rateStateBlock "$src" "$work/case" 0.015 0.01 1e-4 1e-7 1000 1e-3 1000 100
 cd "$work/case"
-rm -rf [1-9]* VTK postProcessing log.* constant/splitMesh
-cat >constant/mechanicalProperties <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object mechanicalProperties; }
-E 30e9;
-nu 0.25;
-DICT
-cat >constant/effects <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object effects; }
-inSitu { type initialStress; stress (-10e6 -10e6 5.5e6); }
-DICT
-cat >constant/fractureProperties <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object fractureProperties; }
-fracture
-{
-    law rateState; a 0.015; b 0.01; characteristicSlip 1e-4; referenceFriction 0.6;
-    referenceSlipRate 1e-5; initialSlipRate 1e-7; shearWaveSpeed 3464;
-}
-DICT
-cat >system/frictionSolution <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object frictionSolution; }
-elementOrder    1;
-timeIntegration { type quasiDynamic; relativeTolerance 1e-8; }
-control { gammaRelative 1; optimizer { type semismoothNewton; tolerance 1e-10; maxIterations 100; } }
-DICT
-sed -i 's/value   table ((0 (0 0)) (1 (-0.02 -0.025)));/value table ((0 (0 0)) (1000 (1e-3 0)));/' 0/D
-grep -q "(1000 (1e-3 0))" 0/D
-sed -i 's/^endTime .*/endTime 1000;/; s/^deltaT .*/deltaT 100;/' system/controlDict
-"$bin/splitFractureNodes" -case . >log.splitFractureNodes 2>&1
 cp -r . ../restarted
 "$bin/frictionSolver" -case . >log.frictionSolver 2>&1
 cat >../check.py <<'PY'
@@ -152,13 +125,8 @@ echo "PASS: 3D, 4 steps integrated, balance residual <= 1e-12"
 # written step of 5e3 s); stopped just before the second event and restarted, the run writes the
 # uninterrupted run's bytes.
 cd "$work"
-cp -r case events
+rateStateBlock "$src" "$work/events" 0.01 0.015 1e-6 1e-9 1e6 1e-3 400000 5000
 cd events
-rm -rf [1-9]* VTK postProcessing log.frictionSolver
-sed -i 's/law rateState; a 0.015; b 0.01; characteristicSlip 1e-4;/law rateState; a 0.01; b 0.015; characteristicSlip 1e-6;/; s/initialSlipRate 1e-7/initialSlipRate 1e-9/' constant/fractureProperties
-grep -q "characteristicSlip 1e-6" constant/fractureProperties
-sed -i 's/(1000 (1e-3 0))/(1e6 (1e-3 0))/' 0/D
-sed -i 's/^endTime .*/endTime 400000;/; s/^deltaT .*/deltaT 5000;/; s/^startFrom .*/startFrom       startTime;/' system/controlDict
 cp -r . ../eventsRestarted
 "$bin/frictionSolver" -case . >log.frictionSolver 2>&1
 [[ $(grep -c "^Time = .* converged" log.frictionSolver) == 80 ]] || { echo "FAIL: events: 80 converged steps expected"; exit 1; }

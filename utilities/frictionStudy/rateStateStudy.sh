@@ -32,30 +32,9 @@ bin=$(cd "$bin" && pwd)
 # The base case: tests/regression/quasiDynamic.sh's "events".
 base=$work/base
 rm -rf "$base"
-cp -r "$root/cases/paperBenchmark" "$base"
+source "$root/utilities/frictionStudy/rateStateBlock.sh"
+rateStateBlock "$root" "$base" 0.01 0.015 1e-6 1e-9 1e6 1e-3 400000 "$dt"
 cd "$base"
-rm -rf [1-9]* VTK postProcessing log.* constant/splitMesh
-cat >constant/mechanicalProperties <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object mechanicalProperties; }
-E 30e9;
-nu 0.25;
-DICT
-cat >constant/effects <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object effects; }
-inSitu { type initialStress; stress (-10e6 -10e6 5.5e6); }
-DICT
-cat >constant/fractureProperties <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object fractureProperties; }
-fracture
-{
-    law rateState; a 0.01; b 0.015; characteristicSlip 1e-6; referenceFriction 0.6;
-    referenceSlipRate 1e-5; initialSlipRate 1e-9; shearWaveSpeed 3464;
-}
-DICT
-sed -i 's/value   table ((0 (0 0)) (1 (-0.02 -0.025)));/value table ((0 (0 0)) (1e6 (1e-3 0)));/' 0/D
-grep -q "(1e6 (1e-3 0))" 0/D || { echo "rateStateStudy: paperBenchmark's 0/D changed" >&2; exit 1; }
-sed -i "s/^endTime .*/endTime 400000;/; s/^deltaT .*/deltaT $dt;/" system/controlDict
-"$bin/splitFractureNodes" -case . >log.splitFractureNodes 2>&1
 
 # "from to" per written step whose peakSlipRate (largest |V| over its interval) is above
 # 0.1 m/s: the time names of its start and end. Usage: events LOG START_TIME_NAME
