@@ -29,6 +29,7 @@
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 #include "friction/fracture/SplitMeshIO.hpp"
+#include "friction/output/FaultSeries.hpp"
 #include "friction/output/FieldWriter.hpp"
 #include "friction/output/TimeFolder.hpp"
 #include "friction/time/RemainingTime.hpp"
@@ -151,6 +152,7 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
   // 1. Every dictionary is read and checked before any work: a typo costs nothing.
   const Dictionary controlDict = readCaseFile(caseDir, "system/controlDict");
   time_ = std::make_unique<TimeControl>(controlDict);
+  faultSeries_ = FaultSeries::read(controlDict);
   controlDict.checkAllRead();
 
   const std::string splitPath = (fs::path(caseDir) / "constant" / "splitMesh").string();
@@ -209,7 +211,7 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
         fd.getChoiceOr("contact", {"bilateral", "unilateral"}, "bilateral") == "unilateral";
     fractures_.push_back({g.name, FrictionLaw::New(fd, caseDir, split_.mesh.dim), unilateral});
     opening_ |= unilateral;
-    rateState_ |= fractures_.back().law->rateAndState();
+    rateState_ |= fractures_.back().law->rateAndState() || fractures_.back().law->imposesSlipRate();
     if (fractures_.back().law->weakening() != Weakening::none) {
       weakening_ = true;
       if (unilateral)
@@ -222,15 +224,16 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
   fp.checkAllRead();
   if (rateState_) {
     for (std::size_t f = 0; f < fractures_.size(); ++f)
-      if (!fractures_[f].law->rateAndState())
+      if (!fractures_[f].law->rateAndState() && !fractures_[f].law->imposesSlipRate())
         fp.fail(fractures_[f].name,
                 "fracture '" + fractures_[f].name + "': law " + fractures_[f].law->name() +
-                    " beside law rateState on another fracture: a quasi-dynamic run integrates "
-                    "rate-and-state faults only; give every fracture law rateState");
+                    " beside law rateState or creep on another fracture: a quasi-dynamic run "
+                    "integrates rate-and-state faults and imposed creep only; give every "
+                    "fracture law rateState or creep");
     if (opening_)
       throw InputError(fp.location(),
-                       "law rateState with contact unilateral: faces that open are not yet "
-                       "integrated quasi-dynamically; use contact bilateral");
+                       "law rateState or creep with contact unilateral: faces that open are "
+                       "not yet integrated quasi-dynamically; use contact bilateral");
   }
   if (weakening_ && opening_)
     throw InputError(fp.location(),
@@ -335,11 +338,15 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
   timeIntegrator_ = TimeIntegrator::New(sol);
   const SourceLocation integratorAt =
       sol.found("timeIntegration") ? sol.location("timeIntegration") : sol.location();
-  if (rateState_ && !timeIntegrator_->takesRateState())
-    throw InputError(integratorAt,
-                     "law rateState (constant/fractureProperties) is integrated in time: set "
-                     "'timeIntegration { type quasiDynamic; }' (timeIntegration is " +
-                         timeIntegrator_->name() + ")");
+  if (rateState_ && !timeIntegrator_->takesRateState()) {
+    const bool anyRateState = std::any_of(fractures_.begin(), fractures_.end(),
+                                          [](const auto& f) { return f.law->rateAndState(); });
+    throw InputError(integratorAt, std::string("law ") + (anyRateState ? "rateState" : "creep") +
+                                       " (constant/fractureProperties) is integrated in time: set "
+                                       "'timeIntegration { type quasiDynamic; }' "
+                                       "(timeIntegration is " +
+                                       timeIntegrator_->name() + ")");
+  }
   if (!rateState_ && timeIntegrator_->takesRateState())
     throw InputError(integratorAt, "timeIntegration " + timeIntegrator_->name() +
                                        " integrates rate-and-state faults: give the fractures "
@@ -399,6 +406,8 @@ void FrictionCase::printSettings(std::ostream& log) const {
           << F.L.describe() << " m, referenceFriction " << F.f0.describe() << ", referenceSlipRate "
           << F.V0.describe() << " m/s, initialSlipRate " << F.initialV.describe()
           << " m/s, stateEvolution " << (F.aging ? "aging" : "slip");
+    } else if (const auto* creep = dynamic_cast<const Creep*>(f.law.get())) {
+      log << ", slipRate " << creep->slipRate().describe() << " m/s";
     } else if (f.law->weakening() != Weakening::none)
       log << ", staticCoefficient " << mu.describe() << ", dynamicCoefficient "
           << f.law->dynamicCoefficient().describe() << ", criticalSlip "
@@ -610,14 +619,44 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
     initialSlipRate_ = Eigen::VectorXd::Zero(n);
     psi_ = Eigen::VectorXd::Zero(n);
     slipRate_ = Eigen::VectorXd::Zero(system_->blockSize() * n);
+    imposed_ = Eigen::VectorXd::Zero(n);
+    imposedRate_ = Eigen::VectorXd::Zero(system_->blockSize() * n);
     for (std::size_t f = 0; f < fractures_.size(); ++f) {
-      const auto* law = dynamic_cast<const RateStateLaw*>(fractures_[f].law.get());
-      FRICTION_ASSERT(law, "every fracture of a rate-and-state case has law rateState");
-      const RateStateLaw::Fields& F = law->fields();
       std::vector<const ControlNode*> on;
       std::vector<Eigen::Index> index;
       for (Eigen::Index k = 0; k < n; ++k)
         if (nodes[k].fracture == static_cast<int>(f)) on.push_back(&nodes[k]), index.push_back(k);
+      if (const auto* creep = dynamic_cast<const Creep*>(fractures_[f].law.get())) {
+        // The imposed slip rate on each node's tangent basis: the direction projected on it.
+        const Eigen::VectorXd rate = creep->slipRate().evaluate(on);
+        const int k = system_->blockSize();
+        for (std::size_t i = 0; i < index.size(); ++i) {
+          const ControlNode& node = *on[i];
+          Eigen::Vector3d d = creep->direction();
+          d -= d.dot(node.normal) * node.normal;
+          if (!(d.norm() > 1e-6))
+            throw InputError(
+                (fs::path(caseDir_) / "constant" / "fractureProperties").string(),
+                "fracture '" + fractures_[f].name + "': law creep's direction is normal to the " +
+                    "fracture at the node at (" + formatNumber(node.position.x()) + ", " +
+                    formatNumber(node.position.y()) +
+                    (system_->dimension() == 3 ? ", " + formatNumber(node.position.z()) : "") +
+                    "): it has no component along the fracture to slide in");
+          d.normalize();
+          imposed_[index[i]] = 1;
+          for (int c = 0; c < k; ++c)
+            imposedRate_[k * index[i] + c] =
+                rate[static_cast<Eigen::Index>(i)] * d.dot(node.tangent[c]);
+        }
+        log << "Fracture " << fractures_[f].name << ": creep, slip rate imposed along ("
+            << formatNumber(creep->direction().x()) << " " << formatNumber(creep->direction().y())
+            << (system_->dimension() == 3 ? " " + formatNumber(creep->direction().z()) : "")
+            << ")\n";
+        continue;
+      }
+      const auto* law = dynamic_cast<const RateStateLaw*>(fractures_[f].law.get());
+      FRICTION_ASSERT(law, "every fracture of a quasi-dynamic case has law rateState or creep");
+      const RateStateLaw::Fields& F = law->fields();
       const Eigen::VectorXd a = F.a.evaluate(on), b = F.b.evaluate(on), L = F.L.evaluate(on),
                             f0 = F.f0.evaluate(on), V0 = F.V0.evaluate(on),
                             vi = F.initialV.evaluate(on);
@@ -635,6 +674,15 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
                                       : " (G/(2 c_s), G " + formatNumber(shearModulus_[f]) + " Pa)")
           << "\n";
     }
+  }
+  if (faultSeries_) {
+    if (!rateState_)
+      throw InputError((fs::path(caseDir_) / "system" / "controlDict").string(),
+                       "faultOutput samples the steps of a quasi-dynamic run (law rateState, "
+                       "timeIntegration quasiDynamic); this case has none: remove faultOutput");
+    std::vector<std::string> names;
+    for (const auto& f : fractures_) names.push_back(f.name);
+    faultSeries_->bind(nodes, split_.mesh.dim, system_->blockSize(), names, rateLaws_);
   }
   // The cells around each tip and junction end, for the stress the tables give there: those
   // holding a node of the split space at the tip's position (every copy of it; copies share
@@ -1126,7 +1174,7 @@ void FrictionCase::prepareOutput(bool overwrite, std::ostream& log,
 }
 
 void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh,
-                               std::ostream& log) {
+                               std::ostream& log, double limit) {
   if (!parallel::isMaster()) return;  // rank 0 writes every output file
   TimeFolder::removeLeftovers(caseDir_);
   std::vector<std::string> fractureNames;
@@ -1208,6 +1256,8 @@ void FrictionCase::trimOutputs(const std::function<bool(const std::string&)>& ke
     writeTextAtomic(file, historyHeader() + kept);
     fractureHistories_.push_back(std::make_unique<AppendFile>(file, false));
   }
+  // The fault outputs of a quasi-dynamic run (faultOutput): rows up to the restart's time.
+  if (faultSeries_) faultSeries_->open(caseDir_, fresh, limit);
 }
 
 std::string FrictionCase::historyHeader() const {
@@ -1352,6 +1402,8 @@ long FrictionCase::restart(std::ostream& log) {
                        "with another timeIntegration; start again (" +
                            overwriteHint_ + ")");
     timeIntegrator_->readState(st.subDict("integrator"));
+    if (faultSeries_ && st.isDict("faultOutput"))
+      faultSeries_->readState(st.subDict("faultOutput"));
   } else if (st.found("integrator")) {
     st.fail("integrator",
             "'integrator': this folder was written by a run with timeIntegration "
@@ -1437,7 +1489,7 @@ long FrictionCase::restart(std::ostream& log) {
         double t = 0;
         return timeOfName(name, t) && t <= limit;
       },
-      false, log);
+      false, log, limit);
   return first;
 }
 
@@ -1509,6 +1561,14 @@ void FrictionCase::tractionsAt(const StepLoads& loads, double t, Eigen::VectorXd
   sys.primal(Eigen::VectorXd::Zero(perNode * n), tau, sigmaN);
 }
 
+bool FrictionCase::wantsRateSamples() const {
+  return faultSeries_ != nullptr && parallel::isMaster();
+}
+
+void FrictionCase::rateSample(const RateSample& sample) {
+  if (faultSeries_) faultSeries_->sample(sample);
+}
+
 RateStateFault FrictionCase::rateStateFault() {
   RateStateFault f;
   f.k = system_->blockSize();
@@ -1516,6 +1576,8 @@ RateStateFault FrictionCase::rateStateFault() {
   f.slip = &slip_;
   f.psi = &psi_;
   f.componentMask = system_->componentMask();
+  f.imposed = &imposed_;
+  f.imposedRate = &imposedRate_;
   return f;
 }
 
@@ -1532,6 +1594,7 @@ void FrictionCase::initialiseRateState() {
     Block phi(k);
     for (int c = 0; c < k; ++c) phi[c] = -tau[k * i + c] * mask[k * i + c];
     if (blockNorm(phi) == 0 && mask.segment(k * i, k).isZero()) continue;  // held: no slip
+    if (imposed_[i] != 0) continue;                                        // creep: no state
     RateState law = rateLaws_[static_cast<std::size_t>(i)];
     law.sigmaBar = -(sigmaN[i] + loads.pressure[i]);
     const std::optional<double> psi =
@@ -1576,7 +1639,7 @@ void FrictionCase::finishRateStep(const StepLoads& loads, double t, const Eigen:
     law.sigmaBar = -(sigmaN[i] + loads.pressure[i]);
     const Block v = V.segment(k * i, k);
     const double speed = blockNorm(v);
-    if (law.sigmaBar <= 0 || speed == 0) continue;
+    if (imposed_[i] != 0 || law.sigmaBar <= 0 || speed == 0) continue;  // creep: no balance
     const double strength = law.sigmaBar * law.friction(speed, psi_[i]) + law.eta * speed;
     muEff[i] = strength / law.sigmaBar;
     for (Eigen::Index c = 0; c < k; ++c) D[k * i + c] = tau[k * i + c] + strength * v[c] / speed;
@@ -1771,6 +1834,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
           if (history_) history_->append(lines.str());  // rank 0's only
           for (std::size_t f = 0; f < fractureHistories_.size(); ++f)
             fractureHistories_[f]->append(historyLine(f, r.time));
+          if (faultSeries_) faultSeries_->flush();
           if (!writeFolder) return;
           try {
             writeTimeFolder(r, last_.beta, k);
@@ -2300,6 +2364,12 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
     timeIntegrator_->writeState(state);
     state.endDict();
   }
+  // The fault outputs' sampling: the times of their last rows.
+  if (faultSeries_) {
+    state.beginDict("faultOutput");
+    faultSeries_->writeState(state);
+    state.endDict();
+  }
   // Friction that weakens: the laws' state, the slip path δ per fracture node [m].
   if (weakening_)
     state.entry("slipPath",
@@ -2333,6 +2403,7 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   }
   if (history_) history_->sync();
   for (const auto& h : fractureHistories_) h->sync();
+  if (faultSeries_) faultSeries_->sync();
   folder.commit();
 }
 

@@ -43,6 +43,8 @@
 
 namespace friction {
 
+class FaultSeries;
+
 /// A connected part of the split mesh (cells joined through shared split-mesh nodes, so the
 /// two sides of a fracture are different parts) that touches no Dirichlet patch.
 struct FloatingPart {
@@ -130,6 +132,8 @@ class FrictionCase : private StepHost {
   void tractionsAt(const StepLoads& loads, double t, Eigen::VectorXd& tau,
                    Eigen::VectorXd& sigmaN) override;
   RateStateFault rateStateFault() override;
+  bool wantsRateSamples() const override;
+  void rateSample(const RateSample& sample) override;
   void finishRateStep(const StepLoads& loads, double t, const Eigen::VectorXd& slip,
                       const Eigen::VectorXd& V, StepResult& r) override;
   /// Rate-and-state faults at the run's start: ψ₀ per node from the law's initialSlipRate
@@ -237,6 +241,11 @@ class FrictionCase : private StepHost {
   bool rateState_ = false, psiKnown_ = false;
   std::vector<RateState> rateLaws_;
   Eigen::VectorXd initialSlipRate_, psi_, slipRate_;
+  /// Nodes of fractures with law creep: 1 where the slip rate is imposed (n), and that rate on
+  /// the node's tangent basis (k·n) [m/s].
+  Eigen::VectorXd imposed_, imposedRate_;
+  /// system/controlDict's faultOutput: SEAS-layout series of a quasiDynamic run (or none).
+  std::unique_ptr<FaultSeries> faultSeries_;
   bool weakening_ = false;
   WeakeningSettings weakeningSettings_;
   Eigen::VectorXd slipPath_;
@@ -275,8 +284,9 @@ class FrictionCase : private StepHost {
   /// killed writes. `fresh`: start convergence.dat anew. Not fresh (a restart), the VTK series
   /// goes on under the name of the earlier times' files when the case folder was renamed (the
   /// log says so).
+  /// `limit`: the restart's time (the fault outputs keep their rows up to it).
   void trimOutputs(const std::function<bool(const std::string&)>& keep, bool fresh,
-                   std::ostream& log);
+                   std::ostream& log, double limit = 0);
 };
 
 }  // namespace friction

@@ -111,6 +111,27 @@ const LawEntry lawTable[] = {
          f.radiationDamping = in.d.getScalar("radiationDamping", Bounds::nonNegative());
        return std::make_unique<RateStateLaw>(std::move(f));
      }},
+    {"creep",
+     [](const LawInput& in) -> std::unique_ptr<FrictionLaw> {
+       FrictionField rate = in.field("slipRate", Bounds::nonNegative());
+       Eigen::Vector3d dir = Eigen::Vector3d::Zero();
+       if (in.dim == 2) {
+         const Vector2 v = in.d.getVector("direction");
+         dir << v.x(), v.y(), 0.0;
+       } else {
+         const std::vector<double> v = in.d.getScalarList("direction");
+         if (v.size() != 3)
+           in.d.fail("direction",
+                     "key 'direction': expected (x y z) on a 3D mesh, the direction "
+                     "in which the side Omega+ slides relative to Omega-");
+         dir << v[0], v[1], v[2];
+       }
+       if (!(dir.norm() > 0) || !std::isfinite(dir.norm()))
+         in.d.fail("direction",
+                   "key 'direction': expected a non-zero vector, the direction in which the side "
+                   "Omega+ slides relative to Omega-");
+       return std::make_unique<Creep>(std::move(rate), dir.normalized());
+     }},
 };
 
 }  // namespace

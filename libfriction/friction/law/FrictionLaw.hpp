@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "friction/law/FrictionField.hpp"
 #include "friction/law/Weakening.hpp"
 
@@ -46,6 +48,9 @@ class FrictionLaw {
   /// Rate-and-state friction (law rateState): integrated in time by timeIntegration
   /// quasiDynamic only (TimeIntegrator.hpp).
   virtual bool rateAndState() const { return false; }
+  /// A slip rate imposed in time (law creep): also integrated by quasiDynamic only, beside
+  /// rate-and-state faults (the deep creeping extension that loads them).
+  virtual bool imposesSlipRate() const { return false; }
 
  private:
   FrictionField zero_;
@@ -138,6 +143,25 @@ class RateStateLaw : public FrictionLaw {
 
  private:
   Fields f_;
+};
+
+/// A slip rate imposed in time (docs/method.md §3): the fracture's faces slide steadily at
+/// 'slipRate' V [m/s] (≥ 0, a number or a field) along 'direction', the direction in which
+/// Ω⁺ moves relative to Ω⁻ ((x y) in 2D, (x y z) in 3D, projected on each node's tangent
+/// plane), whatever the tractions: a creeping fault's extension below the seismogenic zone
+/// (SEAS BP3's x_d ≥ W_f), loading the rate-and-state faults of a quasiDynamic run.
+class Creep : public FrictionLaw {
+ public:
+  Creep(FrictionField rate, Eigen::Vector3d direction)
+      : rate_(std::move(rate)), direction_(std::move(direction)) {}
+  std::string name() const override { return "creep"; }
+  bool imposesSlipRate() const override { return true; }
+  const FrictionField& slipRate() const { return rate_; }
+  const Eigen::Vector3d& direction() const { return direction_; }
+
+ private:
+  FrictionField rate_;
+  Eigen::Vector3d direction_;
 };
 
 }  // namespace friction

@@ -11,6 +11,7 @@
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 #include "friction/law/RateState.hpp"
+#include "friction/output/FaultSeries.hpp"
 
 namespace friction {
 
@@ -71,6 +72,11 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
       bool free = false;
       for (int c = 0; c < k; ++c) free |= mask[k * i + c] != 0;
       if (!free) continue;
+      if ((*fault.imposed)[i] != 0) {  // creep: the rate is given
+        for (int c = 0; c < k; ++c)
+          V[k * i + c] = (*fault.imposedRate)[k * i + c] * mask[k * i + c];
+        continue;
+      }
       RateState& law = laws[static_cast<std::size_t>(i)];
       law.sigmaBar = -(sigma[i] + p[i]);
       if (!(law.sigmaBar > 0)) return false;
@@ -96,7 +102,7 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     dydt.head(kn) = V;
     for (Eigen::Index i = 0; i < n; ++i) {
       const double speed = blockNorm(V.segment(k * i, k));
-      dydt[kn + i] = mask.segment(k * i, k).any()
+      dydt[kn + i] = mask.segment(k * i, k).any() && (*fault.imposed)[i] == 0
                          ? laws[static_cast<std::size_t>(i)].stateRate(speed, psi[i])
                          : 0.0;
     }
@@ -115,12 +121,43 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
   Eigen::VectorXd y(kn + n);
   y.head(kn) = sA;
   y.tail(n) = *fault.psi;
+  // The case's fault outputs sample the state at the interval's start and at every accepted
+  // step: the tractions there by rows of S, on demand.
+  const bool sampling = host.wantsRateSamples();
+  const auto sample = [&](double t, const Eigen::VectorXd& s, const Eigen::VectorXd& psi,
+                          const Eigen::VectorXd& V) {
+    const double theta = span > 0 ? (t - tA) / span : 1.0;
+    const Eigen::VectorXd ds = (s - sA).cwiseProduct(mask);
+    RateSample smp;
+    smp.time = t;
+    smp.slip = &s;
+    smp.psi = &psi;
+    smp.rate = &V;
+    smp.traction = [&](Eigen::Index i, Eigen::VectorXd& tau, double& sigmaEff) {
+      tau.resize(k);
+      for (int c = 0; c < k; ++c) {
+        const Eigen::Index r = k * i + c;
+        tau[c] = tauA[r] + theta * (tauB[r] - tauA[r]) + S.Stt.row(r).dot(ds);
+      }
+      sigmaEff = sigmaA[i] + theta * (sigmaB[i] - sigmaA[i]) + S.Snt.row(i).dot(ds) +
+                 loadsA.pressure[i] + theta * (loadsB.pressure[i] - loadsA.pressure[i]);
+    };
+    host.rateSample(smp);
+  };
+  if (sampling) {
+    Eigen::VectorXd V0;
+    if (slipRates(tA, sA, *fault.psi, V0)) sample(tA, sA, *fault.psi, V0);
+  }
   // The largest slip rate over the interval's accepted steps (an event between two written
   // times shows there): the derivative at each step's end holds the slip rates.
   double peak = 0;
   const StepObserver observer = [&](const AcceptedStep& step) {
     for (Eigen::Index i = 0; i < n; ++i)
       peak = std::max(peak, blockNorm(step.dydt1.segment(k * i, k)));
+    if (sampling) {
+      const Eigen::VectorXd s = step.y1.head(kn), psi = step.y1.tail(n), V = step.dydt1.head(kn);
+      sample(step.t1, s, psi, V);
+    }
     return true;
   };
   const IntegrationReport report = rk.integrate(tA, tB, y, observer);

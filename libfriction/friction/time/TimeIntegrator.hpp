@@ -58,6 +58,7 @@ struct StepLoads {
 
 struct InterfaceOperator;
 struct RateState;
+struct RateSample;
 class DictionaryWriter;
 
 /// What a quasi-dynamic integrator advances on the faults (StepHost::rateStateFault): per
@@ -68,6 +69,10 @@ struct RateStateFault {
   const Eigen::VectorXd* slip = nullptr;         ///< k·n, the slip at the step's start [m]
   Eigen::VectorXd* psi = nullptr;                ///< n, the state ψ (–), advanced in place
   Eigen::VectorXd componentMask;                 ///< k·n: 1 where a slip component is free
+  /// n: 1 at nodes whose slip rate is imposed (law creep; their law and ψ are unused), and
+  /// that rate (k·n) [m/s].
+  const Eigen::VectorXd* imposed = nullptr;
+  const Eigen::VectorXd* imposedRate = nullptr;
 };
 
 /// What the case offers a time integrator (FrictionCase implements it).
@@ -102,6 +107,10 @@ class StepHost {
   /// r.relResidual.
   virtual void finishRateStep(const StepLoads& loads, double t, const Eigen::VectorXd& slip,
                               const Eigen::VectorXd& V, StepResult& r) = 0;
+  /// Whether the case samples the integration's accepted steps (its faultOutput); then the
+  /// integrator passes each of them, and the state at each interval's start, to rateSample.
+  virtual bool wantsRateSamples() const { return false; }
+  virtual void rateSample(const RateSample& /*sample*/) {}
 };
 
 class TimeIntegrator {

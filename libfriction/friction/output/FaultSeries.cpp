@@ -1,0 +1,373 @@
+// FaultSeries: SEAS-layout time series of a quasi-dynamic run (FaultSeries.hpp).
+#include "friction/output/FaultSeries.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "friction/core/AtomicFile.hpp"
+#include "friction/core/InputFile.hpp"
+#include "friction/core/Suggest.hpp"
+#include "friction/dict/Dictionary.hpp"
+#include "friction/dict/DictionaryWriter.hpp"
+#include "friction/fracture/FractureSystem.hpp"
+#include "friction/law/RateState.hpp"
+
+namespace fs = std::filesystem;
+
+namespace friction {
+
+namespace {
+
+/// SEAS's recommended formats: 21.13E for the time, 14.6E for the values.
+void appendTime(std::string& row, double t) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%21.13E", t);
+  row += buf;
+}
+void appendValue(std::string& row, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, " %14.6E", v + 0.0);  // + 0.0: no "-0" for a zero
+  row += buf;
+}
+
+/// The lines of an earlier run's file to keep on a restart at `limit`: comments and the
+/// column line, and the rows whose first number (the time) is at or before it.
+std::string keptLines(const std::string& path, double limit) {
+  std::string kept;
+  if (!fs::exists(path)) return kept;
+  InputFileRole role;  // a FIFO put in its place must not block the restart
+  role.what = "a fault output file frictionSolver writes";
+  std::istringstream in(readInputFile(path, role));
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) continue;
+    const char* begin = line.c_str();
+    char* end = nullptr;
+    const double t = std::strtod(begin, &end);
+    if (end == begin || t <= limit) kept += line + "\n";
+  }
+  return kept;
+}
+
+}  // namespace
+
+FaultSeries::~FaultSeries() = default;
+
+std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
+  if (!controlDict.found("faultOutput")) return nullptr;
+  if (!controlDict.isDict("faultOutput"))
+    controlDict.fail("faultOutput",
+                     "key 'faultOutput': expected a sub-dictionary { fracture ...; stations { name "
+                     "s; ... } profiles { ... } }");
+  const Dictionary& d = controlDict.subDict("faultOutput");
+  auto out = std::unique_ptr<FaultSeries>(new FaultSeries);
+  FaultSeries& o = *out;
+  o.fracture_ = d.getWord("fracture");
+  o.fractureAt_ = d.location("fracture");
+  if (d.found("positiveSlip")) {
+    const std::vector<double> v = d.getScalarList("positiveSlip");
+    if (v.size() < 2 || v.size() > 3)
+      d.fail("positiveSlip", "key 'positiveSlip': expected a vector (x y), or (x y z) in 3D");
+    o.positive_ << v[0], v[1], v.size() == 3 ? v[2] : 0.0;
+    if (!(o.positive_.norm() > 0) || !std::isfinite(o.positive_.norm()))
+      d.fail("positiveSlip", "key 'positiveSlip': expected a non-zero vector");
+    o.positive_.normalize();
+    o.positiveGiven_ = true;
+  }
+  o.seismicRate_ = d.getScalarOr("seismicSlipRate", 1e-3, Bounds::positive());
+  o.stationInterval_ = d.getScalarOr("stationInterval", 0.0, Bounds::nonNegative());
+  o.stationSeismic_ = d.getScalarOr("stationSeismicInterval", 0.0, Bounds::nonNegative());
+  if (d.found("stations")) {
+    if (!d.isDict("stations"))
+      d.fail("stations", "key 'stations': expected a sub-dictionary of 'name arclength;' entries");
+    const Dictionary& st = d.subDict("stations");
+    for (const std::string& name : st.keys()) {
+      if (name.find('/') != std::string::npos || name == "slip" || name == "shearstress" ||
+          name == "normalstress")
+        st.fail(name, "station '" + name +
+                          "': a station's name is its file's name: no '/', and not one of the "
+                          "profiles' files (slip, shearstress, normalstress)");
+      Station s;
+      s.name = name;
+      s.s = st.getScalar(name);
+      s.where = st.location(name);
+      o.stations_.push_back(s);
+    }
+    if (o.stations_.empty())
+      d.fail("stations", "key 'stations': no station (expected entries 'name arclength;')");
+  }
+  if (d.found("profiles")) {
+    if (!d.isDict("profiles"))
+      d.fail("profiles",
+             "key 'profiles': expected a sub-dictionary { from; to; spacing; "
+             "interval; seismicInterval; }");
+    const Dictionary& p = d.subDict("profiles");
+    o.profiles_ = true;
+    o.profilesAt_ = d.location("profiles");
+    o.from_ = p.getScalarOr("from", 0.0);
+    o.to_ = p.getScalar("to");
+    o.spacing_ = p.getScalar("spacing", Bounds::positive());
+    if (!(o.to_ >= o.from_)) p.fail("to", "key 'to': below 'from'");
+    if ((o.to_ - o.from_) / o.spacing_ > 1e5)
+      p.fail("spacing", "key 'spacing': more than 100 000 points from 'from' to 'to'");
+    o.profileInterval_ = p.getScalar("interval", Bounds::nonNegative());
+    o.profileSeismic_ = p.getScalarOr("seismicInterval", 0.0, Bounds::nonNegative());
+  }
+  if (o.stations_.empty() && !o.profiles_)
+    throw InputError(d.location(), "faultOutput: give 'stations', 'profiles' or both");
+  return out;
+}
+
+FaultSeries::Station FaultSeries::locate(double s, const std::string& what,
+                                         const SourceLocation& where,
+                                         const std::vector<ControlNode>& nodes) const {
+  const double s0 = nodes[static_cast<std::size_t>(onFracture_.front())].arclength;
+  const double s1 = nodes[static_cast<std::size_t>(onFracture_.back())].arclength;
+  const double tol = 1e-9 * std::max(1.0, std::abs(s1 - s0));
+  if (!(s >= s0 - tol && s <= s1 + tol))
+    throw InputError(where, what + " at arclength " + formatNumber(s) + " m: not on fracture '" +
+                                fracture_ + "', whose arclength runs from " + formatNumber(s0) +
+                                " to " + formatNumber(s1) + " m");
+  Station st;
+  st.s = s;
+  st.where = where;
+  std::size_t j = 1;
+  while (j + 1 < onFracture_.size() &&
+         nodes[static_cast<std::size_t>(onFracture_[j])].arclength < s)
+    ++j;
+  if (onFracture_.size() == 1) j = 0;
+  st.i0 = onFracture_[j == 0 ? 0 : j - 1];
+  st.i1 = onFracture_[j];
+  const double a = nodes[static_cast<std::size_t>(st.i0)].arclength,
+               b = nodes[static_cast<std::size_t>(st.i1)].arclength;
+  st.w = b > a ? std::clamp((s - a) / (b - a), 0.0, 1.0) : 0.0;
+  return st;
+}
+
+void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
+                       const std::vector<std::string>& fractureNames,
+                       const std::vector<RateState>& laws) {
+  if (dim != 2)
+    throw InputError(fractureAt_,
+                     "faultOutput: fault stations and profiles are written for 2D cases only (a "
+                     "fault surface has no arclength; 3D: not yet)");
+  const auto it = std::find(fractureNames.begin(), fractureNames.end(), fracture_);
+  if (it == fractureNames.end())
+    throw InputError(fractureAt_, "faultOutput: '" + fracture_ + "' is not a fracture" +
+                                      suggestionText(fracture_, fractureNames) +
+                                      " (fractures: " + joinWords(fractureNames) + ")");
+  const int f = static_cast<int>(it - fractureNames.begin());
+  k_ = k;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (nodes[i].fracture == f) onFracture_.push_back(static_cast<Eigen::Index>(i));
+  if (onFracture_.empty())
+    throw InputError(fractureAt_, "faultOutput: fracture '" + fracture_ + "' has no node");
+  std::stable_sort(onFracture_.begin(), onFracture_.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return nodes[static_cast<std::size_t>(a)].arclength <
+           nodes[static_cast<std::size_t>(b)].arclength;
+  });
+  const std::size_t n = nodes.size();
+  sign_.assign(n, 1.0);
+  L_.assign(n, 0.0), V0_.assign(n, 1.0), f0_.assign(n, 0.0), b_.assign(n, 1.0);
+  for (const Eigen::Index i : onFracture_) {
+    const auto u = static_cast<std::size_t>(i);
+    const RateState& law = laws[u];
+    if (!(law.L > 0))
+      throw InputError(fractureAt_, "faultOutput: fracture '" + fracture_ +
+                                        "' has no rate-and-state law (its state column needs "
+                                        "law rateState)");
+    L_[u] = law.L, V0_[u] = law.V0, f0_[u] = law.f0, b_[u] = law.b;
+    if (positiveGiven_) {
+      const double d = positive_.dot(nodes[u].tangent[0]);
+      if (std::abs(d) < 1e-6)
+        throw InputError(fractureAt_, "faultOutput: positiveSlip is normal to fracture '" +
+                                          fracture_ +
+                                          "' at s = " + formatNumber(nodes[u].arclength) +
+                                          " m: it gives the slip no sign there");
+      sign_[u] = d > 0 ? 1.0 : -1.0;
+    }
+  }
+  for (Station& st : stations_) {
+    const std::string name = st.name;
+    st = locate(st.s, "station '" + name + "'", st.where, nodes);
+    st.name = name;
+  }
+  if (profiles_) {
+    const long m = static_cast<long>(std::floor((to_ - from_) / spacing_ * (1 + 1e-12))) + 1;
+    for (long j = 0; j < m; ++j)
+      points_.push_back(locate(from_ + static_cast<double>(j) * spacing_,
+                               "faultOutput/profiles: the point", profilesAt_, nodes));
+  }
+}
+
+std::string FaultSeries::header(const Station& st) const {
+  std::ostringstream h;
+  h << "# libfriction, frictionSolver: fault station '" << st.name << "' on fracture '" << fracture_
+    << "' at arclength " << formatNumber(st.s) << " m\n"
+    << "# slip and shear stress count positive along "
+    << (positiveGiven_ ? "positiveSlip (" + formatNumber(positive_.x()) + " " +
+                             formatNumber(positive_.y()) + ")"
+                       : std::string("the fracture's tangent t_Gamma"))
+    << " (the motion of the side Omega+ relative to Omega-)\n"
+    << "# Column #1 = Time (s)\n"
+    << "# Column #2 = Slip (m)\n"
+    << "# Column #3 = Slip rate (log10 m/s)\n"
+    << "# Column #4 = Shear stress (MPa)\n"
+    << "# Column #5 = Normal stress (MPa), effective, positive in compression\n"
+    << "# Column #6 = State (log10 s), theta = (L/V0) exp((psi - f0)/b)\n"
+    << "t slip slip_rate shear_stress normal_stress state\n";
+  return h.str();
+}
+
+void FaultSeries::open(const std::string& caseDir, bool fresh, double restartTime) {
+  const fs::path folder = fs::path(caseDir) / "postProcessing" / "faultOutput";
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec || !fs::is_directory(folder))
+    throw OutputError(folder.string(),
+                      "cannot create the folder" +
+                          (ec ? " (" + ec.message() + ")" : std::string(": a file has its name")));
+  removeTemporaryFiles(folder.string());
+  if (fresh) lastStation_ = lastProfile_ = -1, haveStationRow_ = haveProfileRow_ = false;
+  stationFiles_.clear();
+  for (const Station& st : stations_) {
+    const std::string path = (folder / (st.name + ".dat")).string();
+    const std::string kept = fresh ? "" : keptLines(path, restartTime);
+    writeTextAtomic(path, kept.empty() ? header(st) : kept);
+    stationFiles_.push_back(std::make_unique<AppendFile>(path, false));
+  }
+  stationRows_.assign(stations_.size(), "");
+  if (profiles_) {
+    std::string head = "# libfriction, frictionSolver: profiles along fracture '" + fracture_ +
+                       "'; first row: 0 0 and the points' arclengths [m]; then per row the time "
+                       "[s], log10 of the largest slip rate [m/s] and the values at the points\n";
+    std::string coordinates = "0 0";
+    for (const Station& p : points_) appendValue(coordinates, p.s);
+    coordinates += "\n";
+    const std::pair<const char*, std::unique_ptr<AppendFile>*> files[] = {
+        {"slip", &slipFile_}, {"shearstress", &shearFile_}, {"normalstress", &normalFile_}};
+    const char* what[] = {"# slip [m], positive as in the stations\n",
+                          "# shear stress [MPa], positive as the slip\n",
+                          "# normal stress [MPa], effective, positive in compression\n"};
+    int j = 0;
+    for (const auto& [name, file] : files) {
+      const std::string path = (folder / (std::string(name) + ".dat")).string();
+      const std::string kept = fresh ? "" : keptLines(path, restartTime);
+      writeTextAtomic(path, kept.empty() ? head + what[j] + coordinates : kept);
+      *file = std::make_unique<AppendFile>(path, false);
+      ++j;
+    }
+  }
+}
+
+void FaultSeries::sample(const RateSample& s) {
+  const Eigen::VectorXd &slip = *s.slip, &psi = *s.psi, &rate = *s.rate;
+  const auto speed = [&](Eigen::Index i) { return rate.segment(k_ * i, k_).norm(); };
+  double maxV = 0;
+  for (const Eigen::Index i : onFracture_) maxV = std::max(maxV, speed(i));
+  const bool seismic = maxV >= seismicRate_;
+  const auto due = [&](bool have, double last, double interval) {
+    return !have || (s.time > last && s.time - last >= interval);
+  };
+  const bool stationRow = !stations_.empty() && due(haveStationRow_, lastStation_,
+                                                    seismic ? stationSeismic_ : stationInterval_);
+  const bool profileRow =
+      profiles_ && due(haveProfileRow_, lastProfile_, seismic ? profileSeismic_ : profileInterval_);
+  if (!stationRow && !profileRow) return;
+
+  // The values at a node, with the slip's sign: slip, |V|, φ = −τ along the slip, σ̄, log10 θ.
+  Eigen::VectorXd tau(k_);
+  struct Values {
+    double slip, speed, shear, normal, logTheta;
+  };
+  const auto at = [&](Eigen::Index i) {
+    const auto u = static_cast<std::size_t>(i);
+    double sigmaEff = 0;
+    s.traction(i, tau, sigmaEff);
+    Values v;
+    v.slip = sign_[u] * slip[k_ * i];
+    v.speed = speed(i);
+    v.shear = -sign_[u] * tau[0] / 1e6;
+    v.normal = -sigmaEff / 1e6;
+    v.logTheta = std::log10(L_[u] / V0_[u]) + (psi[i] - f0_[u]) / (b_[u] * std::log(10.0));
+    return v;
+  };
+  const auto interpolate = [&](const Station& st) {
+    const Values a = at(st.i0), b = st.i1 == st.i0 ? a : at(st.i1);
+    const double w = st.w;
+    return Values{(1 - w) * a.slip + w * b.slip, (1 - w) * a.speed + w * b.speed,
+                  (1 - w) * a.shear + w * b.shear, (1 - w) * a.normal + w * b.normal,
+                  (1 - w) * a.logTheta + w * b.logTheta};
+  };
+  // log10 of a rate: a node at rest (V = 0 exactly, a held one) reads as the smallest double.
+  const auto logRate = [](double v) { return std::log10(std::max(v, 1e-300)); };
+  if (stationRow) {
+    for (std::size_t j = 0; j < stations_.size(); ++j) {
+      const Values v = interpolate(stations_[j]);
+      std::string& row = stationRows_[j];
+      appendTime(row, s.time);
+      appendValue(row, v.slip);
+      appendValue(row, logRate(v.speed));
+      appendValue(row, v.shear);
+      appendValue(row, v.normal);
+      appendValue(row, v.logTheta);
+      row += "\n";
+    }
+    lastStation_ = s.time;
+    haveStationRow_ = true;
+  }
+  if (profileRow) {
+    std::string slipRow, shearRow, normalRow;
+    for (std::string* row : {&slipRow, &shearRow, &normalRow}) {
+      appendTime(*row, s.time);
+      appendValue(*row, logRate(maxV));
+    }
+    for (const Station& p : points_) {
+      const Values v = interpolate(p);
+      appendValue(slipRow, v.slip);
+      appendValue(shearRow, v.shear);
+      appendValue(normalRow, v.normal);
+    }
+    slipRows_ += slipRow + "\n";
+    shearRows_ += shearRow + "\n";
+    normalRows_ += normalRow + "\n";
+    lastProfile_ = s.time;
+    haveProfileRow_ = true;
+  }
+}
+
+void FaultSeries::flush() {
+  for (std::size_t j = 0; j < stationFiles_.size(); ++j) {
+    if (!stationRows_[j].empty()) stationFiles_[j]->append(stationRows_[j]);
+    stationRows_[j].clear();
+  }
+  if (slipFile_ && !slipRows_.empty()) {
+    slipFile_->append(slipRows_);
+    shearFile_->append(shearRows_);
+    normalFile_->append(normalRows_);
+  }
+  slipRows_.clear(), shearRows_.clear(), normalRows_.clear();
+}
+
+void FaultSeries::sync() {
+  for (const auto& f : stationFiles_) f->sync();
+  for (const auto* f : {&slipFile_, &shearFile_, &normalFile_})
+    if (*f) (*f)->sync();
+}
+
+void FaultSeries::writeState(DictionaryWriter& out) const {
+  out.entry("lastStationRow", haveStationRow_ ? lastStation_ : -1.0);
+  out.entry("lastProfileRow", haveProfileRow_ ? lastProfile_ : -1.0);
+}
+
+void FaultSeries::readState(const Dictionary& in) {
+  lastStation_ = in.getScalar("lastStationRow");
+  lastProfile_ = in.getScalar("lastProfileRow");
+  haveStationRow_ = lastStation_ >= 0;
+  haveProfileRow_ = lastProfile_ >= 0;
+}
+
+}  // namespace friction

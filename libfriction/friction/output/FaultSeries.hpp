@@ -1,0 +1,115 @@
+// FaultSeries: the time series of a quasi-dynamic run on one fracture, in the layout of the
+// SEAS benchmarks (Erickson et al. 2023, BP3-QD; README.md, "SEAS outputs"), sampled at the
+// Runge–Kutta steps of the integration (TimeIntegrator.hpp, RateSample), not only at the times
+// of the case's grid:
+//
+//   faultOutput                                     // system/controlDict
+//   {
+//       fracture        fault;
+//       positiveSlip    (-0.5 0.8660254);   // the direction of Ω⁺ relative to Ω⁻ counted as
+//                                           // positive slip (default: t_Γ)
+//       seismicSlipRate 1e-3;               // max |V| from which the fault is seismic [m/s]
+//       stations        { fltst_dp000 0; fltst_dp075 7500; }   // name, arclength s [m]
+//       stationInterval 0;  stationSeismicInterval 0;   // least time between rows [s]
+//       profiles        { from 0; to 40000; spacing 500; interval 1.5768e8; seismicInterval 1; }
+//   }
+//
+// Stations: postProcessing/faultOutput/<name>.dat, columns t slip slip_rate shear_stress
+// normal_stress state: the slip [m] along positiveSlip, log10 of the slip rate |V| [m/s], the
+// driving shear φ = −τ [MPa] with the slip's sign, the effective compression σ̄ = −(σ_n + p)
+// [MPa], log10 of the aging-law state θ = (L/V₀) e^((ψ − f₀)/b) [s]; each linear between the
+// fracture's two nodes around s. Profiles: slip.dat, shearstress.dat, normalstress.dat with the
+// first row "0 0 s_1 … s_m" and then per row "t log10(max|V|) value_1 … value_m". A row is
+// written at an accepted step at least interval (seismic: seismicInterval) after the file's
+// last one; seismic when the largest |V| on the fracture reaches seismicSlipRate.
+//
+// The rows of a step are appended when the step ends (flush), with the case's other histories;
+// a restart keeps the rows up to its time and the times of the last rows (uniform/
+// frictionState), so the files go on as in an uninterrupted run. 2D only for now.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "friction/core/InputError.hpp"
+
+namespace friction {
+
+class AppendFile;
+class Dictionary;
+class DictionaryWriter;
+struct ControlNode;
+struct RateState;
+
+/// One accepted step of a quasi-dynamic integration, as the outputs sample it.
+struct RateSample {
+  double time = 0;
+  const Eigen::VectorXd* slip = nullptr;  ///< k·n [m]
+  const Eigen::VectorXd* psi = nullptr;   ///< n
+  const Eigen::VectorXd* rate = nullptr;  ///< k·n [m/s]
+  /// The tractions at control node i: τ (k components) [Pa] and the effective normal stress
+  /// σ_n + p [Pa] (negative in compression). Costs one row of S per call.
+  std::function<void(Eigen::Index i, Eigen::VectorXd& tau, double& sigmaEffective)> traction;
+};
+
+class FaultSeries {
+ public:
+  /// From system/controlDict's 'faultOutput' (nullptr without it).
+  static std::unique_ptr<FaultSeries> read(const Dictionary& controlDict);
+  ~FaultSeries();
+
+  /// Resolves the fracture, stations and profile points on the case's control nodes (their
+  /// per-node laws for θ). InputError naming the key where one does not lie on the fracture.
+  void bind(const std::vector<ControlNode>& nodes, int dim, int k,
+            const std::vector<std::string>& fractureNames, const std::vector<RateState>& laws);
+  /// Opens the files in caseDir/postProcessing/faultOutput: fresh ones with their headers, or
+  /// (restart) those kept up to `restartTime`. Rank 0 only.
+  void open(const std::string& caseDir, bool fresh, double restartTime);
+  /// Adds the rows this accepted step calls for (buffered until flush()).
+  void sample(const RateSample& s);
+  /// Appends the buffered rows to the files (OutputError: disk full, ...).
+  void flush();
+  void sync();
+  void writeState(DictionaryWriter& out) const;
+  void readState(const Dictionary& in);
+
+ private:
+  struct Station {
+    std::string name;
+    double s = 0;
+    SourceLocation where;
+    Eigen::Index i0 = 0, i1 = 0;  ///< control nodes around s
+    double w = 0;                 ///< weight of i1
+  };
+  std::string fracture_;
+  SourceLocation fractureAt_, profilesAt_;
+  Eigen::Vector3d positive_ = Eigen::Vector3d::Zero();  ///< zero: t_Γ
+  bool positiveGiven_ = false;
+  double seismicRate_ = 1e-3, stationInterval_ = 0, stationSeismic_ = 0;
+  std::vector<Station> stations_;
+  bool profiles_ = false;
+  double from_ = 0, to_ = 0, spacing_ = 0, profileInterval_ = 0, profileSeismic_ = 0;
+  std::vector<Station> points_;  ///< the profiles' points (name unused)
+
+  // Bound to the case:
+  int k_ = 1;
+  std::vector<Eigen::Index> onFracture_;  ///< control nodes of the fracture
+  std::vector<double> sign_;              ///< per control node: +1 where t₁ is positiveSlip's way
+  std::vector<double> L_, V0_, f0_, b_;   ///< per control node, for θ
+  double lastStation_ = -1, lastProfile_ = -1;  ///< times of the last rows (< 0: none yet)
+  bool haveStationRow_ = false, haveProfileRow_ = false;
+  std::vector<std::string> stationRows_;
+  std::string slipRows_, shearRows_, normalRows_;
+  std::vector<std::unique_ptr<AppendFile>> stationFiles_;
+  std::unique_ptr<AppendFile> slipFile_, shearFile_, normalFile_;
+
+  Station locate(double s, const std::string& what, const SourceLocation& where,
+                 const std::vector<ControlNode>& nodes) const;
+  std::string header(const Station& st) const;
+};
+
+}  // namespace friction
