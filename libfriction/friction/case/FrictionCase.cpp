@@ -1919,6 +1919,10 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       break;
     }
   }
+  // What the integration cost, where the integrator counts it (quasiDynamic: steps and
+  // right-hand sides, the time on the fault alone).
+  if (const std::string work = timeIntegrator_->summary(); !work.empty())
+    log << "\nTime integration: " << work << "\n";
   return results;
 }
 

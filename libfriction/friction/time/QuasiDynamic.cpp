@@ -1,7 +1,9 @@
 // QuasiDynamic: rate-and-state faults integrated on the fault alone (QuasiDynamic.hpp).
 #include "friction/time/QuasiDynamic.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -136,8 +138,8 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     smp.traction = [&](Eigen::Index i, Eigen::VectorXd& tau, double& sigmaEff) {
       tau.resize(k);
       for (int c = 0; c < k; ++c) {
-        const Eigen::Index r = k * i + c;
-        tau[c] = tauA[r] + theta * (tauB[r] - tauA[r]) + S.Stt.row(r).dot(ds);
+        const Eigen::Index row = k * i + c;
+        tau[c] = tauA[row] + theta * (tauB[row] - tauA[row]) + S.Stt.row(row).dot(ds);
       }
       sigmaEff = sigmaA[i] + theta * (sigmaB[i] - sigmaA[i]) + S.Snt.row(i).dot(ds) +
                  loadsA.pressure[i] + theta * (loadsB.pressure[i] - loadsA.pressure[i]);
@@ -160,7 +162,10 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     }
     return true;
   };
+  const auto clock0 = std::chrono::steady_clock::now();
   const IntegrationReport report = rk.integrate(tA, tB, y, observer);
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();
+  faultUnknowns_ = kn;
   accepted_ += report.work.acceptedSteps;
   rejected_ += report.work.rejectedSteps;
   evaluations_ += report.work.evaluations;
@@ -189,6 +194,17 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
   r.peakSlipRate = std::max(peak, vmax);
   host.finishRateStep(loadsB, tB, y.head(kn), V, r);
   if (!report.ok()) r.report.status = OptimizerStatus::diverged;
+}
+
+std::string QuasiDynamic::summary() const {
+  std::ostringstream s;
+  s << accepted_ << " Runge-Kutta steps accepted, " << rejected_ << " rejected, " << evaluations_
+    << " right-hand sides in " << std::setprecision(4) << seconds_ << " s";
+  if (evaluations_ > 0)
+    s << " (" << 1e6 * seconds_ / static_cast<double>(evaluations_)
+      << " us each, fault outputs included; S_tt " << faultUnknowns_ << " x " << faultUnknowns_
+      << ")";
+  return s.str();
 }
 
 void QuasiDynamic::writeState(DictionaryWriter& out) const { out.entry("nextStep", nextStep_); }

@@ -40,12 +40,15 @@ class QuasiDynamic : public TimeIntegrator {
   void writeState(DictionaryWriter& out) const override;
   void readState(const Dictionary& in) override;
   bool takesRateState() const override { return true; }
+  std::string summary() const override;
 
  private:
   double relTol_ = 1e-8, absSlip_ = 1e-9, absState_ = 1e-9, maxStep_ = 0;
   RungeKuttaScheme scheme_ = RungeKuttaScheme::dormandPrince54;
   double nextStep_ = 0;  ///< the step size the last interval proposed [s] (0: choose)
-  long accepted_ = 0, rejected_ = 0, evaluations_ = 0;  ///< over the run, for the log
+  long accepted_ = 0, rejected_ = 0, evaluations_ = 0;  ///< over this run, for the log
+  double seconds_ = 0;      ///< wall time in the Runge-Kutta integrations (fault-only work) [s]
+  long faultUnknowns_ = 0;  ///< k·n, the size of S_tt
 };
 
 }  // namespace friction

@@ -138,6 +138,8 @@ class TimeIntegrator {
   virtual bool takesRateState() const { return false; }
   /// For the log's settings line ("" when there is nothing to add to the name).
   virtual std::string describe() const { return ""; }
+  /// What the run's integration cost, for the log's last lines ("" when nothing to add).
+  virtual std::string summary() const { return ""; }
 };
 
 /// The quasi-static stepping: one control problem per time of the grid.
