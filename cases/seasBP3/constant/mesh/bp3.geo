@@ -8,7 +8,7 @@
 //
 //   physical curves   "top", "bottom", "left", "right", "fault" (0 <= x_d <= Wf),
 //                     "creep" (x_d >= Wf)
-//   physical surface  "rock"
+//   physical surface  "rock" (or, with bimaterial = 1, "hangingWall" and "footWall")
 //
 // Mesh size: h on the fault's first Wf (Round(Wf/h) equal segments), growing with the distance
 // d from it as h + grading * d, at most hFar.
@@ -71,4 +71,12 @@ Physical Curve("bottom", 3) = {4, 5};
 Physical Curve("left", 4) = {6};
 Physical Curve("fault", 5) = {7};
 Physical Curve("creep", 6) = {8};
-Physical Surface("rock", 1) = {1, 2};
+// With -setnumber bimaterial 1 the two sides are regions of their own ("hangingWall",
+// "footWall"; constant/mechanicalProperties' regions), e.g. for rocks of contrasting stiffness.
+DefineConstant[ bimaterial = {0, Name "Parameters/8Two regions, one per side of the fault"} ];
+If (bimaterial)
+  Physical Surface("hangingWall", 1) = {1};
+  Physical Surface("footWall", 2) = {2};
+Else
+  Physical Surface("rock", 1) = {1, 2};
+EndIf
