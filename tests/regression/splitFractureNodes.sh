@@ -324,6 +324,31 @@ GEO
   # The work folders hold 2D results that are compared across builds: leave none here.
   rm -rf "$work"/*
   ;;
+faultNetwork3d)
+  # Three fault surfaces meeting along curves (tests/regression/cases/faultNetworkBox, gmsh
+  # boolean fragments): 'crossing' passes through 'main', 'abutting' ends on it. Every node of
+  # an intersection curve has one copy per sector; the summary lists the curves; frictionSolver
+  # (P1) holds the abutting fault's nodes on the curve (state junction) and lets the others slip.
+  cp -r "$src/tests/regression/cases/faultNetworkBox" "$work/"; c=$work/faultNetworkBox
+  "$c/Allclean" >/dev/null
+  run -case "$c"
+  ((rc == 0)) || fail "exit code $rc"
+  expect "$out" "Intersections: 2"
+  expect "$out" "    abutting: 'abutting' ends on 'main'; length 0.6, 5 nodes, from (0.75 0.2 0.5) to (0.75 0.8 0.5)"
+  expect "$out" "    crossing: 'main' and 'crossing'; length 0.6, 5 nodes, from (0.45 0.2 0.5) to (0.45 0.8 0.5)"
+  expect "$out" "meeting:      6 nodes passing through, 0 ending on another fault (held)"
+  expect "$out" "meeting:      0 nodes passing through, 3 ending on another fault (held)"
+  # Copies: 4 at the three inner nodes of the crossing curve, 3 at those of the abutting one.
+  expect "$out" "points:     466 (+60)"
+  solve -case "$c"
+  ((rc == 0)) || fail "frictionSolver: exit code $rc"
+  held=$(grep -c ' junction$' "$c/1/fractures/abutting.dat")
+  ((held == 3)) || fail "abutting.dat: $held nodes in state junction (3 expected)"
+  for f in main crossing; do
+    slipping=$(grep -c ' slip$' "$c/1/fractures/$f.dat")
+    ((slipping > 0)) || fail "$f.dat: no node slips"
+  done
+  ;;
 *) fail "unknown scenario" ;;
 esac
 echo "PASS [$scenario]"

@@ -84,6 +84,53 @@ void printChecks(std::ostream& out, const Mesh& mesh, const MeshSettings& settin
   out << "\n\n";
 }
 
+// 3D: the curves where fault surfaces meet (as 2D's junctions), with their kind, length and
+// nodes, and the nodes where surfaces touch without sharing an edge.
+void printIntersections(std::ostream& out, const Mesh& mesh, const SplitMesh& split) {
+  const std::vector<IntersectionCurve> curves = intersectionCurves(split, mesh);
+  std::map<Index, int> fracturesAt;
+  for (const FractureGeometry& g : split.fractures)
+    for (Index v : g.node) ++fracturesAt[v];
+  std::set<Index> onCurves;
+  for (const IntersectionCurve& c : curves) onCurves.insert(c.nodes.begin(), c.nodes.end());
+  std::vector<Index> points;
+  for (const auto& [v, count] : fracturesAt)
+    if (count > 1 && !onCurves.count(v)) points.push_back(v);
+  if (curves.empty() && points.empty()) return;
+  const auto names = [&](const std::vector<std::size_t>& list) {
+    std::string text;
+    for (std::size_t k = 0; k < list.size(); ++k)
+      text += (k == 0                 ? ""
+               : k + 1 == list.size() ? " and "
+                                      : ", ") +
+              ("'" + split.fractures[list[k]].name + "'");
+    return text;
+  };
+  out << "Intersections: " << curves.size() << "\n";
+  for (const IntersectionCurve& c : curves) {
+    std::vector<std::size_t> all = c.passing;
+    all.insert(all.end(), c.ending.begin(), c.ending.end());
+    std::sort(all.begin(), all.end());
+    out << "    " << c.kind() << ": ";
+    if (c.passing.size() == 1 && !c.onOuterBoundary)
+      out << names(c.ending) << " " << (c.ending.size() == 1 ? "ends" : "end") << " on "
+          << names(c.passing);
+    else
+      out << names(all);
+    out << "; length " << c.length << ", " << c.nodes.size() << " nodes, ";
+    if (c.ends.empty())
+      out << "closed";
+    else
+      out << "from " << formatPoint(mesh.points[c.ends.front()], 3) << " to "
+          << formatPoint(mesh.points[c.ends.back()], 3);
+    out << "\n";
+  }
+  if (!points.empty())
+    out << "    touching at a point only: " << points.size() << " nodes, e.g. "
+        << formatPoint(mesh.points[points.front()], 3) << "\n";
+  out << "\n";
+}
+
 // 3D, after the split: per fault surface its area, tip-line length and nodes; the split mesh.
 void printFractures3D(std::ostream& out, const Mesh& mesh, const SplitMesh& split) {
   for (const FractureGeometry& g : split.fractures) {
@@ -97,13 +144,21 @@ void printFractures3D(std::ostream& out, const Mesh& mesh, const SplitMesh& spli
         << " (length of its edge inside the body)\n"
         << "    nodes:        " << g.numNodes() << " (duplicated " << g.numDuplicated()
         << ": interior " << g.numOfKind(FractureNodeKind::interior) << ", boundary "
-        << g.numOfKind(FractureNodeKind::boundary) << "; tips " << g.numTips() << ")\n"
-        << "    glued:        " << g.numGluedTriangles()
+        << g.numOfKind(FractureNodeKind::boundary) << "; tips " << g.numTips() << ")\n";
+    const Index crossing = g.numOfKind(FractureNodeKind::crossing),
+                abutting = g.numOfKind(FractureNodeKind::abutting),
+                joined = g.numOfKind(FractureNodeKind::joined);
+    if (crossing + abutting + joined > 0)
+      out << "    meeting:      " << crossing << " nodes passing through, " << abutting
+          << " ending on another fault (held), " << joined
+          << " ending together with another (joined)\n";
+    out << "    glued:        " << g.numGluedTriangles()
         << " triangles with all three vertices on the tip line (no jump there)\n"
         << "    normal:       " << formatPoint(mean.normalized(), 3)
         << " area-weighted mean (from Omega+ to Omega-)\n\n";
   }
 
+  printIntersections(out, mesh, split);
   const SplitMesh& s = split;
   out << "Split mesh\n"
       << "    points:     " << s.mesh.numPoints() << " (+" << s.mesh.numPoints() - mesh.numPoints()

@@ -306,6 +306,42 @@ std::map<Index, std::map<Index, double>> FractureSystem::junctionLifting(
 }
 
 void FractureSystem::controlNodes3D(int degree) {
+  // Where fault surfaces meet (a node of several fractures): the rules of 2D junctions per
+  // intersection node (a fracture passing through keeps a free control node whose jump moves
+  // the sectors on its ⁺ side against those on its ⁻ side; one ending on another is held at
+  // zero). Not yet solved: surfaces ending together (joined) and P2 (the mid-edge nodes of
+  // the intersection curves would be junctions too).
+  std::map<Index, std::vector<std::pair<int, Index>>> fracturesAt;  // node -> (fracture, its node)
+  for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f)
+    for (Index i = 0; i < split_.fractures[f].numNodes(); ++i)
+      fracturesAt[split_.fractures[f].node[i]].push_back({f, i});
+  for (auto it = fracturesAt.begin(); it != fracturesAt.end();)
+    it = it->second.size() > 1 ? std::next(it) : fracturesAt.erase(it);
+  for (const auto& [node, list] : fracturesAt) {
+    std::string names;
+    for (std::size_t k = 0; k < list.size(); ++k)
+      names += (k == 0                 ? "'"
+                : k + 1 == list.size() ? " and '"
+                                       : ", '") +
+               split_.fractures[list[k].first].name + "'";
+    const std::string where = "fault surfaces " + names + " meet at " +
+                              formatPoint(split_.mesh.points[node], 3) + " (constant/splitMesh)";
+    if (degree == 2)
+      throw InputError(split_.mesh.source,
+                       where +
+                           ": intersections of fault surfaces are solved in P1 only so far "
+                           "(in P2 the mid-edge nodes on the intersection curves would be "
+                           "junctions as well); use order 1");
+    for (const auto& [f, i] : list)
+      if (split_.fractures[f].kind[i] == FractureNodeKind::joined)
+        throw InputError(split_.mesh.source,
+                         where +
+                             ": they end together there (joined), which the 3D solver does "
+                             "not take yet (it solves crossing faults and faults ending on "
+                             "another); give the two one label, so that they are one bent "
+                             "surface");
+  }
+  std::vector<std::vector<Index>> controlOf(split_.fractures.size());
   for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f) {
     const FractureGeometry& g = split_.fractures[f];
     std::vector<Index> local(static_cast<std::size_t>(split_.numOriginalPoints()), -1);
@@ -314,7 +350,9 @@ void FractureSystem::controlNodes3D(int degree) {
       ControlNode v = vertexNode(f, g, i);
       v.normal = g.normal[i];
       v.tangent = tangentBasis(v.normal);
-      v.tip = g.kind[i] == FractureNodeKind::tip;
+      v.junction = g.kind[i] == FractureNodeKind::abutting;
+      v.tip = g.kind[i] == FractureNodeKind::tip || v.junction;
+      controlOf[f].push_back(static_cast<Index>(nodes_.size()));
       nodes_.push_back(v);
     }
     if (degree != 2) continue;
@@ -365,12 +403,81 @@ void FractureSystem::controlNodes3D(int degree) {
   // Lumped mass of Γ from the ⁺-side triangles (the ⁺ copies keep the unsplit numbers):
   // 1/3 of the area per vertex (P1); A/12 per vertex and A/4 per mid-edge node (P2,
   // P1-iso-P2 nodal quadrature: positive, so M⁻¹ exists and the law holds node by node).
-  std::vector<Index> facets;
-  for (const FractureGeometry& g : split_.fractures)
-    for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
-  const Eigen::VectorXd w = splitAssembler_->lumpedFacetMass(facets);
   weights_.resize(size());
-  for (Index k = 0; k < size(); ++k) weights_[k] = w[nodes_[k].plus];
+  if (fracturesAt.empty()) {
+    std::vector<Index> facets;
+    for (const FractureGeometry& g : split_.fractures)
+      for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
+    const Eigen::VectorXd w = splitAssembler_->lumpedFacetMass(facets);
+    for (Index k = 0; k < size(); ++k) weights_[k] = w[nodes_[k].plus];
+    return;
+  }
+  // Fault surfaces meet (P1): each fracture's weights from its own triangles, at the unsplit
+  // node numbers (the triangles' vertices; a ⁺ copy there may be another sector's number).
+  for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
+    const FractureGeometry& g = split_.fractures[f];
+    std::vector<Index> facets;
+    for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
+    const Eigen::VectorXd w = splitAssembler_->lumpedFacetMass(facets);
+    for (Index i = 0; i < g.numNodes(); ++i) weights_[controlOf[f][i]] = w[g.node[i]];
+  }
+
+  // Each fault triangle through an intersection node separates two of its sectors: the copies
+  // of the node in the tetrahedra on the triangle's Ω⁺ and Ω⁻ sides. The jumps of the
+  // fractures' control nodes there (none where held) give the sectors' displacements.
+  const auto topology = unsplitMesh_.topology();
+  atJunction_.assign(static_cast<std::size_t>(size()), 0);
+  std::map<Index, std::vector<JunctionBranch>> branchesAt;
+  for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
+    const FractureGeometry& g = split_.fractures[f];
+    std::map<Index, Index> local;
+    for (Index i = 0; i < g.numNodes(); ++i)
+      if (fracturesAt.count(g.node[i])) local[g.node[i]] = i;
+    for (const auto& t : g.triangles) {
+      const Point& a = unsplitMesh_.points[t[0]];
+      const Point normal = (unsplitMesh_.points[t[1]] - a).cross(unsplitMesh_.points[t[2]] - a);
+      const Index side = topology->findFacet({t[0], t[1], t[2]});
+      for (Index v : t) {
+        const auto at = local.find(v);
+        if (at == local.end()) continue;
+        const Index k = controlOf[f][at->second];
+        atJunction_[k] = 1;
+        JunctionBranch b{-1, -1, nodes_[k].tip ? Index(-1) : k, 1.0};
+        for (int c = 0; side >= 0 && c < topology->numCellsOf(side); ++c) {
+          const Index cell = topology->cellOf(side, c).cell;
+          const auto unsplit = unsplitMesh_.cell(cell);
+          const auto splitCell = split_.mesh.cell(cell);
+          Index copy = -1;
+          bool plus = false;
+          for (int l = 0; l < 4; ++l) {
+            if (unsplit[l] == v) copy = splitCell[l];
+            if (unsplit[l] != t[0] && unsplit[l] != t[1] && unsplit[l] != t[2])
+              plus = (unsplitMesh_.points[unsplit[l]] - a).dot(normal) < 0;
+          }
+          (plus ? b.plusCopy : b.minusCopy) = copy;
+        }
+        if (b.plusCopy < 0 || b.minusCopy < 0)
+          throw InputError(split_.mesh.source,
+                           "the split mesh's fault '" + g.name + "' at " +
+                               formatPoint(unsplitMesh_.points[v], 3) +
+                               " has a triangle without a tetrahedron on each side; split the "
+                               "mesh again with splitFractureNodes");
+        branchesAt[v].push_back(b);
+      }
+    }
+  }
+  for (const auto& [node, branches] : branchesAt) {
+    const auto lifting = junctionLifting(branches);
+    if (lifting.empty())
+      throw InputError(split_.mesh.source,
+                       "the split mesh's intersection node " +
+                           formatPoint(split_.mesh.points[node], 3) +
+                           " is not consistent (its fractures' jumps do not add up to zero "
+                           "around it); split the mesh again with splitFractureNodes");
+    for (const auto& [copy, terms] : lifting)
+      for (const auto& [k, coefficient] : terms)
+        if (coefficient != 0) junctionLift_.push_back({copy, k, coefficient});
+  }
 }
 
 std::vector<std::vector<Eigen::Index>> FractureSystem::nodeGraph() const {

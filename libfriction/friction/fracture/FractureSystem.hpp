@@ -17,7 +17,9 @@
 // splitter's order (ascending unsplit number), then for P2 the midpoints of its triangles'
 // edges, each edge once, by ascending (smaller, larger) unsplit end numbers. The jump is held at
 // zero at tips (single nodes: the tip line in 3D) and at nodes on Dirichlet patches. Signs and
-// the 3D frame: SignConventions.hpp.
+// the 3D frame: SignConventions.hpp. Where fractures meet (2D junctions, 3D intersection
+// curves in P1) the jumps of the fractures passing through a node move its sectors, and a
+// fracture ending there is held (controlNodes2D, controlNodes3D).
 #pragma once
 
 #include <array>
@@ -57,8 +59,9 @@ struct ControlNode {
   double arclength = 0;  ///< [m] (2D; 0 in 3D)
   double weight = 0;     ///< lumped mass of Γ [m^(d−1)]
   bool tip = false;      ///< single node, or held at a junction (junction): no jump
-  /// 2D: the fracture ends on a junction (FractureNodeKind::abutting): its jump there is held
-  /// at zero, and tip is true too (no jump, no traction recovered).
+  /// The fracture ends on a junction (FractureNodeKind::abutting; 2D, and 3D where fault
+  /// surfaces meet): its jump there is held at zero, and tip is true too (no jump, no traction
+  /// recovered).
   bool junction = false;
   bool onDirichlet = false;  ///< on a Dirichlet patch: jump held at zero
   /// 3D: the tangential component (0 or 1) a roller holds, the slip going on along the other;
@@ -161,7 +164,8 @@ class FractureSystem : public SlipResponse {
   /// Fracture f's node i as a control node: its copies and position (the frame is the caller's).
   ControlNode vertexNode(int f, const FractureGeometry& g, Index i) const;
   void controlNodes2D(int degree);
-  // 2D junctions: the lifting L and recovery E at nodes where several fractures meet.
+  // Junctions (2D) and intersection nodes (3D P1): the lifting L and recovery E at nodes
+  // where several fractures meet.
   struct JunctionBranch {
     Index plusCopy, minusCopy;  ///< the sectors on either side of a fracture edge at the node
     Index node;                 ///< the control node whose jump it carries, −1 if held

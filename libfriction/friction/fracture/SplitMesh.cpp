@@ -634,19 +634,28 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
     if (tris[f].empty()) throw InputError(spec.where, entry(spec) + " has no triangles in " + file);
   }
 
-  // 2. Node -> fracture; two fractures on one node is a junction.
-  std::vector<int> fractureOfNode(static_cast<std::size_t>(nPoints), -1);
+  // 2. Node -> fractures (in the order listed); a node of two or more lies where fault
+  //    surfaces meet (an intersection node, split once into its sectors in step 6).
+  std::vector<int> fractureOfNode(static_cast<std::size_t>(nPoints), -1);  // the first one
+  std::vector<std::vector<int>> fracturesOfNode(static_cast<std::size_t>(nPoints));
   for (std::size_t f = 0; f < specs.size(); ++f)
     for (const auto& t : tris[f])
       for (Index v : t) {
-        if (fractureOfNode[v] >= 0 && fractureOfNode[v] != static_cast<int>(f))
-          throw InputError(file, "fractures '" + specs[fractureOfNode[v]].name + "' and '" +
-                                     specs[f].name + "' meet at " + at(v) +
-                                     ": fault surfaces that meet (junctions) are not supported in "
-                                     "3D (2D meshes support them); mesh them so that they do "
-                                     "not meet");
-        fractureOfNode[v] = static_cast<int>(f);
+        auto& list = fracturesOfNode[v];
+        if (list.empty() || list.back() != static_cast<int>(f)) list.push_back(static_cast<int>(f));
+        if (fractureOfNode[v] < 0) fractureOfNode[v] = static_cast<int>(f);
       }
+
+  // The other fractures at node v than f, quoted: "'a'", "'a' and 'b'", ...
+  auto othersNamed = [&](Index v, std::size_t f) {
+    std::vector<std::string> names;
+    for (int o : fracturesOfNode[v])
+      if (o != static_cast<int>(f)) names.push_back("'" + specs[o].name + "'");
+    std::string text;
+    for (std::size_t k = 0; k < names.size(); ++k)
+      text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+    return text;
+  };
 
   // 3. Each surface: manifold, open, orientable, one piece; oriented (SignConventions.hpp).
   auto cross = [&](const std::array<Index, 3>& t) {
@@ -668,11 +677,11 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
     bool open = false;
     for (const auto& [edge, list] : edgeTris) {
       if (list.size() > 2)
-        throw InputError(file, entry(spec) + " is not a manifold surface: its edge " +
-                                   at(edge.first) + "-" + at(edge.second) + " is an edge of " +
-                                   std::to_string(list.size()) +
-                                   " of its triangles (at most 2 expected; junctions and "
-                                   "branching surfaces are not supported)");
+        throw InputError(
+            file, entry(spec) + " is not a manifold surface: its edge " + at(edge.first) + "-" +
+                      at(edge.second) + " is an edge of " + std::to_string(list.size()) +
+                      " of its triangles (at most 2 expected; a surface that branches needs a "
+                      "label per branch, and surfaces may then meet)");
       open = open || list.size() == 1;
     }
     if (!open)
@@ -740,11 +749,18 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
   // 4. A tetrahedron with all four vertices on one fracture has no vertex off it.
   for (Index t = 0; t < mesh.numCells(); ++t) {
     const auto tet = mesh.cell(t);
-    const int f0 = fractureOfNode[tet[0]];
-    if (f0 < 0) continue;
-    bool all = true;
-    for (int k = 1; k < 4; ++k) all = all && fractureOfNode[tet[k]] == f0;
-    if (all)
+    int f0 = -1;
+    for (int f : fracturesOfNode[tet[0]]) {
+      bool all = true;
+      for (int k = 1; k < 4; ++k)
+        all = all && std::find(fracturesOfNode[tet[k]].begin(), fracturesOfNode[tet[k]].end(), f) !=
+                         fracturesOfNode[tet[k]].end();
+      if (all) {
+        f0 = f;
+        break;
+      }
+    }
+    if (f0 >= 0)
       throw InputError(file, "tetrahedron " + std::to_string(t + 1) + " " + at(tet[0]) + " " +
                                  at(tet[1]) + " " + at(tet[2]) + " " + at(tet[3]) +
                                  " has all four vertices on " + entry(specs[f0]) +
@@ -759,6 +775,70 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
       if (fractureOfNode[v] >= 0) fan[v].push_back(t);
 
   SplitMesh out = unsplitCopy(mesh);
+
+  // Intersection nodes (on two or more fractures) are split once, into one copy per sector:
+  // the groups of tetrahedra around the node once every fault triangle through it is cut. The
+  // first fracture at the node decides which sector keeps the node's number (the Ω⁺ side of
+  // its first triangle through the node); the other sectors' copies are appended in group
+  // order. Each fracture's ⁺ and ⁻ copies there are the sectors on either side of its first
+  // triangle through the node.
+  std::vector<std::vector<Index>> facetOfTriangle(specs.size());
+  for (std::size_t f = 0; f < specs.size(); ++f) facetOfTriangle[f].resize(tris[f].size());
+  for (Index side = 0; side < topo.numFacets(); ++side)
+    if (fractureOfFacet[side] >= 0)
+      facetOfTriangle[fractureOfFacet[side]][triangleOfFacet[side]] = side;
+  // The tetrahedra on the Ω⁺ (first) and Ω⁻ side of fracture f's oriented triangle ti; −1 for
+  // a side that has none (inverted tetrahedra).
+  auto tetsOf = [&](std::size_t f, int ti) {
+    const Index side = facetOfTriangle[f][ti];
+    const auto& tr = tris[f][ti];
+    std::array<Index, 2> pm{-1, -1};
+    for (int c = 0; c < 2; ++c) {
+      const Index t = topo.cellOf(side, c).cell;
+      for (Index x : mesh.cell(t))
+        if (x != tr[0] && x != tr[1] && x != tr[2])
+          pm[(mesh.points[x] - mesh.points[tr[0]]).dot(cross(tr)) < 0 ? 0 : 1] = t;
+    }
+    return pm;
+  };
+  // The nodes where fracture f ends inside the body: on an edge of its own boundary (an edge
+  // of one of its triangles) that is not on the outer boundary. A fracture at an intersection
+  // node passes through it unless it ends there.
+  const std::set<std::pair<Index, Index>> outer = outerBoundaryEdges(topo);
+  std::vector<std::set<Index>> endsAt(specs.size());
+  for (std::size_t f = 0; f < specs.size(); ++f)
+    for (const auto& [edge, list] : edgesOf[f])
+      if (list.size() == 1 && !outer.count(edge)) endsAt[f].insert({edge.first, edge.second});
+  struct Sectors {
+    std::map<Index, std::size_t> groupOf;  ///< tetrahedron -> its sector
+    std::vector<Index> copy;               ///< per sector
+    Index copyOf(Index tet) const {
+      const auto it = groupOf.find(tet);
+      return it == groupOf.end() ? Index(-1) : copy[it->second];
+    }
+  };
+  std::map<Index, Sectors> sectorsAt;
+  auto splitIntersection = [&](Index v, Index keepTet) -> const Sectors& {
+    auto found = sectorsAt.find(v);
+    if (found != sectorsAt.end()) return found->second;
+    Sectors s;
+    for (auto& [root, list] : sidesAround(v, fan[v], topo, fractureOfFacet)) {
+      for (Index t : list) s.groupOf[t] = s.copy.size();
+      s.copy.push_back(-1);
+    }
+    const auto keep = s.groupOf.find(keepTet);
+    if (keep != s.groupOf.end()) s.copy[keep->second] = v;
+    for (std::size_t k = 0; k < s.copy.size(); ++k) {
+      if (s.copy[k] >= 0) continue;
+      s.copy[k] = static_cast<Index>(out.mesh.points.size());
+      out.mesh.points.push_back(mesh.points[v]);
+      out.origin.push_back(v);
+    }
+    for (const auto& [t, k] : s.groupOf)
+      for (Index& x : out.mesh.cell(t))
+        if (x == v) x = s.copy[k];
+    return sectorsAt.emplace(v, std::move(s)).first->second;
+  };
 
   for (std::size_t f = 0; f < specs.size(); ++f) {
     const FractureSpec& spec = specs[f];
@@ -792,8 +872,50 @@ SplitMesh splitSurfaces(const Mesh& mesh, const std::vector<FractureSpec>& specs
     g.plus.resize(n);
     g.minus.resize(n);
     g.kind.resize(n);
+    std::map<Index, std::vector<int>> through;  // intersection node -> f's triangles there
+    for (int ti = 0; ti < static_cast<int>(tri.size()); ++ti)
+      for (Index v : tri[ti])
+        if (fracturesOfNode[v].size() > 1) through[v].push_back(ti);
     for (std::size_t i = 0; i < n; ++i) {
       const Index v = g.node[i];
+      if (fracturesOfNode[v].size() > 1) {
+        // Where fault surfaces meet (README "Intersections (3D)"): f passes through the node
+        // (every fault triangle of it there separates two sectors: its jump is free, kind
+        // crossing, or boundary on the outer boundary), or it ends there: held (abutting)
+        // where another passes, joined where exactly one other ends with it, else abutting.
+        const std::vector<int>& mine = through.at(v);
+        const std::array<Index, 2> ref = tetsOf(f, mine.front());
+        const Sectors& sectors = splitIntersection(v, ref[0]);
+        g.plus[i] = sectors.copyOf(ref[0]);
+        g.minus[i] = sectors.copyOf(ref[1]);
+        if (g.plus[i] < 0 || g.minus[i] < 0)
+          throw InputError(file, entry(spec) + " at " + at(v) +
+                                     ": cannot tell the two sides of the fracture apart (folded "
+                                     "or inverted tetrahedra next to it?)");
+        const bool passes = !endsAt[f].count(v);
+        if (passes)
+          for (int ti : mine) {
+            const std::array<Index, 2> pm = tetsOf(f, ti);
+            if (pm[0] < 0 || pm[1] < 0 || sectors.copyOf(pm[0]) == sectors.copyOf(pm[1]))
+              throw InputError(
+                  file, entry(spec) + " at " + at(v) + ", where it meets " + othersNamed(v, f) +
+                            ": the fault surfaces there do not cut the tetrahedra around the "
+                            "node into sectors on either side of each of its triangles (is the "
+                            "mesh conforming to the surfaces where they meet?)");
+          }
+        bool anotherPasses = false;
+        for (int o : fracturesOfNode[v])
+          anotherPasses = anotherPasses || (o != static_cast<int>(f) && !endsAt[o].count(v));
+        if (g.plus[i] == g.minus[i])
+          g.kind[i] = FractureNodeKind::tip;
+        else if (passes)
+          g.kind[i] = onEdge[i] ? FractureNodeKind::boundary : FractureNodeKind::crossing;
+        else if (!anotherPasses && fracturesOfNode[v].size() == 2)
+          g.kind[i] = FractureNodeKind::joined;
+        else
+          g.kind[i] = FractureNodeKind::abutting;
+        continue;
+      }
       const std::map<int, std::vector<Index>> groups =
           sidesAround(v, fan[v], topo, fractureOfFacet);
 
@@ -881,6 +1003,73 @@ std::string othersAt(const SplitMesh& split, std::size_t f, Index node) {
   for (std::size_t k = 0; k < names.size(); ++k)
     s += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
   return s;
+}
+
+std::string IntersectionCurve::kind() const {
+  if (onOuterBoundary) return "on the outer boundary";
+  if (passing.size() >= 2) return "crossing";
+  if (passing.size() == 1) return "abutting";
+  return "ending together";
+}
+
+std::vector<IntersectionCurve> intersectionCurves(const SplitMesh& split, const Mesh& unsplit) {
+  if (unsplit.dim != 3) return {};
+  // Edge -> per fracture, its triangles at the edge.
+  std::map<std::pair<Index, Index>, std::map<std::size_t, int>> uses;
+  for (std::size_t f = 0; f < split.fractures.size(); ++f)
+    for (const auto& t : split.fractures[f].triangles)
+      for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])][f];
+  const auto topology = unsplit.topology();
+  const std::set<std::pair<Index, Index>> outer = outerBoundaryEdges(*topology);
+  // The edges of two or more fractures, each with its roles; then joined through shared nodes
+  // into curves of equal roles.
+  struct Edge {
+    std::pair<Index, Index> nodes;
+    IntersectionCurve roles;
+  };
+  std::vector<Edge> edges;
+  for (const auto& [edge, count] : uses) {
+    if (count.size() < 2) continue;
+    Edge e{edge, {}};
+    for (const auto& [f, c] : count) (c == 2 ? e.roles.passing : e.roles.ending).push_back(f);
+    e.roles.onOuterBoundary = outer.count(edge) > 0;
+    edges.push_back(e);
+  }
+  auto sameRoles = [](const IntersectionCurve& a, const IntersectionCurve& b) {
+    return a.passing == b.passing && a.ending == b.ending && a.onOuterBoundary == b.onOuterBoundary;
+  };
+  UnionFind uf(static_cast<int>(edges.size()));
+  std::map<Index, std::vector<int>> edgesAt;
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    for (Index v : {edges[k].nodes.first, edges[k].nodes.second})
+      edgesAt[v].push_back(static_cast<int>(k));
+  for (const auto& [v, list] : edgesAt)
+    for (std::size_t a = 1; a < list.size(); ++a)
+      for (std::size_t b = 0; b < a; ++b)
+        if (sameRoles(edges[list[a]].roles, edges[list[b]].roles)) uf.unite(list[a], list[b]);
+  std::map<int, IntersectionCurve> byRoot;
+  std::map<int, std::map<Index, int>> degree;
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const int root = uf.find(static_cast<int>(k));
+    IntersectionCurve& c = byRoot.emplace(root, edges[k].roles).first->second;
+    const auto [a, b] = edges[k].nodes;
+    c.length += (unsplit.points[b] - unsplit.points[a]).norm();
+    ++degree[root][a];
+    ++degree[root][b];
+  }
+  std::vector<IntersectionCurve> curves;
+  for (auto& [root, c] : byRoot) {
+    for (const auto& [v, d] : degree[root]) {
+      c.nodes.push_back(v);
+      if (d == 1) c.ends.push_back(v);
+    }
+    curves.push_back(std::move(c));
+  }
+  std::sort(curves.begin(), curves.end(),
+            [](const IntersectionCurve& a, const IntersectionCurve& b) {
+              return a.nodes.front() < b.nodes.front();
+            });
+  return curves;
 }
 
 std::vector<std::string> junctionNotes(const SplitMesh& split, std::size_t f) {

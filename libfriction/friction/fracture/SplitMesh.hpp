@@ -33,7 +33,9 @@ enum class FractureNodeKind {
   // 2D junctions (docs/method.md §4, "Junctions"): a node where several fractures meet has
   // one copy per sector between consecutive fracture edges; plus and minus are the copies of
   // the sectors at the fracture's edge towards its next node (its previous one at its last
-  // node).
+  // node). 3D intersection nodes (fault surfaces that meet along curves) likewise: one copy
+  // per sector of the tetrahedra around the node, plus and minus those on either side of the
+  // fracture's first triangle through the node; the kinds below apply per node.
   crossing,  ///< the fracture passes through a junction: its jump there is free, and the
              ///< sectors on each side of it move with its Ω⁺ (Ω⁻) copy
   abutting,  ///< the fracture ends on a junction where three or more fracture edges meet:
@@ -108,6 +110,24 @@ struct SplitMesh {
   Index numOriginalPoints() const;
 };
 
+/// 3D: a curve where fault surfaces meet: a connected set of edges of fault triangles, each an
+/// edge of the same fractures in the same roles. README "Intersections (3D)".
+struct IntersectionCurve {
+  std::vector<std::size_t> passing;  ///< fractures with two triangles at each of its edges
+  std::vector<std::size_t> ending;   ///< fractures with one (their own edge runs along it)
+  bool onOuterBoundary = false;      ///< its edges lie on the outer boundary of the mesh
+  std::vector<Index> nodes;          ///< unsplit node numbers, ascending
+  std::vector<Index> ends;           ///< nodes on one of its edges only (none: a closed curve)
+  double length = 0;                 ///< [length units of the mesh]
+  /// crossing (two or more pass), abutting (one passes, the others end on it), ending
+  /// together (none passes), on the outer boundary (its edges lie there).
+  std::string kind() const;
+};
+
+/// 3D: the curves where the split mesh's fault surfaces meet, ordered by their smallest node;
+/// unsplit: the mesh that was split (for the outer boundary). Empty in 2D.
+std::vector<IntersectionCurve> intersectionCurves(const SplitMesh& split, const Mesh& unsplit);
+
 /// Split the mesh along the given fractures. Refuses, with an InputError naming the mesh file
 /// (and the FractureSpec's location where it helps):
 /// * both dimensions: a fracture with no facets; a cell whose vertices all lie on one
@@ -118,9 +138,12 @@ struct SplitMesh {
 ///   whose edges do not cut the triangles around it into one sector per edge (inside the
 ///   body) or one more (on its boundary, where every fracture must end there). Fractures
 ///   that meet are split at the junction (FractureNodeKind crossing, abutting, joined);
-/// * 3D: fault surfaces that meet (junctions are 2D only); a non-manifold surface (an edge of
+/// * 3D: a non-manifold surface (an edge of
 ///   more than two of its triangles); a non-orientable one; a closed one; one made of several
-///   pieces (not joined through edges).
+///   pieces (not joined through edges); an intersection node where a fracture passing through
+///   it does not separate the tetrahedra on either side of each of its triangles there.
+///   Surfaces that meet are split at their intersection nodes (FractureNodeKind crossing,
+///   abutting, joined, and boundary where one passes through on the outer boundary).
 SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& fractures);
 
 /// The fractures other than f that have unsplit node `node`, quoted and listed in their

@@ -68,13 +68,31 @@ void readSurface(const Dictionary& f, FractureGeometry& g, const SplitMesh& s,
                      {"minus", g.minus.size()},
                      {"kind", g.kind.size()},
                      {"normal", g.normal.size()}});
-  std::map<Index, std::size_t> local;  // plus copy -> fracture node
+  // Triangles are listed by unsplit node numbers, which are the plus copies away from
+  // intersection nodes (where fault surfaces meet, every copy is a sector's: any may be plus).
+  // A node there has a kind of its own, or more copies than its sides (a tip or a node on
+  // the outer boundary where another fracture passes).
+  std::map<Index, std::vector<Index>> copies;  // fracture node -> its copies
+  for (std::size_t i = 0; i < n; ++i) copies[g.node[i]];
+  for (Index c = 0; c < static_cast<Index>(s.origin.size()); ++c) {
+    const auto it = copies.find(s.origin[c]);
+    if (it != copies.end()) it->second.push_back(c);
+  }
+  std::vector<char> meets(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    meets[i] = g.kind[i] == FractureNodeKind::crossing || g.kind[i] == FractureNodeKind::abutting ||
+               g.kind[i] == FractureNodeKind::joined ||
+               copies[g.node[i]].size() > (g.kind[i] == FractureNodeKind::tip ? 1u : 2u);
+  const auto copiesOf = [&](std::size_t i) {  // of fracture node i
+    return meets[i] ? copies.at(g.node[i]) : std::vector<Index>{g.plus[i], g.minus[i]};
+  };
+  std::map<Index, std::size_t> local;  // plus copy (node at intersections) -> fracture node
   for (std::size_t i = 0; i < n; ++i) {
     requireCopies(f, s, g, i);
     if (!(std::abs(g.normal[i].norm() - 1) <= 1e-9))
       f.fail("normal", "fracture node " + std::to_string(i) + ": 'normal' must be a unit vector" +
                            std::string(resplit));
-    if (!local.emplace(g.plus[i], i).second)
+    if (!local.emplace(meets[i] ? g.node[i] : g.plus[i], i).second)
       f.fail("node",
              "fracture node " + std::to_string(i) + ": listed twice" + std::string(resplit));
   }
@@ -89,14 +107,28 @@ void readSurface(const Dictionary& f, FractureGeometry& g, const SplitMesh& s,
                                 std::string(resplit));
       k[j] = it->second;
     }
-    if (!isFace(g.plus[k[0]], g.plus[k[1]], g.plus[k[2]]) ||
-        !isFace(g.minus[k[0]], g.minus[k[1]], g.minus[k[2]]))
+    // At an intersection node the triangle's lips use the copies of the sectors beside it,
+    // not necessarily the node's plus and minus: some copies of its nodes must make a face.
+    bool lips = true;
+    if (meets[k[0]] || meets[k[1]] || meets[k[2]]) {
+      int faces = 0;
+      for (Index a : copiesOf(k[0]))
+        for (Index b : copiesOf(k[1]))
+          for (Index c : copiesOf(k[2])) faces += isFace(a, b, c);
+      lips = faces >= 1;
+    } else {
+      lips = isFace(g.plus[k[0]], g.plus[k[1]], g.plus[k[2]]) &&
+             isFace(g.minus[k[0]], g.minus[k[1]], g.minus[k[2]]);
+    }
+    if (!lips)
       f.fail("triangles", "key 'triangles': (" + std::to_string(t[0]) + " " + std::to_string(t[1]) +
                               " " + std::to_string(t[2]) +
                               "): its 'plus' and its 'minus' copies must each be a face of a "
                               "tetrahedron (the two sides of the cut)" +
                               std::string(resplit));
-    g.triangles.push_back({g.plus[k[0]], g.plus[k[1]], g.plus[k[2]]});
+    g.triangles.push_back({meets[k[0]] ? g.node[k[0]] : g.plus[k[0]],
+                           meets[k[1]] ? g.node[k[1]] : g.plus[k[1]],
+                           meets[k[2]] ? g.node[k[2]] : g.plus[k[2]]});
   }
   if (g.triangles.empty()) f.fail("triangles", "key 'triangles': expected at least one triangle");
 }
@@ -370,15 +402,16 @@ SplitMesh readSplitMesh(const std::string& path) {
         g.kind.push_back(FractureNodeKind::boundary);
       else if (k == "tip")
         g.kind.push_back(FractureNodeKind::tip);
-      else if (k == "crossing" && !is3D)
+      else if (k == "crossing")
         g.kind.push_back(FractureNodeKind::crossing);
-      else if (k == "abutting" && !is3D)
+      else if (k == "abutting")
         g.kind.push_back(FractureNodeKind::abutting);
-      else if (k == "joined" && !is3D)
+      else if (k == "joined")
         g.kind.push_back(FractureNodeKind::joined);
       else
-        f.fail("kind", "key 'kind': '" + k + "' is not a node kind (expected interior, boundary" +
-                           (is3D ? " or tip" : ", tip, crossing, abutting or joined") + ")");
+        f.fail("kind", "key 'kind': '" + k +
+                           "' is not a node kind (expected interior, boundary, tip, crossing, "
+                           "abutting or joined)");
     }
     const std::size_t n = g.node.size();
     if (is3D) {

@@ -328,14 +328,6 @@ TEST_CASE("3D: refusals name the mesh, the fracture and a point", "[split][3d]")
       for (int level : {1, 3}) addPlaneFault(m, n, axis, level, 1, 3, 1, 3, 7, "fault");
     CHECK_THAT(splitError(m, {{"fault", 7, {}}}), Contains("is a closed surface"));
   }
-  SECTION("surfaces that meet") {
-    Mesh m = boxMesh(n);
-    addPlaneFault(m, n, 2, 2, 0, 2, 1, 3, 7, "a");
-    addPlaneFault(m, n, 2, 2, 2, 4, 1, 3, 8, "b");
-    CHECK_THAT(
-        splitError(m, {{"a", 7, {}}, {"b", 8, {}}}),
-        Contains("fractures 'a' and 'b' meet at (0.5 ") && Contains("are not supported in 3D"));
-  }
   SECTION("a surface in two pieces") {
     Mesh m = boxMesh(n);
     addPlaneFault(m, n, 2, 1, 1, 2, 1, 2, 7, "fault");
