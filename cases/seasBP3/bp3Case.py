@@ -92,17 +92,24 @@ files["0/D"] = head("D", "pointVectorField") + (
     % (g(end), g(right[0]), g(right[1]), g(end), g(left[0]), g(left[1])))
 stations = "".join("        fltst_dp%03d %g;\n" % (d * 10, d * 1000)
                    for d in (0, 2.5, 5, 7.5, 10, 12.5, 15, 17.5, 20, 25, 30, 35))
+surface = "".join("        srfst_fn%s (%s 0);\n" % (name, x) for name, x in
+                  (("-32", "-32000"), ("-16", "-16000"), ("-08", "-8000"), ("-00", "-0.001"),
+                   ("+00", "0.001"), ("+08", "8000"), ("+16", "16000"), ("+32", "32000")))
 files["system/controlDict"] = head("controlDict") + (
     "application     frictionSolver;\nstartTime       0;\nendTime         %s;   // %g years\n"
     "deltaT          %s;   // %g years\nwriteControl    timeStep;\nwriteInterval   20;\n"
     "writePrecision  10;\n"
-    "// The benchmark's outputs: stations (every Runge-Kutta step), profiles every 500 m to\n"
-    "// 40 km (every 5 years, every second while seismic: max V >= 1e-3 m/s).\n"
+    "// The benchmark's outputs: stations on the fault and at the surface (every Runge-Kutta\n"
+    "// step), profiles every 500 m to 40 km (every 5 years, every second while seismic: max\n"
+    "// V >= 1e-3 m/s).\n"
     "faultOutput\n{\n    fracture        fault;\n    positiveSlip    (%s %s);   // up-dip: SEAS's sign\n"
     "    seismicSlipRate 1e-3;\n    stations\n    {\n%s    }\n"
-    "    profiles        { from 0; to 40000; spacing 500; interval %s; seismicInterval 1; }\n}\n"
+    "    profiles        { from 0; to 40000; spacing 500; interval %s; seismicInterval 1; }\n"
+    "    // The surface stations at x km (+00 and -00: a millimetre either side of the trace,\n"
+    "    // on the hanging wall and the footwall); w positive downwards, as the benchmark's.\n"
+    "    surfaceStations\n    {\n%s    }\n    verticalDown    yes;\n}\n"
     % (g(end), args.years, g(args.deltaT_years * year), args.deltaT_years, g(upDip[0]),
-       g(upDip[1]), stations, g(5 * year)))
+       g(upDip[1]), stations, g(5 * year), surface))
 files["system/frictionSolution"] = head("frictionSolution") + (
     "elementOrder    1;\nlinearSolver    cholmod;\n"
     "timeIntegration { type quasiDynamic; relativeTolerance %g; }\n"

@@ -54,6 +54,37 @@ FDRA = {
 }
 
 
+# FDRA's surface stations (another FDRA run, Y. Sun 2021, same repository:
+# cattania_srfst_fn_{p0,n16,p16}_T60.txt): per event (|v| >= 1e-4 m/s, windows less than a
+# day apart merged) the offsets (disp1, disp2) [m], disp2 = w positive downwards. Reported,
+# not checked.
+FDRA_SURFACE = {
+    ("thrust", 60): {
+        "srfst_fn+00": [(-0.240, -2.399), (-0.136, -1.363), (-0.150, -1.506), (-0.162, -1.624)],
+        "srfst_fn-16": [(0.158, 0.062), (0.744, 0.194), (0.490, 0.137), (0.541, 0.151)],
+        "srfst_fn+16": [(0.040, -0.062), (-0.198, -0.102), (-0.095, -0.084), (-0.106, -0.092)],
+    },
+}
+
+
+def surfaceEvents(data, threshold=1e-4, merge=86400.0):
+    """Offsets across the windows where the surface speed reaches the threshold."""
+    fast = [math.hypot(r[3], r[4]) >= threshold for r in data]
+    windows = []
+    for i, f in enumerate(fast):
+        if not f:
+            continue
+        if windows and (i == windows[-1][1] + 1 or data[i][0] - data[windows[-1][1]][0] <= merge):
+            windows[-1][1] = i
+        else:
+            windows.append([i, i])
+    out = []
+    for i0, i1 in windows:
+        b, a = data[max(i0 - 1, 0)], data[min(i1 + 1, len(data) - 1)]
+        out.append((data[i0][0], a[1] - b[1], a[2] - b[2]))
+    return out
+
+
 def rows(path):
     out = []
     with open(path) as f:
@@ -110,6 +141,18 @@ def main():
             else:
                 line += " %10s %10s %8s %8s" % ("-", "-", "-", "-")
         print(line)
+    surfaceRef = FDRA_SURFACE.get((sense, int(round(dip))), {})
+    for name in ("srfst_fn+00", "srfst_fn-16", "srfst_fn+16"):
+        path = os.path.join(a.case, "postProcessing", "faultOutput", name + ".dat")
+        if not os.path.exists(path):
+            continue
+        ev = surfaceEvents(rows(path))
+        print("# %s: offsets per event (|v| >= 1e-4 m/s) disp1 disp2 [m] (disp2 positive down)%s"
+              % (name, "  FDRA (first four)" if name in surfaceRef else ""))
+        for k, (t, du, dw) in enumerate(ev):
+            ref = surfaceRef.get(name, [])
+            print("%5d %10.2f %8.3f %8.3f%s" % (k + 1, t / YEAR, du, dw,
+                                              "   %8.3f %8.3f" % ref[k] if k < len(ref) else ""))
     if not a.check:
         return
     if not ref:

@@ -8,6 +8,8 @@
 #    log10 V = -9, shear 26.546122 MPa (tau0 of eq. 24), normal stress 50 MPa, log10 theta =
 #    log10(L/V0) = 3.903090 where a = a0 (7.5 km) and log10(L/V_init) = 6.903090 where
 #    a = a_max (25 km); the station at 7.5 km goes seismic (V >= 1e-3 m/s) at least once;
+#  * the surface stations: the fault stations' times, and at t = 0 the rigid motion of each side,
+#    -/+ V_p/2 along the dip (the fault slides at V_p everywhere: no strain), to 1e-6;
 #  * the profiles: 81 points every 500 m from 0 to 40 km, 83 numbers per row;
 #  * law creep: every node of the creeping extension has slipped V_L t (to 1e-9), and the
 #    written states balance S's tractions against the solve's (relResidual <= 1e-12);
@@ -67,6 +69,24 @@ if sense == "thrust" and not any(r[2] >= -3 for r in rows):
 _, deep = table("fltst_dp350.dat")
 if not (sign * deep[-1][1] > 0.5 * 1e-9 * end):
     fail.append("fltst_dp350.dat: slip %g at the end, expected the sign %+d and about V_L t" % (deep[-1][1], sign))
+# Surface stations: at t = 0 every node slides at V_init = V_p, which is exactly the jump of
+# the two sides' rigid motion, so the whole body moves rigidly: the velocity at a station is
+# -/+ V_p/2 (cos dip, sin dip) (w positive downwards; hanging wall x > 0), to round-off.
+dip = 60 if sense == "thrust" else 30
+c, s_ = math.cos(math.radians(dip)), math.sin(math.radians(dip))
+stationTimes = [r[0] for r in table("fltst_dp075.dat")[1]]
+for name, x in (("srfst_fn-16", -16000), ("srfst_fn-00", -0.001), ("srfst_fn+00", 0.001), ("srfst_fn+32", 32000)):
+    lines, rows = table(name + ".dat")
+    if "t disp1 disp2 vel1 vel2" not in lines or any(len(r) != 5 for r in rows):
+        fail.append(name + ": not the column line and rows of 5 numbers")
+        continue
+    if [r[0] for r in rows] != stationTimes:
+        fail.append(name + ": not the fault stations' times")
+    side = -1 if x > 0 else 1
+    want = [side * sign * 0.5e-9 * c, side * sign * 0.5e-9 * s_]
+    got = rows[0][3:5]
+    if rows[0][1:3] != [0.0, 0.0] or any(abs(g - w) > 1e-6 * 0.5e-9 for g, w in zip(got, want)):
+        fail.append(name + ": first row %s, expected displacement 0 and velocity %s" % (rows[0], want))
 lines, rows = table("slip.dat")
 points = rows[0][2:]
 if len(points) != 81 or points[0] != 0 or abs(points[-1] - 40000) > 1e-6:

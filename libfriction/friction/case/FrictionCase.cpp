@@ -682,7 +682,8 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
                        "timeIntegration quasiDynamic); this case has none: remove faultOutput");
     std::vector<std::string> names;
     for (const auto& f : fractures_) names.push_back(f.name);
-    faultSeries_->bind(nodes, split_.mesh.dim, system_->blockSize(), names, rateLaws_);
+    faultSeries_->bind(nodes, split_.mesh.dim, system_->blockSize(), names, rateLaws_,
+                       system_->splitSpace());
   }
   // The cells around each tip and junction end, for the stress the tables give there: those
   // holding a node of the split space at the tip's position (every copy of it; copies share
@@ -1559,6 +1560,11 @@ void FrictionCase::tractionsAt(const StepLoads& loads, double t, Eigen::VectorXd
   for (const auto& e : effects_) e->addFractureTraction(sys.controlNodes(), t, sn0, tau0);
   sys.setTractionOffset(sn0, tau0);
   sys.primal(Eigen::VectorXd::Zero(perNode * n), tau, sigmaN);
+  // The surface stations at this time (the integrator asks for t_A, then t_B).
+  if (faultSeries_ && faultSeries_->hasSurfaceStations()) {
+    surfaceAt_[0] = surfaceAt_[1];
+    surfaceAt_[1] = {t, faultSeries_->surfaceOperator() * sys.lastSplitDisplacement()};
+  }
 }
 
 bool FrictionCase::wantsRateSamples() const {
@@ -1566,7 +1572,57 @@ bool FrictionCase::wantsRateSamples() const {
 }
 
 void FrictionCase::rateSample(const RateSample& sample) {
-  if (faultSeries_) faultSeries_->sample(sample);
+  if (!faultSeries_) return;
+  if (!faultSeries_->hasSurfaceStations()) {
+    faultSeries_->sample(sample);
+    return;
+  }
+  // The surface stations between the solves at the interval's ends t_A, t_B (the last two
+  // tractionsAt): u = u_A + θ (u_B − u_A) + G (s − s_A), v = (u_B − u_A)/(t_B − t_A) + G V.
+  RateSample withSurface = sample;
+  withSurface.surface = [&](Eigen::VectorXd& u, Eigen::VectorXd& v) {
+    const SurfaceAt &A = surfaceAt_[0], &B = surfaceAt_[1];
+    const double span = B.time - A.time;
+    const double theta = span > 0 ? (sample.time - A.time) / span : 1.0;
+    const Eigen::VectorXd mask = system_->componentMask();
+    u = A.u + theta * (B.u - A.u) + surfaceResponse_ * (*sample.slip - slip_).cwiseProduct(mask);
+    v = surfaceResponse_ * sample.rate->cwiseProduct(mask);
+    if (span > 0) v += (B.u - A.u) / span;
+  };
+  faultSeries_->sample(withSurface);
+}
+
+void FrictionCase::buildSurfaceResponse(std::ostream& log) {
+  // G = W ∂u/∂β: one primal solve per free slip component under no load at all (no load
+  // vector, Dirichlet values 0, no slip), so that G is the same bits whatever the time it is
+  // formed at (a restarted run's), once per run.
+  if (!faultSeries_ || !faultSeries_->hasSurfaceStations()) return;
+  Stopwatch clock;
+  FractureSystem& sys = *system_;
+  const Eigen::Index n = sys.size(), k = sys.blockSize();
+  const Eigen::SparseMatrix<double>& W = faultSeries_->surfaceOperator();
+  DirichletConditions& held = sys.dirichlet();
+  const Eigen::VectorXd saved = held.values();
+  for (Eigen::Index i = 0; i < saved.size(); ++i)
+    if (saved[i] != 0) held.setValue(i, 0.0);
+  sys.setStep(Eigen::VectorXd::Zero(sys.splitSpace().numDofs()), Eigen::VectorXd::Zero(k * n));
+  sys.setTractionOffset(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(k * n));
+  const Eigen::VectorXd mask = sys.componentMask();
+  Eigen::VectorXd tau, sigmaN, beta = Eigen::VectorXd::Zero(k * n);
+  surfaceResponse_ = Eigen::MatrixXd::Zero(W.rows(), k * n);
+  long solves = 0;
+  for (Eigen::Index c = 0; c < k * n; ++c) {
+    if (mask[c] == 0) continue;
+    beta[c] = 1.0;
+    sys.primal(beta, tau, sigmaN);
+    surfaceResponse_.col(c) = W * sys.lastSplitDisplacement();
+    beta[c] = 0.0;
+    ++solves;
+  }
+  for (Eigen::Index i = 0; i < saved.size(); ++i)
+    if (saved[i] != 0) held.setValue(i, saved[i]);
+  log << "Setup: the surface stations' response to the slip (" << W.rows() / 2 << " stations, "
+      << solves << " back-substitutions, once per run): " << clock.seconds() << " s\n";
 }
 
 RateStateFault FrictionCase::rateStateFault() {
@@ -1694,6 +1750,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
     try {
       built = timeIntegrator_->prepare(*this);
       if (rateState_ && !psiKnown_) initialiseRateState();
+      buildSurfaceResponse(log);
     } catch (const StopNow& s) {
       if (parallel::size() > 1) {
         log << "\nStopped while forming the interface operator (" << s.what()

@@ -246,6 +246,15 @@ class FrictionCase : private StepHost {
   Eigen::VectorXd imposed_, imposedRate_;
   /// system/controlDict's faultOutput: SEAS-layout series of a quasiDynamic run (or none).
   std::unique_ptr<FaultSeries> faultSeries_;
+  /// Its surface stations: G = ∂u/∂β at them (2 per station × k·n, buildSurfaceResponse), and
+  /// u there at the last two tractionsAt (the integration interval's ends).
+  Eigen::MatrixXd surfaceResponse_;
+  struct SurfaceAt {
+    double time = 0;
+    Eigen::VectorXd u;
+  };
+  SurfaceAt surfaceAt_[2];
+  void buildSurfaceResponse(std::ostream& log);
   bool weakening_ = false;
   WeakeningSettings weakeningSettings_;
   Eigen::VectorXd slipPath_;

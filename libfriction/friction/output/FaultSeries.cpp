@@ -13,6 +13,8 @@
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
+#include "friction/fe/LagrangeSpace.hpp"
+#include "friction/fe/Simplex.hpp"
 #include "friction/fracture/FractureSystem.hpp"
 #include "friction/law/RateState.hpp"
 
@@ -116,8 +118,35 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
     o.profileInterval_ = p.getScalar("interval", Bounds::nonNegative());
     o.profileSeismic_ = p.getScalarOr("seismicInterval", 0.0, Bounds::nonNegative());
   }
-  if (o.stations_.empty() && !o.profiles_)
-    throw InputError(d.location(), "faultOutput: give 'stations', 'profiles' or both");
+  if (d.found("surfaceStations")) {
+    if (!d.isDict("surfaceStations"))
+      d.fail("surfaceStations",
+             "key 'surfaceStations': expected a sub-dictionary of 'name (x y);' entries");
+    const Dictionary& st = d.subDict("surfaceStations");
+    for (const std::string& name : st.keys()) {
+      const bool taken = std::any_of(o.stations_.begin(), o.stations_.end(),
+                                     [&](const Station& x) { return x.name == name; }) ||
+                         std::any_of(o.surface_.begin(), o.surface_.end(),
+                                     [&](const Surface& x) { return x.name == name; });
+      if (name.find('/') != std::string::npos || name == "slip" || name == "shearstress" ||
+          name == "normalstress" || taken)
+        st.fail(name, "surface station '" + name +
+                          "': a station's name is its file's name: no '/', not one of the "
+                          "profiles' files (slip, shearstress, normalstress), not another "
+                          "station's");
+      Surface x;
+      x.name = name;
+      x.x = st.getVector(name);
+      x.where = st.location(name);
+      o.surface_.push_back(x);
+    }
+    if (o.surface_.empty())
+      d.fail("surfaceStations", "key 'surfaceStations': no station (expected 'name (x y);')");
+  }
+  o.verticalDown_ = d.getBoolOr("verticalDown", false);
+  if (o.stations_.empty() && !o.profiles_ && o.surface_.empty())
+    throw InputError(d.location(),
+                     "faultOutput: give 'stations', 'profiles', 'surfaceStations' or some of them");
   return out;
 }
 
@@ -149,7 +178,7 @@ FaultSeries::Station FaultSeries::locate(double s, const std::string& what,
 
 void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
                        const std::vector<std::string>& fractureNames,
-                       const std::vector<RateState>& laws) {
+                       const std::vector<RateState>& laws, const LagrangeSpace& space) {
   if (dim != 2)
     throw InputError(fractureAt_,
                      "faultOutput: fault stations and profiles are written for 2D cases only (a "
@@ -195,6 +224,39 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
     st = locate(st.s, "station '" + name + "'", st.where, nodes);
     st.name = name;
   }
+  // Surface stations: the cell holding the point (the first in the mesh's order) and the
+  // element's basis there.
+  std::vector<Eigen::Triplet<double>> w;
+  for (std::size_t j = 0; j < surface_.size(); ++j) {
+    const Eigen::Vector2d& p = surface_[j].x;
+    bool found = false;
+    for (Index c = 0; c < space.numCells() && !found; ++c) {
+      const NodeList cell = space.cellNodes(c);
+      const Eigen::Vector2d a = space.coordinate(cell[0]), b = space.coordinate(cell[1]),
+                            e = space.coordinate(cell[2]);
+      const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
+        return u.x() * v.y() - u.y() * v.x();
+      };
+      const double area = cross(b - a, e - a);
+      if (!(std::abs(area) > 0)) continue;
+      Barycentric<2> l{cross(b - p, e - p) / area, cross(e - p, a - p) / area, 0.0};
+      l[2] = 1.0 - l[0] - l[1];
+      const double tol = 1e-9;
+      if (l[0] < -tol || l[1] < -tol || l[2] < -tol) continue;
+      double phi[SimplexNodes<2>::max];
+      basisValues<2>(space.degree(), l, phi);
+      for (int q = 0; q < cell.size; ++q)
+        for (int comp = 0; comp < 2; ++comp)
+          w.emplace_back(static_cast<Eigen::Index>(2 * j) + comp, space.dof(cell[q], comp), phi[q]);
+      found = true;
+    }
+    if (!found)
+      throw InputError(surface_[j].where, "surface station '" + surface_[j].name + "' at (" +
+                                              formatNumber(p.x()) + ", " + formatNumber(p.y()) +
+                                              "): not in the body (no cell holds it)");
+  }
+  W_.resize(static_cast<Eigen::Index>(2 * surface_.size()), space.numDofs());
+  W_.setFromTriplets(w.begin(), w.end());
   if (profiles_) {
     const long m = static_cast<long>(std::floor((to_ - from_) / spacing_ * (1 + 1e-12))) + 1;
     for (long j = 0; j < m; ++j)
@@ -240,6 +302,24 @@ void FaultSeries::open(const std::string& caseDir, bool fresh, double restartTim
     stationFiles_.push_back(std::make_unique<AppendFile>(path, false));
   }
   stationRows_.assign(stations_.size(), "");
+  surfaceFiles_.clear();
+  for (const Surface& st : surface_) {
+    const std::string path = (folder / (st.name + ".dat")).string();
+    const std::string kept = fresh ? "" : keptLines(path, restartTime);
+    const char* way = verticalDown_ ? "downwards" : "upwards";
+    std::ostringstream h;
+    h << "# libfriction, frictionSolver: surface station '" << st.name << "' at ("
+      << formatNumber(st.x.x()) << ", " << formatNumber(st.x.y()) << ") m\n"
+      << "# Column #1 = Time (s)\n"
+      << "# Column #2 = Displacement along x (m)\n"
+      << "# Column #3 = Displacement along y (m), positive " << way << "\n"
+      << "# Column #4 = Velocity along x (m/s)\n"
+      << "# Column #5 = Velocity along y (m/s), positive " << way << "\n"
+      << "t disp1 disp2 vel1 vel2\n";
+    writeTextAtomic(path, kept.empty() ? h.str() : kept);
+    surfaceFiles_.push_back(std::make_unique<AppendFile>(path, false));
+  }
+  surfaceRows_.assign(surface_.size(), "");
   if (profiles_) {
     std::string head = "# libfriction, frictionSolver: profiles along fracture '" + fracture_ +
                        "'; first row: 0 0 and the points' arclengths [m]; then per row the time "
@@ -272,8 +352,9 @@ void FaultSeries::sample(const RateSample& s) {
   const auto due = [&](bool have, double last, double interval) {
     return !have || (s.time > last && s.time - last >= interval);
   };
-  const bool stationRow = !stations_.empty() && due(haveStationRow_, lastStation_,
-                                                    seismic ? stationSeismic_ : stationInterval_);
+  const bool stationRow =
+      (!stations_.empty() || !surface_.empty()) &&
+      due(haveStationRow_, lastStation_, seismic ? stationSeismic_ : stationInterval_);
   const bool profileRow =
       profiles_ && due(haveProfileRow_, lastProfile_, seismic ? profileSeismic_ : profileInterval_);
   if (!stationRow && !profileRow) return;
@@ -316,6 +397,21 @@ void FaultSeries::sample(const RateSample& s) {
       appendValue(row, v.logTheta);
       row += "\n";
     }
+    if (!surface_.empty() && s.surface) {
+      Eigen::VectorXd u, v;
+      s.surface(u, v);
+      const double sy = verticalDown_ ? -1.0 : 1.0;
+      for (std::size_t j = 0; j < surface_.size(); ++j) {
+        std::string& row = surfaceRows_[j];
+        const auto i = static_cast<Eigen::Index>(2 * j);
+        appendTime(row, s.time);
+        appendValue(row, u[i]);
+        appendValue(row, sy * u[i + 1]);
+        appendValue(row, v[i]);
+        appendValue(row, sy * v[i + 1]);
+        row += "\n";
+      }
+    }
     lastStation_ = s.time;
     haveStationRow_ = true;
   }
@@ -344,6 +440,10 @@ void FaultSeries::flush() {
     if (!stationRows_[j].empty()) stationFiles_[j]->append(stationRows_[j]);
     stationRows_[j].clear();
   }
+  for (std::size_t j = 0; j < surfaceFiles_.size(); ++j) {
+    if (!surfaceRows_[j].empty()) surfaceFiles_[j]->append(surfaceRows_[j]);
+    surfaceRows_[j].clear();
+  }
   if (slipFile_ && !slipRows_.empty()) {
     slipFile_->append(slipRows_);
     shearFile_->append(shearRows_);
@@ -354,6 +454,7 @@ void FaultSeries::flush() {
 
 void FaultSeries::sync() {
   for (const auto& f : stationFiles_) f->sync();
+  for (const auto& f : surfaceFiles_) f->sync();
   for (const auto* f : {&slipFile_, &shearFile_, &normalFile_})
     if (*f) (*f)->sync();
 }

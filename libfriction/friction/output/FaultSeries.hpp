@@ -12,6 +12,8 @@
 //       stations        { fltst_dp000 0; fltst_dp075 7500; }   // name, arclength s [m]
 //       stationInterval 0;  stationSeismicInterval 0;   // least time between rows [s]
 //       profiles        { from 0; to 40000; spacing 500; interval 1.5768e8; seismicInterval 1; }
+//       surfaceStations { srfst_fn+08 (8000 0); srfst_fn+00 (0.001 0); }   // points (x y) [m]
+//       verticalDown    yes;   // surface stations: disp2, vel2 positive downwards (SEAS's w)
 //   }
 //
 // Stations: postProcessing/faultOutput/<name>.dat, columns t slip slip_rate shear_stress
@@ -21,7 +23,11 @@
 // fracture's two nodes around s. Profiles: slip.dat, shearstress.dat, normalstress.dat with the
 // first row "0 0 s_1 … s_m" and then per row "t log10(max|V|) value_1 … value_m". A row is
 // written at an accepted step at least interval (seismic: seismicInterval) after the file's
-// last one; seismic when the largest |V| on the fracture reaches seismicSlipRate.
+// last one; seismic when the largest |V| on the fracture reaches seismicSlipRate. Surface
+// stations (any point of the body): <name>.dat with columns t disp1 disp2 vel1 vel2, the
+// displacement [m] and velocity [m/s] there, rows with the stations'; the body's response to
+// the slip at the points (one solve per fault unknown, once per run) gives them between the
+// solves of the grid's times.
 //
 // The rows of a step are appended when the step ends (flush), with the case's other histories;
 // a restart keeps the rows up to its time and the times of the last rows (uniform/
@@ -34,6 +40,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "friction/core/InputError.hpp"
 
@@ -42,6 +49,7 @@ namespace friction {
 class AppendFile;
 class Dictionary;
 class DictionaryWriter;
+class LagrangeSpace;
 struct ControlNode;
 struct RateState;
 
@@ -54,6 +62,9 @@ struct RateSample {
   /// The tractions at control node i: τ (k components) [Pa] and the effective normal stress
   /// σ_n + p [Pa] (negative in compression). Costs one row of S per call.
   std::function<void(Eigen::Index i, Eigen::VectorXd& tau, double& sigmaEffective)> traction;
+  /// The displacement u [m] and velocity v [m/s] at the surface stations, d per station in
+  /// their order (FaultSeries::surfaceOperator()'s rows). Set by the case when it has them.
+  std::function<void(Eigen::VectorXd& u, Eigen::VectorXd& v)> surface;
 };
 
 class FaultSeries {
@@ -65,7 +76,12 @@ class FaultSeries {
   /// Resolves the fracture, stations and profile points on the case's control nodes (their
   /// per-node laws for θ). InputError naming the key where one does not lie on the fracture.
   void bind(const std::vector<ControlNode>& nodes, int dim, int k,
-            const std::vector<std::string>& fractureNames, const std::vector<RateState>& laws);
+            const std::vector<std::string>& fractureNames, const std::vector<RateState>& laws,
+            const LagrangeSpace& space);
+  bool hasSurfaceStations() const { return !surface_.empty(); }
+  /// W: the displacement at the surface stations (d rows per station) from the split space's
+  /// dofs (the element's basis at the point, in the first cell found that holds it).
+  const Eigen::SparseMatrix<double>& surfaceOperator() const { return W_; }
   /// Opens the files in caseDir/postProcessing/faultOutput: fresh ones with their headers, or
   /// (restart) those kept up to `restartTime`. Rank 0 only.
   void open(const std::string& caseDir, bool fresh, double restartTime);
@@ -94,6 +110,16 @@ class FaultSeries {
   bool profiles_ = false;
   double from_ = 0, to_ = 0, spacing_ = 0, profileInterval_ = 0, profileSeismic_ = 0;
   std::vector<Station> points_;  ///< the profiles' points (name unused)
+  struct Surface {
+    std::string name;
+    Eigen::Vector2d x;
+    SourceLocation where;
+  };
+  std::vector<Surface> surface_;
+  bool verticalDown_ = false;
+  Eigen::SparseMatrix<double> W_;
+  std::vector<std::unique_ptr<AppendFile>> surfaceFiles_;
+  std::vector<std::string> surfaceRows_;
 
   // Bound to the case:
   int k_ = 1;
