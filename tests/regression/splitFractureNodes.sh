@@ -348,6 +348,14 @@ faultNetwork3d)
     slipping=$(grep -c ' slip$' "$c/1/fractures/$f.dat")
     ((slipping > 0)) || fail "$f.dat: no node slips"
   done
+  # The tables say where each fault meets the others (after the frame line), and each fault's
+  # .vtp has the point array 'intersection'.
+  expect "$(sed -n 4p "$c/1/fractures/abutting.dat")" "# intersection (abutting) with 'main', 5 nodes from (0.75 0.2 0.5) to (0.75 0.8 0.5), length 0.6: ends on it, its jump held at 3 nodes (state junction)"
+  expect "$(sed -n 4,5p "$c/1/fractures/main.dat")" "# intersection (crossing) with 'crossing', 5 nodes from (0.45 0.2 0.5) to (0.45 0.8 0.5), length 0.6: passes through"
+  expect "$(sed -n 4p "$c/1/fractures/crossing.dat")" "# intersection (crossing) with 'main', 5 nodes from (0.45 0.2 0.5) to (0.45 0.8 0.5), length 0.6: passes through"
+  for f in main crossing abutting; do
+    grep -qa 'Name="intersection"' "$c/VTK/fractures/${f}_1.vtp" || fail "${f}_1.vtp: no array intersection"
+  done
   ;;
 *) fail "unknown scenario" ;;
 esac
