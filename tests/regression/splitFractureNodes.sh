@@ -348,6 +348,41 @@ faultNetwork3d)
     slipping=$(grep -c ' slip$' "$c/1/fractures/$f.dat")
     ((slipping > 0)) || fail "$f.dat: no node slips"
   done
+  # The tables say where each fault meets the others (after the frame line), and each fault's
+  # .vtp has the point array 'intersection'.
+  expect "$(sed -n 4p "$c/1/fractures/abutting.dat")" "# intersection (abutting) with 'main', 5 nodes from (0.75 0.2 0.5) to (0.75 0.8 0.5), length 0.6: ends on it, its jump held at 3 nodes (state junction)"
+  expect "$(sed -n 4,5p "$c/1/fractures/main.dat")" "# intersection (crossing) with 'crossing', 5 nodes from (0.45 0.2 0.5) to (0.45 0.8 0.5), length 0.6: passes through"
+  expect "$(sed -n 4p "$c/1/fractures/crossing.dat")" "# intersection (crossing) with 'main', 5 nodes from (0.45 0.2 0.5) to (0.45 0.8 0.5), length 0.6: passes through"
+  for f in main crossing abutting; do
+    grep -qa 'Name="intersection"' "$c/VTK/fractures/${f}_1.vtp" || fail "${f}_1.vtp: no array intersection"
+  done
+  ;;
+shallowIntersection3d)
+  # Stability (issue #31): two fault surfaces crossing at 10° (faultNetworkBox/constant/mesh/
+  # shallow.geo, ~2000 tetrahedra, meshed here): the thin wedges between them split into four
+  # sectors per node, and frictionSolver runs, converges at every step and stays finite.
+  cp -r "$src/tests/regression/cases/faultNetworkBox" "$work/"; c=$work/faultNetworkBox
+  "$c/Allclean" >/dev/null
+  (cd "$c/constant/mesh" &&
+    gmsh -3 -format msh41 -setnumber angle 10 -setnumber h 0.15 shallow.geo -o network.msh >gmsh.log 2>&1) ||
+    fail "gmsh failed: $(tail -3 "$c/constant/mesh/gmsh.log")"
+  sed -i 's/main 5; crossing 6; abutting 7;/main 5; shallow 6;/; s/fractures (main crossing abutting);/fractures (main shallow);/' \
+    "$c/system/meshDict"
+  sed -i 's/^crossing$/shallow/; /^abutting$/,/^}/d' "$c/constant/fractureProperties"
+  run -case "$c"
+  ((rc == 0)) || fail "exit code $rc"
+  expect "$out" "Intersections: 1"
+  expect "$out" "    crossing: 'main' and 'shallow'; length 0.6"
+  solve -case "$c"
+  ((rc == 0)) || fail "frictionSolver: exit code $rc"
+  converged=$(grep -c '^Time = .* converged ' <<<"$out")
+  ((converged == 4)) || fail "$converged of 4 steps converged"
+  for f in main shallow; do
+    grep -qi 'nan\|inf' "$c/1/fractures/$f.dat" && fail "$f.dat: a value is not finite"
+    slipping=$(grep -c ' slip$' "$c/1/fractures/$f.dat")
+    ((slipping > 0)) || fail "$f.dat: no node slips"
+    expect "$(sed -n 4p "$c/1/fractures/$f.dat")" "# intersection (crossing) with '"
+  done
   ;;
 *) fail "unknown scenario" ;;
 esac

@@ -346,7 +346,7 @@ def plotConvergence(case, path, times, out):
 
 # ---- 3D fracture tables: maps over the fault surface and a profile along a segment ----
 
-STATES = ("tip", "stick", "slip", "open")
+STATES = ("tip", "stick", "slip", "open", "junction")  # junction: a held end where faults meet
 COLUMNS_3D = ("x", "y", "z", "nx", "ny", "nz", "slip1", "slip2", "slipX", "slipY", "slipZ",
               "slipMagnitude", "sigmaN", "tauMagnitude", "ST", "state")
 # Columns that are finite on every row (every column is, but tables of older versions had nan
@@ -569,7 +569,8 @@ class FaultMaps:
                                 f"({turned} node normals at 90 degrees or more from it, "
                                 f"{np.count_nonzero(~used)} nodes on top of others): its maps "
                                 "and profile overlap there")
-        self.keep = np.array([s != "tip" for s in table["state"]])
+        # Tips and held ends where faults meet (junction) have no recovered traction.
+        self.keep = np.array([s not in ("tip", "junction") for s in table["state"]])
         # A fluid pressure (columns pressure and sigmaNEffective): p is drawn over every node
         # when it is finite at each (the solver writes it at tips too), sigma'_n as a traction.
         self.pressure = "pressure" in table and "sigmaNEffective" in table
@@ -834,7 +835,7 @@ class Fault3d:
             axST.set_title("slip tendency ST: fewer than 3 nodes with tractions", fontsize=10)
         axState.triplot(m.tri, color="0.8", lw=0.4)
         styles = {"tip": ("x", "black"), "stick": ("o", "tab:blue"), "slip": ("^", "tab:red"),
-                  "open": ("s", "tab:green")}
+                  "open": ("s", "tab:green"), "junction": ("D", "tab:purple")}
         for state, (marker, color) in styles.items():
             sel = np.array([s == state for s in table["state"]])
             if sel.any():

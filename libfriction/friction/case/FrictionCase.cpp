@@ -2329,6 +2329,16 @@ int FrictionCase::elementOrder(const std::string& caseDir) {
   return elementOrderOf(readCaseFile(caseDir, "system/frictionSolution"));
 }
 
+const std::vector<std::string>& FrictionCase::intersectionNotes3D(std::size_t f) {
+  if (intersectionNotes_.empty()) {
+    const std::vector<IntersectionCurve> curves =
+        intersectionCurves(split_, system_->unsplitSpace().mesh());
+    for (std::size_t g = 0; g < split_.fractures.size(); ++g)
+      intersectionNotes_.push_back(intersectionNotes(split_, curves, g));
+  }
+  return intersectionNotes_.at(f);
+}
+
 void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step) {
   if (!parallel::isMaster()) return;  // rank 0 writes every output file
   const int precision = time_->writePrecision();
@@ -2355,7 +2365,9 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
     out.rows = fractureRows(f, beta, &rowOfPlus);
     writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), out.rows,
                        status.str(), precision, dim,
-                       dim == 2 ? junctionNotes(split_, f) : std::vector<std::string>{});
+                       dim == 2 ? junctionNotes(split_, f) : intersectionNotes3D(f));
+    if (dim == 3 && !intersectionNotes3D(f).empty())
+      out.intersection = intersectionCodes(split_, f);
     // 3D: the fault triangles as row indices for the .vtp. A vertex's row is found by its Ω⁺
     // copy (the unsplit number, as in the triangles), a P2 midpoint's by the split-space node
     // of the edge between the Ω⁺ copies, as FractureSystem made those control nodes.

@@ -146,6 +146,10 @@ class FrictionCase : private StepHost {
   /// given, maps each row's Ω⁺ copy to its row.
   std::vector<FractureRow> fractureRows(std::size_t f, const Eigen::VectorXd& beta,
                                         std::map<Index, Index>* rowOfPlus) const;
+  /// 3D: fracture f's comment lines on where it meets other fault surfaces (intersectionNotes,
+  /// SplitMesh.hpp), made on the first call for every fracture.
+  const std::vector<std::string>& intersectionNotes3D(std::size_t f);
+  std::vector<std::vector<std::string>> intersectionNotes_;
   /// Control node k's state in the last step: stick, slip, open or tip.
   std::string nodeState(Eigen::Index k) const;
   /// Where the nodes of fractures whose friction weakens slip in the last step, per fracture

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <numeric>
 #include <set>
@@ -1100,6 +1101,100 @@ std::vector<std::string> junctionNotes(const SplitMesh& split, std::size_t f) {
                     "; meets " + othersAt(split, f, g.node[i]));
   }
   return notes;
+}
+
+namespace {
+// The number of fractures with each node (a node of two or more is where they meet).
+std::map<Index, int> fractureCount(const SplitMesh& split) {
+  std::map<Index, int> count;
+  for (const FractureGeometry& g : split.fractures)
+    for (Index v : g.node) ++count[v];
+  return count;
+}
+}  // namespace
+
+std::vector<std::string> intersectionNotes(const SplitMesh& split,
+                                           const std::vector<IntersectionCurve>& curves,
+                                           std::size_t f) {
+  std::vector<std::string> notes;
+  const FractureGeometry& g = split.fractures.at(f);
+  std::map<Index, FractureNodeKind> kindOf;
+  for (Index i = 0; i < g.numNodes(); ++i) kindOf[g.node[i]] = g.kind[i];
+  const auto quoted = [&](const std::vector<std::size_t>& list) {
+    std::string text;
+    for (std::size_t k = 0; k < list.size(); ++k)
+      text += (k == 0                 ? ""
+               : k + 1 == list.size() ? " and "
+                                      : ", ") +
+              ("'" + split.fractures[list[k]].name + "'");
+    return text;
+  };
+  std::set<Index> onCurves;
+  for (const IntersectionCurve& c : curves) {
+    onCurves.insert(c.nodes.begin(), c.nodes.end());
+    const bool passes = std::count(c.passing.begin(), c.passing.end(), f) > 0;
+    if (!passes && !std::count(c.ending.begin(), c.ending.end(), f)) continue;
+    std::vector<std::size_t> others;
+    for (std::size_t o : c.passing)
+      if (o != f) others.push_back(o);
+    for (std::size_t o : c.ending)
+      if (o != f) others.push_back(o);
+    std::sort(others.begin(), others.end());
+    std::ostringstream line;
+    line << std::setprecision(6) << "intersection (" << c.kind() << ") with " << quoted(others)
+         << ", " << c.nodes.size() << " nodes ";
+    if (c.ends.empty())
+      line << "on a closed curve";
+    else
+      line << "from " << formatPoint(split.mesh.points[c.ends.front()], 3) << " to "
+           << formatPoint(split.mesh.points[c.ends.back()], 3);
+    line << ", length " << c.length << ": ";
+    int held = 0, joined = 0;
+    for (Index v : c.nodes) {
+      const auto it = kindOf.find(v);
+      if (it == kindOf.end()) continue;
+      held += it->second == FractureNodeKind::abutting;
+      joined += it->second == FractureNodeKind::joined;
+    }
+    if (passes)
+      line << "passes through";
+    else if (c.passing.empty())
+      line << "ends together with " << (others.size() == 1 ? "it" : "them") << " (" << joined
+           << " nodes joined, " << held << " held: state junction)";
+    else
+      line << "ends on " << (c.passing.size() == 1 ? "it" : "them") << ", its jump held at " << held
+           << " nodes (state junction)";
+    notes.push_back(line.str());
+  }
+  const std::map<Index, int> count = fractureCount(split);
+  for (Index i = 0; i < g.numNodes(); ++i) {
+    const Index v = g.node[i];
+    if (onCurves.count(v) || count.at(v) < 2) continue;
+    const std::string others = othersAt(split, f, v);
+    const FractureNodeKind kind = g.kind[i];
+    notes.push_back("touches " + others + " at " + formatPoint(split.mesh.points[v], 3) +
+                    " (a point only): " +
+                    (kind == FractureNodeKind::abutting ? "its jump held (state junction)"
+                     : kind == FractureNodeKind::tip    ? "its tip"
+                     : kind == FractureNodeKind::joined ? "joined"
+                                                        : "passes through"));
+  }
+  return notes;
+}
+
+std::vector<int> intersectionCodes(const SplitMesh& split, std::size_t f) {
+  const FractureGeometry& g = split.fractures.at(f);
+  std::vector<int> codes(static_cast<std::size_t>(g.numNodes()), 0);
+  const std::map<Index, int> count = fractureCount(split);
+  for (Index i = 0; i < g.numNodes(); ++i) {
+    if (count.at(g.node[i]) < 2) continue;
+    const FractureNodeKind kind = g.kind[i];
+    codes[i] = kind == FractureNodeKind::abutting ? 2
+               : kind == FractureNodeKind::joined ? 3
+               : kind == FractureNodeKind::tip    ? 4
+                                                  : 1;
+  }
+  return codes;
 }
 
 }  // namespace friction

@@ -155,4 +155,20 @@ std::string othersAt(const SplitMesh& split, std::size_t f, Index node);
 /// "junction at (0 0): passes through; meets 'branch'". For the fracture tables' comments.
 std::vector<std::string> junctionNotes(const SplitMesh& split, std::size_t f);
 
+/// 3D: one line per intersection curve of fracture f (intersectionCurves) saying its kind, the
+/// other fractures on it, where it runs and what f does there, e.g. "intersection (abutting)
+/// with 'main', 5 nodes from (0.75 0.2 0.5) to (0.75 0.8 0.5), length 0.6: ends on it, its
+/// jump held at 3 nodes (state junction)"; then one line per node where f touches another
+/// fracture without a common edge. For the fracture tables' comments; `curves`: those of the
+/// split mesh.
+std::vector<std::string> intersectionNotes(const SplitMesh& split,
+                                           const std::vector<IntersectionCurve>& curves,
+                                           std::size_t f);
+
+/// 3D: per node of fracture f (its order), what it does where fault surfaces meet, for the
+/// .vtp's point array `intersection`: 0 not on another fracture, 1 passes through (crossing,
+/// or boundary there), 2 ends on another (abutting: held, state junction), 3 ends together
+/// with another (joined), 4 its tip line touches another (tip).
+std::vector<int> intersectionCodes(const SplitMesh& split, std::size_t f);
+
 }  // namespace friction

@@ -188,6 +188,8 @@ void writeFractureTable(const std::string& path, const std::vector<FractureRow>&
                               : "")
         << "\n";
   }
+  // 3D: where the fault meets others, after the frame line (line 3 stays the frame).
+  for (const std::string& note : notes) out << "# " << note << "\n";
   for (const FractureRow& r : rows) {
     for (const double v : fractureTableValues(r, dim)) value(v) << " ";
     out << r.state << "\n";

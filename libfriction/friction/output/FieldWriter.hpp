@@ -101,8 +101,8 @@ std::vector<double> fractureTableValues(const FractureRow& row, int dim);
 
 /// dim: 2 or 3, the layout of the file comment (2D: components [0]; 3D: both, the magnitudes
 /// and slipX.. = slip[0] t₁ + slip[1] t₂ derived here; 2D: slipX slipY = slip[0] t₁).
-/// `notes`: more comment lines after the status line (2D: the fracture's junctions), each
-/// written as "# " + note.
+/// `notes`: more comment lines after the status line (2D: the fracture's junctions; 3D: where
+/// it meets other fault surfaces, after the frame line), each written as "# " + note.
 void writeFractureTable(const std::string& path, const std::vector<FractureRow>& rows,
                         const std::string& statusLine, int precision, int dim,
                         const std::vector<std::string>& notes = {});

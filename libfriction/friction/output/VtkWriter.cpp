@@ -428,12 +428,15 @@ void writeFracturePolyline(const std::string& path, const std::vector<FractureRo
 // The fault surface of a 3D fracture: see writeFractureVtp.
 void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& rows, int precision,
                        const std::vector<std::array<Index, 6>>& triangles, int nodesPerTriangle,
-                       VtkFormat format) {
+                       VtkFormat format, const std::vector<int>& intersection) {
   ArraySink sink(format, precision);
   if (nodesPerTriangle != 3 && nodesPerTriangle != 6)
     throw std::invalid_argument("writeFractureVtp: " + std::to_string(nodesPerTriangle) +
                                 " nodes per triangle (expected 3 or 6)");
   const Index n = static_cast<Index>(rows.size());
+  if (!intersection.empty() && intersection.size() > rows.size())
+    throw std::invalid_argument("writeFractureVtp: " + std::to_string(intersection.size()) +
+                                " intersection codes for " + std::to_string(rows.size()) + " rows");
   std::vector<std::array<Index, 3>> cells;
   for (const auto& t : triangles) {
     for (int i = 0; i < nodesPerTriangle; ++i)
@@ -456,7 +459,12 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
   s << kHeader
     << "<!-- fault surface (P2: four triangles per fault triangle, at its edge midpoints); point "
        "array state: "
-    << stateLegend(rows) << " -->\n"
+    << stateLegend(rows)
+    << (intersection.empty() ? ""
+                             : "; point array intersection (where fault surfaces meet): 0 no "
+                               "other fault, 1 passes through, 2 ends on another (held), 3 "
+                               "ends together with another, 4 tip")
+    << " -->\n"
     << "<VTKFile type=\"PolyData\"" << sink.fileAttributes() << ">\n"
     << "  <PolyData>\n"
     << "    <Piece NumberOfPoints=\"" << n
@@ -489,6 +497,12 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
                [c](const FractureRow& r) { return strikeDipValues(r)[c]; });
   }
   stateArray(sink, s, rows);
+  if (!intersection.empty()) {
+    // One code per fracture node; the P2 midpoints (rows after them) are 0.
+    std::vector<long long> v(rows.size(), 0);
+    std::copy(intersection.begin(), intersection.end(), v.begin());
+    sink.integers(s, "Int32", "intersection", v, 1);
+  }
   s << "      </PointData>\n";
 
   s << "      <Points>\n";
@@ -517,11 +531,11 @@ void writeFaultSurface(const std::string& path, const std::vector<FractureRow>& 
 
 void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision,
                       const std::vector<std::array<Index, 6>>& triangles, int nodesPerTriangle,
-                      VtkFormat format) {
+                      VtkFormat format, const std::vector<int>& intersection) {
   if (triangles.empty())
     writeFracturePolyline(path, rows, precision, format);
   else
-    writeFaultSurface(path, rows, precision, triangles, nodesPerTriangle, format);
+    writeFaultSurface(path, rows, precision, triangles, nodesPerTriangle, format, intersection);
 }
 
 void writePvd(const std::string& path, const std::vector<PvdTime>& times, int precision) {
@@ -716,7 +730,7 @@ void VtkSeries::write(double time, const std::string& timeName, const LagrangeSp
     entry.names.push_back("mesh");
     for (const Fracture& f : fractures) {
       writeFractureVtp(vtpPath(f.name, timeName), f.rows, precision, f.triangles,
-                       f.nodesPerTriangle, format_);
+                       f.nodesPerTriangle, format_, f.intersection);
       written.push_back(vtpPath(f.name, timeName));
       entry.files.push_back("fractures/" + fs::path(vtpPath(f.name, timeName)).filename().string());
       entry.names.push_back(f.name);

@@ -97,14 +97,18 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 ///    are shown and the surface is exact where it is flat. Point data: normal (3), slip [m]
 ///    (3, x y z: slip₁ t₁ + slip₂ t₂), slipMagnitude [m], slipIncrement [m] (3, x y z),
 ///    sigmaN [Pa], traction [Pa] (3, the tangential traction τ in x y z), tauMagnitude [Pa],
-///    ST [-], residual [Pa] (|D|).
+///    ST [-], residual [Pa] (|D|); with `intersection` (a fault that meets others: one code per
+///    fracture node, the rows' first ones) also intersection (Int32: 0 no other fault, 1
+///    passes through, 2 ends on another (held), 3 ends together with another, 4 tip;
+///    intersectionCodes, SplitMesh.hpp).
 /// Both: Float64 (tips: the rows' values, the body's stress there), and state
 /// (Int32: 0 stick, 1 slip, 2 open, 3 tip, 4 junction; see vtkStateCode). The file also says the
 /// state coding in an XML comment. No rows: an empty data set (no points, no cells). The folder
 /// must exist.
 void writeFractureVtp(const std::string& path, const std::vector<FractureRow>& rows, int precision,
                       const std::vector<std::array<Index, 6>>& triangles = {},
-                      int nodesPerTriangle = 3, VtkFormat format = VtkFormat::ascii);
+                      int nodesPerTriangle = 3, VtkFormat format = VtkFormat::ascii,
+                      const std::vector<int>& intersection = {});
 
 /// One time of a .pvd collection.
 struct PvdTime {
@@ -139,6 +143,8 @@ class VtkSeries {
     std::vector<FractureRow> rows;
     std::vector<std::array<Index, 6>> triangles = {};
     int nodesPerTriangle = 3;  ///< 3 (P1) or 6 (P2)
+    /// 3D, a fault that meets others: the point array intersection (writeFractureVtp).
+    std::vector<int> intersection = {};
   };
 
   /// Write the .vtu of (space, assembler, u) (see writeVtu), one .vtp per fracture (see

@@ -269,3 +269,41 @@ TEST_CASE("writeFractureVtp refuses triangles that are not rows", "[output][vtk]
   CHECK_FALSE(fs::exists(path));
   fs::remove_all(dir);
 }
+
+TEST_CASE("3D outputs mark where fault surfaces meet: the table's notes, the .vtp's array",
+          "[output][vtk][3d][intersection]") {
+  const fs::path dir = freshTempDir("meet");
+  const auto rows = faultRows(1);
+  const fs::path dat = dir / "fault.dat", vtp = dir / "fault_1.vtp", plain = dir / "plain_1.vtp";
+  // The notes follow the frame line (line 3 stays the frame).
+  writeFractureTable(dat.string(), rows, "status converged", 8, 3,
+                     {"intersection (abutting) with 'main': ends on it"});
+  const auto table = lines(dat);
+  REQUIRE(table.size() == 4 + rows.size());
+  CHECK(table[2].rfind("# frame", 0) == 0);
+  CHECK(table[3] == "# intersection (abutting) with 'main': ends on it");
+  // One code per fracture node: an Int32 array 'intersection', its legend in the comment.
+  writeFractureVtp(vtp.string(), rows, 8, faultTriangles(1), 3, VtkFormat::ascii, {1, 2, 0, 4});
+  std::ifstream in(vtp);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  CHECK(s.find("point array intersection (where fault surfaces meet): 0 no other fault, 1 passes "
+               "through, 2 ends on another (held), 3 ends together with another, 4 tip") !=
+        std::string::npos);
+  const auto at = s.find("Name=\"intersection\"");
+  REQUIRE(at != std::string::npos);
+  const auto values = s.find(">", at) + 1;
+  CHECK(words(s.substr(values, s.find("</DataArray>", values) - values)) ==
+        std::vector<std::string>{"1", "2", "0", "4"});
+  // Without codes (a fault that meets none) the file is as before: no such array, no legend.
+  writeFractureVtp(plain.string(), rows, 8, faultTriangles(1), 3, VtkFormat::ascii);
+  std::ifstream in2(plain);
+  std::stringstream text2;
+  text2 << in2.rdbuf();
+  CHECK(text2.str().find("intersection") == std::string::npos);
+  CHECK_THROWS_AS(writeFractureVtp(vtp.string(), rows, 8, faultTriangles(1), 3, VtkFormat::ascii,
+                                   {1, 2, 0, 4, 1}),
+                  std::invalid_argument);
+  fs::remove_all(dir);
+}
