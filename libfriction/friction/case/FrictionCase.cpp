@@ -1561,7 +1561,7 @@ void FrictionCase::tractionsAt(const StepLoads& loads, double t, Eigen::VectorXd
   sys.setTractionOffset(sn0, tau0);
   sys.primal(Eigen::VectorXd::Zero(perNode * n), tau, sigmaN);
   // The surface stations at this time (the integrator asks for t_A, then t_B).
-  if (faultSeries_ && faultSeries_->hasSurfaceStations()) {
+  if (faultSeries_ && faultSeries_->hasSurfaceStations() && parallel::isMaster()) {
     surfaceAt_[0] = surfaceAt_[1];
     surfaceAt_[1] = {t, faultSeries_->surfaceOperator() * sys.lastSplitDisplacement()};
   }
@@ -1614,8 +1614,8 @@ void FrictionCase::buildSurfaceResponse(std::ostream& log) {
   for (Eigen::Index c = 0; c < k * n; ++c) {
     if (mask[c] == 0) continue;
     beta[c] = 1.0;
-    sys.primal(beta, tau, sigmaN);
-    surfaceResponse_.col(c) = W * sys.lastSplitDisplacement();
+    sys.primal(beta, tau, sigmaN);  // collective: every rank solves, rank 0 keeps the column
+    if (parallel::isMaster()) surfaceResponse_.col(c) = W * sys.lastSplitDisplacement();
     beta[c] = 0.0;
     ++solves;
   }
