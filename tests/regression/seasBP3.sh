@@ -10,6 +10,7 @@
 #    a = a_max (25 km); the station at 7.5 km goes seismic (V >= 1e-3 m/s) at least once;
 #  * the surface stations: the fault stations' times, and at t = 0 the rigid motion of each side,
 #    -/+ V_p/2 along the dip (the fault slides at V_p everywhere: no strain), to 1e-6;
+#  * global.dat: the stations' times, and at t = 0 the moment rate G V_init x 40 km (to 1 %);
 #  * the profiles: 81 points every 500 m from 0 to 40 km, 83 numbers per row;
 #  * law creep: every node of the creeping extension has slipped V_L t (to 1e-9), and the
 #    written states balance S's tractions against the solve's (relResidual <= 1e-12);
@@ -87,6 +88,14 @@ for name, x in (("srfst_fn-16", -16000), ("srfst_fn-00", -0.001), ("srfst_fn+00"
     got = rows[0][3:5]
     if rows[0][1:3] != [0.0, 0.0] or any(abs(g - w) > 1e-6 * 0.5e-9 for g, w in zip(got, want)):
         fail.append(name + ": first row %s, expected displacement 0 and velocity %s" % (rows[0], want))
+# global.dat: the stations' times; at t = 0 every node slides at V_init, so the moment rate is
+# G V_init times the fault's length, 40 km (to 1 %: the node joined to the creeping part
+# weighs half an edge of each).
+lines, rows = table("global.dat")
+if "t max_slip_rate moment_rate" not in lines or [r[0] for r in rows] != stationTimes:
+    fail.append("global.dat: not the column line or not the stations' times")
+elif abs(rows[0][2] / (2670 * 3464**2 * 1e-9 * 40000) - 1) > 0.01 or rows[0][1] != -9.0:
+    fail.append("global.dat: first row %s, expected log10 V -9 and moment rate %g" % (rows[0], 2670 * 3464**2 * 1e-9 * 40000))
 lines, rows = table("slip.dat")
 points = rows[0][2:]
 if len(points) != 81 or points[0] != 0 or abs(points[-1] - 40000) > 1e-6:

@@ -682,8 +682,11 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
                        "timeIntegration quasiDynamic); this case has none: remove faultOutput");
     std::vector<std::string> names;
     for (const auto& f : fractures_) names.push_back(f.name);
+    const std::size_t f = static_cast<std::size_t>(
+        std::find(names.begin(), names.end(), faultSeries_->fracture()) - names.begin());
     faultSeries_->bind(nodes, split_.mesh.dim, system_->blockSize(), names, rateLaws_,
-                       system_->splitSpace());
+                       system_->splitSpace(), system_->weights(),
+                       f < shearModulus_.size() ? shearModulus_[f] : 0.0);
   }
   // The cells around each tip and junction end, for the stress the tables give there: those
   // holding a node of the split space at the tip's position (every copy of it; copies share

@@ -178,7 +178,9 @@ FaultSeries::Station FaultSeries::locate(double s, const std::string& what,
 
 void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
                        const std::vector<std::string>& fractureNames,
-                       const std::vector<RateState>& laws, const LagrangeSpace& space) {
+                       const std::vector<RateState>& laws, const LagrangeSpace& space,
+                       const Eigen::VectorXd& weights, double shearModulus) {
+  shearModulus_ = shearModulus;
   if (dim != 2)
     throw InputError(fractureAt_,
                      "faultOutput: fault stations and profiles are written for 2D cases only (a "
@@ -200,6 +202,8 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
   });
   const std::size_t n = nodes.size();
   sign_.assign(n, 1.0);
+  weight_.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) weight_[i] = weights[static_cast<Eigen::Index>(i)];
   L_.assign(n, 0.0), V0_.assign(n, 1.0), f0_.assign(n, 0.0), b_.assign(n, 1.0);
   for (const Eigen::Index i : onFracture_) {
     const auto u = static_cast<std::size_t>(i);
@@ -320,6 +324,22 @@ void FaultSeries::open(const std::string& caseDir, bool fresh, double restartTim
     surfaceFiles_.push_back(std::make_unique<AppendFile>(path, false));
   }
   surfaceRows_.assign(surface_.size(), "");
+  globalFile_.reset();
+  if (!stations_.empty() || !surface_.empty()) {
+    const std::string path = (folder / "global.dat").string();
+    const std::string kept = fresh ? "" : keptLines(path, restartTime);
+    const std::string head =
+        "# libfriction, frictionSolver: fracture '" + fracture_ +
+        "' as a whole, at the stations' times\n"
+        "# Column #1 = Time (s)\n"
+        "# Column #2 = Max slip rate (log10 m/s)\n"
+        "# Column #3 = Moment rate (N/s, per metre along strike): G sum_i w_i |V_i|, G = " +
+        formatNumber(shearModulus_) +
+        " Pa\n"
+        "t max_slip_rate moment_rate\n";
+    writeTextAtomic(path, kept.empty() ? head : kept);
+    globalFile_ = std::make_unique<AppendFile>(path, false);
+  }
   if (profiles_) {
     std::string head = "# libfriction, frictionSolver: profiles along fracture '" + fracture_ +
                        "'; first row: 0 0 and the points' arclengths [m]; then per row the time "
@@ -412,6 +432,13 @@ void FaultSeries::sample(const RateSample& s) {
         row += "\n";
       }
     }
+    double momentRate = 0;
+    for (const Eigen::Index i : onFracture_)
+      momentRate += weight_[static_cast<std::size_t>(i)] * speed(i);
+    appendTime(globalRows_, s.time);
+    appendValue(globalRows_, logRate(maxV));
+    appendValue(globalRows_, shearModulus_ * momentRate);
+    globalRows_ += "\n";
     lastStation_ = s.time;
     haveStationRow_ = true;
   }
@@ -444,6 +471,8 @@ void FaultSeries::flush() {
     if (!surfaceRows_[j].empty()) surfaceFiles_[j]->append(surfaceRows_[j]);
     surfaceRows_[j].clear();
   }
+  if (globalFile_ && !globalRows_.empty()) globalFile_->append(globalRows_);
+  globalRows_.clear();
   if (slipFile_ && !slipRows_.empty()) {
     slipFile_->append(slipRows_);
     shearFile_->append(shearRows_);
@@ -455,6 +484,7 @@ void FaultSeries::flush() {
 void FaultSeries::sync() {
   for (const auto& f : stationFiles_) f->sync();
   for (const auto& f : surfaceFiles_) f->sync();
+  if (globalFile_) globalFile_->sync();
   for (const auto* f : {&slipFile_, &shearFile_, &normalFile_})
     if (*f) (*f)->sync();
 }

@@ -27,7 +27,10 @@
 // stations (any point of the body): <name>.dat with columns t disp1 disp2 vel1 vel2, the
 // displacement [m] and velocity [m/s] there, rows with the stations'; the body's response to
 // the slip at the points (one solve per fault unknown, once per run) gives them between the
-// solves of the grid's times.
+// solves of the grid's times. global.dat (whenever stations or surface stations are given),
+// at the same times: t, log10 of the largest slip rate on the fracture [m/s], and its moment
+// rate μ Σ w_i |V_i| over the fracture's nodes (lumped length w_i; per metre along strike
+// in 2D) [N/s].
 //
 // The rows of a step are appended when the step ends (flush), with the case's other histories;
 // a restart keeps the rows up to its time and the times of the last rows (uniform/
@@ -77,8 +80,9 @@ class FaultSeries {
   /// per-node laws for θ). InputError naming the key where one does not lie on the fracture.
   void bind(const std::vector<ControlNode>& nodes, int dim, int k,
             const std::vector<std::string>& fractureNames, const std::vector<RateState>& laws,
-            const LagrangeSpace& space);
+            const LagrangeSpace& space, const Eigen::VectorXd& weights, double shearModulus);
   bool hasSurfaceStations() const { return !surface_.empty(); }
+  const std::string& fracture() const { return fracture_; }
   /// W: the displacement at the surface stations (d rows per station) from the split space's
   /// dofs (the element's basis at the point, in the first cell found that holds it).
   const Eigen::SparseMatrix<double>& surfaceOperator() const { return W_; }
@@ -120,6 +124,10 @@ class FaultSeries {
   Eigen::SparseMatrix<double> W_;
   std::vector<std::unique_ptr<AppendFile>> surfaceFiles_;
   std::vector<std::string> surfaceRows_;
+  double shearModulus_ = 0;     ///< G of the rock at the fracture [Pa]
+  std::vector<double> weight_;  ///< per control node: its lumped length [m]
+  std::unique_ptr<AppendFile> globalFile_;
+  std::string globalRows_;
 
   // Bound to the case:
   int k_ = 1;
