@@ -4,7 +4,8 @@
 Usage: parallelCompare.py REFERENCE_CASE RUN_CASE...
 
 Every `<time>/fractures/<name>.dat` of the reference must exist in each run with the same rows,
-the same `state` column and the same status on its `# status` line; each numeric column must
+the same `state` column, the same status on its `# status` line and the same comment lines that
+mark where fractures meet (2D `# junction at ...`, 3D `# intersection ...`); each numeric column must
 agree to 1e-9 of its scale in the reference table: tractions (sigmaN, tau..., residual, and a
 fluid pressure's pressure, sigmaNEffective and deltaCFS) against
 the largest traction of the table, slips and openings (slip..., opening) against the largest of
@@ -26,18 +27,20 @@ import sys
 
 
 def read_table(path):
-    header, status, rows = None, None, []
+    header, status, rows, marks = None, None, [], []
     with open(path) as f:
         for line in f:
             if line.startswith("# status"):
                 status = line.split()[2]
+            elif line.startswith("# junction") or line.startswith("# intersection"):
+                marks.append(line)
             elif line.startswith("#") and header is None:
                 header = line[1:].split()
             elif line.startswith("#") or not line.strip():
                 continue
             else:
                 rows.append(line.split())
-    return header, status, rows
+    return header, status, rows, marks
 
 
 def number(text):
@@ -64,8 +67,11 @@ def main():
                 print(f"{run}: missing {rel}")
                 failures += 1
                 continue
-            h0, s0, r0 = read_table(ref_path)
-            h1, s1, r1 = read_table(path)
+            h0, s0, r0, m0 = read_table(ref_path)
+            h1, s1, r1, m1 = read_table(path)
+            if m0 != m1:
+                print(f"{run}: {rel}: the junction or intersection lines differ")
+                failures += 1
             if h0 != h1 or s0 != s1 or len(r0) != len(r1) or not r0:
                 print(f"{run}: {rel}: header, status ({s0} / {s1}) or row count "
                       f"({len(r0)} / {len(r1)}) differ, or no rows")
