@@ -10,6 +10,7 @@
 #  3. rocks of contrasting stiffness on the two sides of the fault (hanging wall 4x stiffer than
 #     the footwall, a bimaterial fault): the run is balanced (relResidual <= 1e-12 at every
 #     written time) and has events;
+#  3b. layers of contrasting stiffness (above 5 km four times softer): balanced, with events;
 #  4. very small characteristic slip (L = 0.8 mm, ten times below the benchmark's: cohesive zone
 #     of ~40 m under 400 m cells, unresolved): it must still end, converged or with a clear
 #     status, never hang or write a non-finite value.
@@ -90,6 +91,23 @@ done
 max=$(col "$work/bimaterial/postProcessing/faultOutput/slip.dat" 2 | tail -n +2 | sort -g | tail -n 1)
 /usr/bin/python3 -c "import sys; sys.exit(0 if $max > -3 else 1)" || fail "bimaterial: no event (max log10 V $max)"
 echo "PASS: bimaterial fault balanced, events (max log10 V $max)"
+
+# 3b. Layers of contrasting stiffness: rock above 5 km depth four times softer than below (the
+#     interface crosses the velocity-weakening patch).
+make_case layers 250 -layer 5000
+cat >"$work/layers/constant/mechanicalProperties" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object mechanicalProperties; }
+planeStress no;
+regions { upper { lambda 8e9; mu 8e9; } lower { lambda 3.2e10; mu 3.2e10; } }
+DICT
+run layers
+for f in "$work"/layers/[1-9]*/solverStatus; do
+  rel=$(sed -n 's/.*relResidual \([^;]*\);.*/\1/p' "$f")
+  /usr/bin/python3 -c "import sys; sys.exit(0 if $rel <= 1e-12 else 1)" || fail "layers: relResidual $rel in $f"
+done
+max=$(col "$work/layers/postProcessing/faultOutput/slip.dat" 2 | tail -n +2 | sort -g | tail -n 1)
+/usr/bin/python3 -c "import sys; sys.exit(0 if $max > -3 else 1)" || fail "layers: no event (max log10 V $max)"
+echo "PASS: layers of contrasting stiffness balanced, events (max log10 V $max)"
 
 # 4. Unresolved cohesive zone.
 make_case unresolved 100

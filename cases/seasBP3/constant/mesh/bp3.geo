@@ -8,7 +8,8 @@
 //
 //   physical curves   "top", "bottom", "left", "right", "fault" (0 <= x_d <= Wf),
 //                     "creep" (x_d >= Wf)
-//   physical surface  "rock" (or, with bimaterial = 1, "hangingWall" and "footWall")
+//   physical surface  "rock" (or, with bimaterial = 1, "hangingWall" and "footWall"; with
+//                     layer = L > 0, "upper" and "lower" of a horizontal interface at depth L)
 //
 // Mesh size: h on the fault's first Wf (Round(Wf/h) equal segments), growing with the distance
 // d from it as h + grading * d, at most hFar.
@@ -21,7 +22,8 @@ DefineConstant[
   D       = {400e3,  Name "Parameters/4Depth of the body [m]"},
   W       = {400e3,  Name "Parameters/5Half-width of the body at the top [m]"},
   grading = {0.1,    Name "Parameters/6Size growth per metre of distance"},
-  hFar    = {20e3,   Name "Parameters/7Largest mesh size [m]"}
+  hFar    = {20e3,   Name "Parameters/7Largest mesh size [m]"},
+  layer   = {0,      Name "Parameters/9Depth of a horizontal layer interface [m] (0: none)"}
 ];
 
 General.NumThreads = 1;
@@ -43,6 +45,7 @@ Point(5) = {W, 0, 0};
 Point(6) = {W + shift, -D, 0};
 Point(7) = {-W + shift, -D, 0};
 
+If (layer <= 0)
 Line(1) = {4, 1};   // top, left of the trace
 Line(2) = {1, 5};   // top, right
 Line(3) = {5, 6};   // right side
@@ -57,24 +60,65 @@ Curve Loop(1) = {7, 8, -4, -3, -2};   // hanging wall (right of the fault), coun
 Plane Surface(1) = {1};
 Curve Loop(2) = {-1, -6, -5, -8, -7};   // footwall (left), counter-clockwise
 Plane Surface(2) = {2};
+faultCurves[] = {7};
+leftCurves[] = {6};
+rightCurves[] = {3};
+Else
+// A horizontal interface at depth `layer` (above the end of the rate-and-state part) splits
+// both sides: regions "upper" and "lower".
+lc = layer * c / s;
+Point(8) = {lc, -layer, 0};            // the fault at the interface
+Point(9) = {-W + lc, -layer, 0};       // left side
+Point(10) = {W + lc, -layer, 0};       // right side
+Line(1) = {4, 1};
+Line(2) = {1, 5};
+Line(3) = {5, 10};
+Line(13) = {10, 6};
+Line(4) = {6, 3};
+Line(5) = {3, 7};
+Line(6) = {7, 9};
+Line(12) = {9, 4};
+Line(7) = {1, 8};    // fault above the interface
+Line(11) = {8, 2};   // fault below it
+Line(8) = {2, 3};    // creep
+Line(14) = {9, 8};   // interface, footwall
+Line(15) = {8, 10};  // interface, hanging wall
+Transfinite Curve{7} = Round(layer / s / h) + 1;
+Transfinite Curve{11} = Round((Wf - layer / s) / h) + 1;
+Curve Loop(1) = {7, 15, -3, -2};           // hanging wall, upper
+Plane Surface(1) = {1};
+Curve Loop(3) = {11, 8, -4, -13, -15};     // hanging wall, lower
+Plane Surface(3) = {3};
+Curve Loop(2) = {-1, -12, 14, -7};         // footwall, upper
+Plane Surface(2) = {2};
+Curve Loop(4) = {-6, -5, -8, -11, -14};    // footwall, lower
+Plane Surface(4) = {4};
+faultCurves[] = {7, 11};
+leftCurves[] = {6, 12};
+rightCurves[] = {3, 13};
+EndIf
 
 Field[1] = Distance;
-Field[1].CurvesList = {7};
+Field[1].CurvesList = {faultCurves[]};
 Field[1].NumPointsPerCurve = 4 * Round(Wf / h) + 1;
 Field[2] = MathEval;
 Field[2].F = Sprintf("Min(%g + %g * F1, %g)", h, grading, hFar);
 Background Field = 2;
 
 Physical Curve("top", 1) = {1, 2};
-Physical Curve("right", 2) = {3};
+Physical Curve("right", 2) = {rightCurves[]};
 Physical Curve("bottom", 3) = {4, 5};
-Physical Curve("left", 4) = {6};
-Physical Curve("fault", 5) = {7};
+Physical Curve("left", 4) = {leftCurves[]};
+Physical Curve("fault", 5) = {faultCurves[]};
 Physical Curve("creep", 6) = {8};
 // With -setnumber bimaterial 1 the two sides are regions of their own ("hangingWall",
-// "footWall"; constant/mechanicalProperties' regions), e.g. for rocks of contrasting stiffness.
+// "footWall"; constant/mechanicalProperties' regions), e.g. for rocks of contrasting stiffness;
+// with -setnumber layer L (> 0) the rock above depth L and below it are ("upper", "lower").
 DefineConstant[ bimaterial = {0, Name "Parameters/8Two regions, one per side of the fault"} ];
-If (bimaterial)
+If (layer > 0)
+  Physical Surface("upper", 1) = {1, 2};
+  Physical Surface("lower", 2) = {3, 4};
+ElseIf (bimaterial)
   Physical Surface("hangingWall", 1) = {1};
   Physical Surface("footWall", 2) = {2};
 Else
