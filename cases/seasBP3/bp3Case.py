@@ -5,7 +5,7 @@ dip and a sense of motion: constant/mechanicalProperties, constant/effects,
 constant/fractureProperties, 0/D, system/controlDict, system/frictionSolution, system/meshDict.
 
 Usage: bp3Case.py [--dip 60] [--sense thrust|normal] [--years 1500] [--deltaT-years 5]
-                  [--tolerance 1e-8]
+                  [--tolerance 1e-8] [--order 1|2]
 
 Every number below is the specification's (its Table 1, eqs. 4, 18, 19, 24-26), converted to
 libfriction's conventions (docs/method.md §2): y up, the fault walked down-dip from its trace,
@@ -22,6 +22,7 @@ p.add_argument("--sense", choices=["thrust", "normal"], default="thrust")
 p.add_argument("--years", type=float, default=1500.0)
 p.add_argument("--deltaT-years", type=float, default=5.0)
 p.add_argument("--tolerance", type=float, default=1e-8)
+p.add_argument("--order", type=int, choices=[1, 2], default=1)
 args = p.parse_args()
 
 year = 365 * 24 * 3600.0  # the specification's (and tandem's) year: 365 days
@@ -111,11 +112,11 @@ files["system/controlDict"] = head("controlDict") + (
     % (g(end), args.years, g(args.deltaT_years * year), args.deltaT_years, g(upDip[0]),
        g(upDip[1]), stations, g(5 * year), surface))
 files["system/frictionSolution"] = head("frictionSolution") + (
-    "elementOrder    1;\nlinearSolver    cholmod;\n"
+    "elementOrder    %d;\nlinearSolver    cholmod;\n"
     "timeIntegration { type quasiDynamic; relativeTolerance %g; }\n"
     "control\n{\n    gammaRelative   1;\n"
     "    optimizer { type semismoothNewton; tolerance 1e-10; maxIterations 100; }\n}\n"
-    % args.tolerance)
+    % (args.order, args.tolerance))
 files["system/meshDict"] = head("meshDict") + (
     "mesh        \"constant/mesh/bp3.msh\";\nfractures   (fault creep);   // joined at x_d = Wf: "
     "one node, fault's law\n")
