@@ -188,7 +188,7 @@ TEST_CASE("3D: a fracture network extruded in z agrees with the 2D solver on the
     }
     // Not a comparison of zeros: every fault slips through its junctions (branch at the
     // crossing, main at both).
-    for (const std::string& f : {"main", "branch"})
+    for (const std::string f : {"main", "branch"})
       CHECK(std::count(three.at(f).state.begin(), three.at(f).state.end(), "slip") >
             static_cast<long>(three.at(f).state.size() / 2));
   }
