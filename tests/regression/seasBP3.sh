@@ -19,8 +19,8 @@
 #  * signs: the station at 35 km (creeping with the load) has slipped forwards in the thrust
 #    case and backwards in the 30-degree normal one, whose shear starts at -26.546122 MPa;
 #  * refusals: faultOutput in a quasiStatic case, a station off the fault, law creep without
-#    quasiDynamic, a creep direction normal to the fault: exit 1, the key named, nothing
-#    written.
+#    quasiDynamic, a creep direction normal to the fault, two stations of one name: exit 1,
+#    the key named, nothing written.
 # Usage: seasBP3.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$1 src=$2 work=$3
@@ -168,4 +168,6 @@ sed -i 's/law         creep;/law coulomb; frictionCoefficient 0.6;/; /slipRate\|
 refuse "$work/bad" "system/controlDict" "faultOutput samples the steps of a quasi-dynamic run"
 fresh; sed -i 's/direction   (.*);/direction   (0.5 0.8660254037844386);/' "$work/bad/constant/fractureProperties"
 refuse "$work/bad" "constant/fractureProperties" "law creep's direction is normal to the fracture"
+fresh; sed -i 's/srfst_fn+08 (8000 0);/fltst_dp075 (8000 0);/' "$work/bad/system/controlDict"
+refuse "$work/bad" "system/controlDict" "surface station 'fltst_dp075': a station's name is its file's name"
 echo "PASS: refusals"

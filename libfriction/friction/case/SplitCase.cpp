@@ -98,13 +98,7 @@ void printIntersections(std::ostream& out, const Mesh& mesh, const SplitMesh& sp
     if (count > 1 && !onCurves.count(v)) points.push_back(v);
   if (curves.empty() && points.empty()) return;
   const auto names = [&](const std::vector<std::size_t>& list) {
-    std::string text;
-    for (std::size_t k = 0; k < list.size(); ++k)
-      text += (k == 0                 ? ""
-               : k + 1 == list.size() ? " and "
-                                      : ", ") +
-              ("'" + split.fractures[list[k]].name + "'");
-    return text;
+    return quotedFractureNames(split, list);
   };
   out << "Intersections: " << curves.size() << "\n";
   for (const IntersectionCurve& c : curves) {

@@ -1113,6 +1113,16 @@ std::map<Index, int> fractureCount(const SplitMesh& split) {
 }
 }  // namespace
 
+std::string quotedFractureNames(const SplitMesh& split, const std::vector<std::size_t>& list) {
+  std::string text;
+  for (std::size_t k = 0; k < list.size(); ++k)
+    text += (k == 0                 ? ""
+             : k + 1 == list.size() ? " and "
+                                    : ", ") +
+            ("'" + split.fractures[list[k]].name + "'");
+  return text;
+}
+
 std::vector<std::string> intersectionNotes(const SplitMesh& split,
                                            const std::vector<IntersectionCurve>& curves,
                                            std::size_t f) {
@@ -1121,13 +1131,7 @@ std::vector<std::string> intersectionNotes(const SplitMesh& split,
   std::map<Index, FractureNodeKind> kindOf;
   for (Index i = 0; i < g.numNodes(); ++i) kindOf[g.node[i]] = g.kind[i];
   const auto quoted = [&](const std::vector<std::size_t>& list) {
-    std::string text;
-    for (std::size_t k = 0; k < list.size(); ++k)
-      text += (k == 0                 ? ""
-               : k + 1 == list.size() ? " and "
-                                      : ", ") +
-              ("'" + split.fractures[list[k]].name + "'");
-    return text;
+    return quotedFractureNames(split, list);
   };
   std::set<Index> onCurves;
   for (const IntersectionCurve& c : curves) {

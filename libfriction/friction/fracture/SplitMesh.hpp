@@ -155,6 +155,9 @@ std::string othersAt(const SplitMesh& split, std::size_t f, Index node);
 /// "junction at (0 0): passes through; meets 'branch'". For the fracture tables' comments.
 std::vector<std::string> junctionNotes(const SplitMesh& split, std::size_t f);
 
+/// "'a'", "'a' and 'b'", "'a', 'b' and 'c'": the fractures of `list` by name, for messages.
+std::string quotedFractureNames(const SplitMesh& split, const std::vector<std::size_t>& list);
+
 /// 3D: one line per intersection curve of fracture f (intersectionCurves) saying its kind, the
 /// other fractures on it, where it runs and what f does there, e.g. "intersection (abutting)
 /// with 'main', 5 nodes from (0.75 0.2 0.5) to (0.75 0.8 0.5), length 0.6: ends on it, its

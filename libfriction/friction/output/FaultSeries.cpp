@@ -87,11 +87,7 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
       d.fail("stations", "key 'stations': expected a sub-dictionary of 'name arclength;' entries");
     const Dictionary& st = d.subDict("stations");
     for (const std::string& name : st.keys()) {
-      if (name.find('/') != std::string::npos || name == "slip" || name == "shearstress" ||
-          name == "normalstress")
-        st.fail(name, "station '" + name +
-                          "': a station's name is its file's name: no '/', and not one of the "
-                          "profiles' files (slip, shearstress, normalstress)");
+      o.checkStationName(st, name, "station");
       Station s;
       s.name = name;
       s.s = st.getScalar(name);
@@ -124,16 +120,7 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
              "key 'surfaceStations': expected a sub-dictionary of 'name (x y);' entries");
     const Dictionary& st = d.subDict("surfaceStations");
     for (const std::string& name : st.keys()) {
-      const bool taken = std::any_of(o.stations_.begin(), o.stations_.end(),
-                                     [&](const Station& x) { return x.name == name; }) ||
-                         std::any_of(o.surface_.begin(), o.surface_.end(),
-                                     [&](const Surface& x) { return x.name == name; });
-      if (name.find('/') != std::string::npos || name == "slip" || name == "shearstress" ||
-          name == "normalstress" || taken)
-        st.fail(name, "surface station '" + name +
-                          "': a station's name is its file's name: no '/', not one of the "
-                          "profiles' files (slip, shearstress, normalstress), not another "
-                          "station's");
+      o.checkStationName(st, name, "surface station");
       Surface x;
       x.name = name;
       x.x = st.getVector(name);
@@ -148,6 +135,20 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
     throw InputError(d.location(),
                      "faultOutput: give 'stations', 'profiles', 'surfaceStations' or some of them");
   return out;
+}
+
+void FaultSeries::checkStationName(const Dictionary& d, const std::string& name,
+                                   const std::string& what) const {
+  // A station's name is its file's name, of one folder with the profiles' and global.dat.
+  const bool taken = std::any_of(stations_.begin(), stations_.end(),
+                                 [&](const Station& x) { return x.name == name; }) ||
+                     std::any_of(surface_.begin(), surface_.end(),
+                                 [&](const Surface& x) { return x.name == name; });
+  if (name.find('/') != std::string::npos || name == "slip" || name == "shearstress" ||
+      name == "normalstress" || name == "global" || taken)
+    d.fail(name, what + " '" + name +
+                     "': a station's name is its file's name: no '/', not one of the other "
+                     "files (slip, shearstress, normalstress, global), not another station's");
 }
 
 FaultSeries::Station FaultSeries::locate(double s, const std::string& what,

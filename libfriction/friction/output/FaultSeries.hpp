@@ -144,6 +144,9 @@ class FaultSeries {
   Station locate(double s, const std::string& what, const SourceLocation& where,
                  const std::vector<ControlNode>& nodes) const;
   std::string header(const Station& st) const;
+  /// InputError naming the key unless `name` can be a file of its own in the output folder.
+  void checkStationName(const Dictionary& d, const std::string& name,
+                        const std::string& what) const;
 };
 
 }  // namespace friction
