@@ -1644,6 +1644,10 @@ RateStateFault FrictionCase::rateStateFault() {
   f.componentMask = system_->componentMask();
   f.imposed = &imposed_;
   f.imposedRate = &imposedRate_;
+  const auto& nodes = system_->controlNodes();
+  f.positions.resize(3, static_cast<Eigen::Index>(nodes.size()));
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    f.positions.col(static_cast<Eigen::Index>(i)) = nodes[i].position;
   return f;
 }
 
@@ -2061,8 +2065,16 @@ void FrictionCase::judgeStep(StepResult& r) const {
   // 2. The status written is the status of this state: the optimizer judged its own last
   // evaluation, which for Newton's condensed variant is the dense model, not this solve.
   const StopRule& rule = optimizer_->stopRule();
+  const double balanceTolerance = timeIntegrator_->balanceTolerance(rule.tolerance);
   if (r.report.status == OptimizerStatus::converged && rule.on == StopRule::On::residual &&
-      r.relResidual > rule.tolerance) {
+      r.relResidual > balanceTolerance && !timeIntegrator_->balanceNote().empty()) {
+    r.report.status = OptimizerStatus::inaccurate;
+    std::ostringstream s;
+    s << std::setprecision(3) << "the state written has |D|/|Sigma| " << r.relResidual << " > "
+      << balanceTolerance << ": " << timeIntegrator_->balanceNote();
+    addNote(s.str());
+  } else if (r.report.status == OptimizerStatus::converged && rule.on == StopRule::On::residual &&
+             r.relResidual > balanceTolerance) {
     r.report.status = OptimizerStatus::inaccurate;
     std::ostringstream s;
     s << std::setprecision(3) << "the iteration reached |D|/|Sigma| "

@@ -1,6 +1,7 @@
 // QuasiDynamic: rate-and-state faults integrated on the fault alone (QuasiDynamic.hpp).
 #include "friction/time/QuasiDynamic.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -27,6 +28,21 @@ QuasiDynamic::QuasiDynamic(const Dictionary* d) {
                     "dormandPrince54"
                 ? RungeKuttaScheme::dormandPrince54
                 : RungeKuttaScheme::bogackiShampine32;
+  // faultOperator: a word, or a sub-dictionary with its type and the compression's settings.
+  const std::vector<std::string> operators = {"dense", "hierarchical"};
+  if (d->isDict("faultOperator")) {
+    const Dictionary& f = d->subDict("faultOperator");
+    hierarchical_ = f.getChoice("type", operators) == "hierarchical";
+    if (hierarchical_) {
+      hSettings_.tolerance = f.getScalarOr("tolerance", hSettings_.tolerance, Bounds{1e-14, 1e-1});
+      hSettings_.eta = f.getScalarOr("eta", hSettings_.eta, Bounds{0.1, 100});
+      hSettings_.leafSize =
+          static_cast<int>(f.getIntOr("leafSize", hSettings_.leafSize, Bounds{4, 4096}));
+    }
+    f.checkAllRead();
+  } else {
+    hierarchical_ = d->getChoiceOr("faultOperator", operators, "dense") == "hierarchical";
+  }
 }
 
 std::string QuasiDynamic::describe() const {
@@ -36,12 +52,38 @@ std::string QuasiDynamic::describe() const {
     << ", relativeTolerance " << relTol_ << ", absoluteSlipTolerance " << absSlip_
     << " m, absoluteStateTolerance " << absState_;
   if (maxStep_ > 0) s << ", maxStep " << maxStep_ << " s";
+  if (hierarchical_)
+    s << "; S of the right-hand side as an H-matrix (tolerance " << hSettings_.tolerance << ", eta "
+      << hSettings_.eta << ", leafSize " << hSettings_.leafSize << ")";
   return s.str();
 }
 
 std::string QuasiDynamic::prepare(StepHost& host) {
   // The tractions come from S: the condensed Newton's operator, formed once per run.
-  return host.prepareSolver();
+  std::string built = host.prepareSolver();
+  if (!hierarchical_) return built;
+  // Compressed once per run: rows [τ (k·n); σ_n (n)] and columns (k·n) belong to the nodes.
+  const InterfaceOperator& S = host.faultOperator();
+  const RateStateFault fault = host.rateStateFault();
+  const Eigen::Index n = fault.positions.cols(), k = fault.k, kn = k * n;
+  std::vector<Eigen::Index> rowPoint(static_cast<std::size_t>(kn + n)),
+      colPoint(static_cast<std::size_t>(kn));
+  for (Eigen::Index r = 0; r < kn; ++r) rowPoint[static_cast<std::size_t>(r)] = r / k;
+  for (Eigen::Index i = 0; i < n; ++i) rowPoint[static_cast<std::size_t>(kn + i)] = i;
+  for (Eigen::Index c = 0; c < kn; ++c) colPoint[static_cast<std::size_t>(c)] = c / k;
+  const auto source = [&](const std::vector<Eigen::Index>& rows,
+                          const std::vector<Eigen::Index>& cols, Eigen::MatrixXd& out) {
+    for (std::size_t a = 0; a < rows.size(); ++a) {
+      const Eigen::Index r = rows[a];
+      for (std::size_t b = 0; b < cols.size(); ++b)
+        out(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
+            r < kn ? S.Stt(r, cols[b]) : S.Snt(r - kn, cols[b]);
+    }
+  };
+  H_ =
+      std::make_unique<HierarchicalMatrix>(source, fault.positions, rowPoint, colPoint, hSettings_);
+  return (built.empty() ? std::string() : built + "; ") + "S_tt and S_nt of the right-hand side " +
+         H_->stats().describe(static_cast<long>(kn + n), static_cast<long>(kn));
 }
 
 void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*previous*/) {
@@ -59,6 +101,19 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
   const Eigen::VectorXd& mask = fault.componentMask;
   std::vector<RateState> laws = *fault.laws;
   const double span = tB - tA;
+  // The tractions caused by a slip increment ds: S_tt ds and S_nt ds, dense or compressed.
+  const auto elasticIncrement = [&](const Eigen::VectorXd& ds, Eigen::VectorXd& dtau,
+                                    Eigen::VectorXd& dsigma) {
+    if (H_) {
+      Eigen::VectorXd y;
+      H_->multiply(ds, y);
+      dtau = y.head(kn);
+      dsigma = y.tail(n);
+    } else {
+      dtau.noalias() = S.Stt * ds;
+      dsigma.noalias() = S.Snt * ds;
+    }
+  };
 
   // The slip rate of every free component at (t, s, ψ), into V (k·n); false where a node's
   // balance has no solution (σ̄ ≤ 0: the fault opens; a law's solve failed).
@@ -66,8 +121,10 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
                              Eigen::VectorXd& V) {
     const double theta = span > 0 ? (t - tA) / span : 1.0;
     const Eigen::VectorXd ds = (s - sA).cwiseProduct(mask);
-    const Eigen::VectorXd tau = tauA + theta * (tauB - tauA) + S.Stt * ds;
-    const Eigen::VectorXd sigma = sigmaA + theta * (sigmaB - sigmaA) + S.Snt * ds;
+    Eigen::VectorXd tau, sigma;
+    elasticIncrement(ds, tau, sigma);
+    tau += tauA + theta * (tauB - tauA);
+    sigma += sigmaA + theta * (sigmaB - sigmaA);
     const Eigen::VectorXd p = loadsA.pressure + theta * (loadsB.pressure - loadsA.pressure);
     V.setZero(kn);
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -135,14 +192,20 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     smp.slip = &s;
     smp.psi = &psi;
     smp.rate = &V;
+    // Compressed: the whole product once, on the first node asked for (the tractions the
+    // integration used, not the dense S's, which differ by the compression's error).
+    Eigen::VectorXd dtau, dsigma;
     smp.traction = [&](Eigen::Index i, Eigen::VectorXd& tau, double& sigmaEff) {
+      if (H_ && dtau.size() == 0) elasticIncrement(ds, dtau, dsigma);
       tau.resize(k);
       for (int c = 0; c < k; ++c) {
         const Eigen::Index row = k * i + c;
-        tau[c] = tauA[row] + theta * (tauB[row] - tauA[row]) + S.Stt.row(row).dot(ds);
+        tau[c] =
+            tauA[row] + theta * (tauB[row] - tauA[row]) + (H_ ? dtau[row] : S.Stt.row(row).dot(ds));
       }
-      sigmaEff = sigmaA[i] + theta * (sigmaB[i] - sigmaA[i]) + S.Snt.row(i).dot(ds) +
-                 loadsA.pressure[i] + theta * (loadsB.pressure[i] - loadsA.pressure[i]);
+      sigmaEff = sigmaA[i] + theta * (sigmaB[i] - sigmaA[i]) +
+                 (H_ ? dsigma[i] : S.Snt.row(i).dot(ds)) + loadsA.pressure[i] +
+                 theta * (loadsB.pressure[i] - loadsA.pressure[i]);
     };
     host.rateSample(smp);
   };
@@ -204,6 +267,28 @@ std::string QuasiDynamic::summary() const {
     s << " (" << 1e6 * seconds_ / static_cast<double>(evaluations_)
       << " us each, fault outputs included; S_tt " << faultUnknowns_ << " x " << faultUnknowns_
       << ")";
+  return s.str();
+}
+
+double QuasiDynamic::balanceTolerance(double controlTolerance) const {
+  // The integration's tractions are S's product; the written state's come from a solve of the
+  // body. With S compressed they differ by the compression's error (block by block within
+  // its tolerance), so the balance cannot be judged tighter than that.
+  return hierarchical_ ? std::max(controlTolerance, hSettings_.tolerance) : controlTolerance;
+}
+
+std::string QuasiDynamic::balanceNote() const {
+  std::ostringstream s;
+  s << std::setprecision(3);
+  if (hierarchical_)
+    s << "the integration's tractions came from S compressed to an H-matrix within "
+      << hSettings_.tolerance
+      << " block by block, the written state's from a solve of the body: they differ by more "
+         "than the bound; tighten faultOperator's tolerance or use faultOperator dense";
+  else
+    s << "the integration's tractions came from S, the written state's from a solve of the "
+         "body: they differ by more than round-off; tighten the control's tolerance only if "
+         "this recurs (an ill-conditioned S)";
   return s.str();
 }
 

@@ -16,13 +16,18 @@
 // Settings (timeIntegration { type quasiDynamic; ... } in system/frictionSolution):
 //   relativeTolerance (1e-8), absoluteSlipTolerance [m] (1e-9), absoluteStateTolerance (1e-9)
 //   of the error control, scheme dormandPrince54 (default) or bogackiShampine32, maxStep [s]
-//   (none). Each interval starts from the step size the last one proposed (the integrator's
-//   state, restarted from uniform/frictionState), so a restarted run steps as an uninterrupted
-//   one.
+//   (none), faultOperator (the S_tt, S_nt of the right-hand side: `dense`, the default, or
+//   `{ type hierarchical; tolerance 1e-6; eta 2; leafSize 32; }`, compressed as an H-matrix,
+//   HierarchicalMatrix.hpp: a product then costs about (k+1)·n·r·log n instead of (k+1)·k·n²,
+//   within `tolerance` of the dense one block by block). Each interval starts from the step size
+//   the last one proposed (the integrator's state, restarted from uniform/frictionState), so a
+//   restarted run steps as an uninterrupted one.
 #pragma once
 
+#include <memory>
 #include <string>
 
+#include "friction/linalg/HierarchicalMatrix.hpp"
 #include "friction/time/EmbeddedRungeKutta.hpp"
 #include "friction/time/TimeIntegrator.hpp"
 
@@ -41,6 +46,8 @@ class QuasiDynamic : public TimeIntegrator {
   void readState(const Dictionary& in) override;
   bool takesRateState() const override { return true; }
   std::string summary() const override;
+  double balanceTolerance(double controlTolerance) const override;
+  std::string balanceNote() const override;
 
  private:
   double relTol_ = 1e-8, absSlip_ = 1e-9, absState_ = 1e-9, maxStep_ = 0;
@@ -49,6 +56,11 @@ class QuasiDynamic : public TimeIntegrator {
   long accepted_ = 0, rejected_ = 0, evaluations_ = 0;  ///< over this run, for the log
   double seconds_ = 0;      ///< wall time in the Runge-Kutta integrations (fault-only work) [s]
   long faultUnknowns_ = 0;  ///< k·n, the size of S_tt
+  /// faultOperator hierarchical: [S_tt; S_nt] compressed (formed in prepare(), from the S the
+  /// case holds; rebuilt alike by a restarted run, so that it steps as an uninterrupted one).
+  bool hierarchical_ = false;
+  HierarchicalSettings hSettings_;
+  std::unique_ptr<HierarchicalMatrix> H_;
 };
 
 }  // namespace friction

@@ -73,6 +73,7 @@ struct RateStateFault {
   /// that rate (k·n) [m/s].
   const Eigen::VectorXd* imposed = nullptr;
   const Eigen::VectorXd* imposedRate = nullptr;
+  Eigen::MatrixXd positions;  ///< 3 × n: the nodes' positions [m] (z = 0 in 2D)
 };
 
 /// What the case offers a time integrator (FrictionCase implements it).
@@ -140,6 +141,12 @@ class TimeIntegrator {
   virtual std::string describe() const { return ""; }
   /// What the run's integration cost, for the log's last lines ("" when nothing to add).
   virtual std::string summary() const { return ""; }
+  /// The balance residual |D|/|Sigma| a step's written state is judged against, given the
+  /// control's tolerance; and, when a state exceeds it, why and what to do ("": the control's
+  /// own reasons). An integrator whose tractions carry an error of their own (a compressed
+  /// S) widens the bound to that error and says so.
+  virtual double balanceTolerance(double controlTolerance) const { return controlTolerance; }
+  virtual std::string balanceNote() const { return ""; }
 };
 
 /// The quasi-static stepping: one control problem per time of the grid.
