@@ -1603,36 +1603,15 @@ void FrictionCase::rateSample(const RateSample& sample) {
 }
 
 void FrictionCase::buildSurfaceResponse(std::ostream& log) {
-  // G = W ∂u/∂β: one primal solve per free slip component under no load at all (no load
-  // vector, Dirichlet values 0, no slip), so that G is the same bits whatever the time it is
-  // formed at (a restarted run's), once per run.
+  // G = W ∂u/∂β under no load at all (no load vector, Dirichlet values 0, no slip), so that
+  // G is the same bits whatever the time it is formed at (a restarted run's), once per run; by
+  // the adjoint, one back-substitution per station component (collective).
   if (!faultSeries_ || !faultSeries_->hasSurfaceStations()) return;
   Stopwatch clock;
-  FractureSystem& sys = *system_;
-  const Eigen::Index n = sys.size(), k = sys.blockSize();
   const Eigen::SparseMatrix<double>& W = faultSeries_->surfaceOperator();
-  DirichletConditions& held = sys.dirichlet();
-  const Eigen::VectorXd saved = held.values();
-  for (Eigen::Index i = 0; i < saved.size(); ++i)
-    if (saved[i] != 0) held.setValue(i, 0.0);
-  sys.setStep(Eigen::VectorXd::Zero(sys.splitSpace().numDofs()), Eigen::VectorXd::Zero(k * n));
-  sys.setTractionOffset(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(k * n));
-  const Eigen::VectorXd mask = sys.componentMask();
-  Eigen::VectorXd tau, sigmaN, beta = Eigen::VectorXd::Zero(k * n);
-  surfaceResponse_ = Eigen::MatrixXd::Zero(W.rows(), k * n);
-  long solves = 0;
-  for (Eigen::Index c = 0; c < k * n; ++c) {
-    if (mask[c] == 0) continue;
-    beta[c] = 1.0;
-    sys.primal(beta, tau, sigmaN);  // collective: every rank solves, rank 0 keeps the column
-    if (parallel::isMaster()) surfaceResponse_.col(c) = W * sys.lastSplitDisplacement();
-    beta[c] = 0.0;
-    ++solves;
-  }
-  for (Eigen::Index i = 0; i < saved.size(); ++i)
-    if (saved[i] != 0) held.setValue(i, saved[i]);
+  surfaceResponse_ = system_->displacementResponse(W);
   log << "Setup: the surface stations' response to the slip (" << W.rows() / 2 << " stations, "
-      << solves << " back-substitutions, once per run): " << clock.seconds() << " s\n";
+      << W.rows() << " back-substitutions, once per run): " << clock.seconds() << " s\n";
 }
 
 RateStateFault FrictionCase::rateStateFault() {

@@ -1012,4 +1012,28 @@ double FractureSystem::equilibriumResidual() const {
 
 Eigen::VectorXd FractureSystem::lastSplitDisplacement() const { return P_ * x_ + L_ * lastJump_; }
 
+Eigen::MatrixXd FractureSystem::displacementResponse(const Eigen::SparseMatrix<double>& W) {
+  FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before solving");
+  // The primal map with no load and zero Dirichlet values: j = T β (the frames, componentMask),
+  // x = Rᵀ A⁻¹ R (−B j) (R: the free dofs), u = P x + L j. So wᵀ u = gᵀ β with
+  // g = Tᵀ (Lᵀ w − Bᵀ Rᵀ A⁻¹ R Pᵀ w): one solve per row w of W.
+  const Index n = size(), k = blockSize(), d = dim_;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dirichlet_->numFixed());
+  const Eigen::SparseMatrix<double> Wt = W.transpose();
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(W.rows(), k * n);
+  for (Index r = 0; r < W.rows(); ++r) {
+    const Eigen::VectorXd w = Wt.col(r);
+    const Eigen::VectorXd Ptw = P_.transpose() * w;
+    const Eigen::VectorXd s = factor_->solve(reduced_->rhs(Ptw, zero));
+    const Eigen::VectorXd v = L_.transpose() * w - B_.transpose() * reduced_->expand(s, zero);
+    for (Index i = 0; i < n; ++i)
+      for (int c = 0; c < k; ++c) {
+        double g = 0;
+        for (int a = 0; a < d; ++a) g += nodes_[i].tangent[c][a] * v[d * i + a];
+        G(r, k * i + c) = componentMask_[k * i + c] * g;
+      }
+  }
+  return G;
+}
+
 }  // namespace friction

@@ -155,6 +155,11 @@ class FractureSystem : public SlipResponse {
   double equilibriumResidual() const;
   /// The split displacement [m] of the last primal solve (all split-space dofs).
   Eigen::VectorXd lastSplitDisplacement() const;
+  /// W ∂u/∂β (W.rows() × k·n): what W sees of the split displacement per unit slip of each
+  /// free component, under no load and zero Dirichlet values. By the adjoint: one
+  /// back-substitution per row of W (a few per surface station), not one per slip component.
+  /// Collective with a distributed factor (every rank calls it alike).
+  Eigen::MatrixXd displacementResponse(const Eigen::SparseMatrix<double>& W);
   /// The unsplit dofs x of the last primal solve (for tests: equal to the unsplit linear
   /// solve when no jump is imposed).
   const Eigen::VectorXd& lastUnsplitSolution() const { return x_; }
