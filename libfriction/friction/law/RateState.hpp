@@ -65,6 +65,8 @@ struct RateState {
   /// "" when the parameters are valid, else which one is wrong and what was expected
   /// (for the caller's InputError, which names the file and key).
   std::string invalid() const;
+  /// invalid().empty(), without forming a message.
+  bool valid() const;
 
   /// f(V, ψ) = a asinh[(V/2V₀) e^{ψ/a}] (–), odd in V [m/s]; no overflow for any finite ψ.
   double friction(double V, double psi) const;
