@@ -15,6 +15,8 @@
 #    (the H-matrix is formed again, alike);
 #  * 3D (tests/regression/cases/faultInCube, two tangential components per node, leaves of 4
 #    nodes): the slips of a dense and a compressed (1e-10) run agree to 1e-8;
+#  * faultOperator auto (the default): dense below 1 000 rows of S_tt, compressed from there,
+#    as the log says;
 #  * refusals: a tolerance out of its bounds, an unknown type, an unknown key: exit 1, the key
 #    named, nothing written.
 # Usage: faultOperatorHierarchical.sh BIN_DIR SOURCE_DIR WORK_DIR
@@ -141,6 +143,25 @@ if not scale > 0 or diff > 1e-4 * scale:
     sys.exit("FAIL: 3D slips of the compressed run differ by %.3g (bound 1e-4 of %.3g)" % (diff, scale))
 PY
 echo "PASS: 3D, compressed against dense"
+
+# The default, faultOperator auto: dense below 1 000 rows of S_tt (400 m, P1: 152), compressed
+# from there (80 m, P2: over 1 000), and the log says which and why.
+make_case "$work/auto/bp3" ""
+cd "$work/auto/bp3"
+sed -i 's/ faultOperator / /' system/frictionSolution
+! grep -q faultOperator system/frictionSolution || { echo "FAIL: auto: faultOperator still set"; exit 1; }
+sed -i "s/^endTime .*/endTime $year;/" system/controlDict
+"$bin/frictionSolver" -case . >log.frictionSolver 2>&1
+grep -q "S of the right-hand side dense (faultOperator auto: S_tt 152 x 152, below 1000 rows)" log.frictionSolver ||
+  { echo "FAIL: auto at 400 m: no 'dense' line"; grep Setup log.frictionSolver; exit 1; }
+cp -r "$src/cases/seasBP3" "$work/autoP2"
+cd "$work/autoP2"
+./Allclean >/dev/null && /usr/bin/python3 bp3Case.py --years 1 --order 2 >/dev/null && ./Allmesh -h 80 >/dev/null &&
+  "$bin/splitFractureNodes" -case . >log.splitFractureNodes 2>&1
+"$bin/frictionSolver" -case . >log.frictionSolver 2>&1 || { echo "FAIL: auto at 80 m, P2"; exit 1; }
+grep -q "S_tt and S_nt of the right-hand side (faultOperator auto: S_tt [0-9]* rows, from 1000) H-matrix" \
+  log.frictionSolver || { echo "FAIL: auto at 80 m, P2: not compressed"; grep Setup log.frictionSolver; exit 1; }
+echo "PASS: faultOperator auto: dense at 152 rows, compressed at $(grep -o 'auto: S_tt [0-9]* rows' log.frictionSolver)"
 
 # Refusals.
 refuse() {  # NAME FAULT_OPERATOR EXPECTED_TEXT

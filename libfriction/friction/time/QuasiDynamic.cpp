@@ -29,11 +29,12 @@ QuasiDynamic::QuasiDynamic(const Dictionary* d) {
                 ? RungeKuttaScheme::dormandPrince54
                 : RungeKuttaScheme::bogackiShampine32;
   // faultOperator: a word, or a sub-dictionary with its type and the compression's settings.
-  const std::vector<std::string> operators = {"dense", "hierarchical"};
+  const std::vector<std::string> operators = {"auto", "dense", "hierarchical"};
+  std::string type = "auto";
   if (d->isDict("faultOperator")) {
     const Dictionary& f = d->subDict("faultOperator");
-    hierarchical_ = f.getChoice("type", operators) == "hierarchical";
-    if (hierarchical_) {
+    type = f.getChoice("type", operators);
+    if (type != "dense") {
       hSettings_.tolerance = f.getScalarOr("tolerance", hSettings_.tolerance, Bounds{1e-14, 1e-1});
       hSettings_.eta = f.getScalarOr("eta", hSettings_.eta, Bounds{0.1, 100});
       hSettings_.leafSize =
@@ -41,8 +42,12 @@ QuasiDynamic::QuasiDynamic(const Dictionary* d) {
     }
     f.checkAllRead();
   } else {
-    hierarchical_ = d->getChoiceOr("faultOperator", operators, "dense") == "hierarchical";
+    type = d->getChoiceOr("faultOperator", operators, "auto");
   }
+  choice_ = type == "auto"    ? OperatorChoice::automatic
+            : type == "dense" ? OperatorChoice::dense
+                              : OperatorChoice::hierarchical;
+  hierarchical_ = choice_ == OperatorChoice::hierarchical;
 }
 
 std::string QuasiDynamic::describe() const {
@@ -52,20 +57,32 @@ std::string QuasiDynamic::describe() const {
     << ", relativeTolerance " << relTol_ << ", absoluteSlipTolerance " << absSlip_
     << " m, absoluteStateTolerance " << absState_;
   if (maxStep_ > 0) s << ", maxStep " << maxStep_ << " s";
-  if (hierarchical_)
-    s << "; S of the right-hand side as an H-matrix (tolerance " << hSettings_.tolerance << ", eta "
-      << hSettings_.eta << ", leafSize " << hSettings_.leafSize << ")";
+  if (choice_ != OperatorChoice::dense)
+    s << "; S of the right-hand side as an H-matrix"
+      << (choice_ == OperatorChoice::automatic
+              ? " where S_tt has " + std::to_string(autoHierarchicalFrom) + " rows or more"
+              : std::string())
+      << " (tolerance " << hSettings_.tolerance << ", eta " << hSettings_.eta << ", leafSize "
+      << hSettings_.leafSize << ")";
   return s.str();
 }
 
 std::string QuasiDynamic::prepare(StepHost& host) {
   // The tractions come from S: the condensed Newton's operator, formed once per run.
   std::string built = host.prepareSolver();
+  const RateStateFault fault = host.rateStateFault();
+  const Eigen::Index n = fault.positions.cols(), k = fault.k, kn = k * n;
+  if (choice_ == OperatorChoice::automatic) {
+    hierarchical_ = kn >= autoHierarchicalFrom;
+    if (!hierarchical_)
+      return (built.empty() ? std::string() : built + "; ") +
+             "S of the right-hand side dense (faultOperator auto: S_tt " + std::to_string(kn) +
+             " x " + std::to_string(kn) + ", below " + std::to_string(autoHierarchicalFrom) +
+             " rows)";
+  }
   if (!hierarchical_) return built;
   // Compressed once per run: rows [τ (k·n); σ_n (n)] and columns (k·n) belong to the nodes.
   const InterfaceOperator& S = host.faultOperator();
-  const RateStateFault fault = host.rateStateFault();
-  const Eigen::Index n = fault.positions.cols(), k = fault.k, kn = k * n;
   std::vector<Eigen::Index> rowPoint(static_cast<std::size_t>(kn + n)),
       colPoint(static_cast<std::size_t>(kn));
   for (Eigen::Index r = 0; r < kn; ++r) rowPoint[static_cast<std::size_t>(r)] = r / k;
@@ -102,6 +119,10 @@ std::string QuasiDynamic::prepare(StepHost& host) {
   yD << yT, yN;
   std::ostringstream s;
   s << (built.empty() ? std::string() : built + "; ") << "S_tt and S_nt of the right-hand side "
+    << (choice_ == OperatorChoice::automatic
+            ? "(faultOperator auto: S_tt " + std::to_string(kn) + " rows, from " +
+                  std::to_string(autoHierarchicalFrom) + ") "
+            : std::string())
     << H_->stats().describe(static_cast<long>(kn + n), static_cast<long>(kn)) << "; a product "
     << std::setprecision(3) << 1e6 * hBest << " us against the dense S's " << 1e6 * denseBest
     << " us (" << denseBest / std::max(hBest, 1e-12) << "x), relative difference "

@@ -16,12 +16,13 @@
 // Settings (timeIntegration { type quasiDynamic; ... } in system/frictionSolution):
 //   relativeTolerance (1e-8), absoluteSlipTolerance [m] (1e-9), absoluteStateTolerance (1e-9)
 //   of the error control, scheme dormandPrince54 (default) or bogackiShampine32, maxStep [s]
-//   (none), faultOperator (the S_tt, S_nt of the right-hand side: `dense`, the default, or
-//   `{ type hierarchical; tolerance 1e-6; eta 2; leafSize 32; }`, compressed as an H-matrix,
-//   HierarchicalMatrix.hpp: a product then costs about (k+1)·n·r·log n instead of (k+1)·k·n²,
-//   within `tolerance` of the dense one block by block). Each interval starts from the step size
-//   the last one proposed (the integrator's state, restarted from uniform/frictionState), so a
-//   restarted run steps as an uninterrupted one.
+//   (none), faultOperator (the S_tt, S_nt of the right-hand side: `auto`, the default, is
+//   `hierarchical` where S_tt has autoHierarchicalFrom rows or more and `dense` below;
+//   `dense`; or `{ type hierarchical; tolerance 1e-6; eta 2; leafSize 32; }`, compressed as an
+//   H-matrix, HierarchicalMatrix.hpp: a product then costs about (k+1)·n·r·log n instead of
+//   (k+1)·k·n², within `tolerance` of the dense one block by block). Each interval starts from the
+//   step size the last one proposed (the integrator's state, restarted from uniform/frictionState),
+//   so a restarted run steps as an uninterrupted one.
 #pragma once
 
 #include <memory>
@@ -58,7 +59,13 @@ class QuasiDynamic : public TimeIntegrator {
   long faultUnknowns_ = 0;  ///< k·n, the size of S_tt
   /// faultOperator hierarchical: [S_tt; S_nt] compressed (formed in prepare(), from the S the
   /// case holds; rebuilt alike by a restarted run, so that it steps as an uninterrupted one).
-  bool hierarchical_ = false;
+  enum class OperatorChoice { automatic, dense, hierarchical };
+  OperatorChoice choice_ = OperatorChoice::automatic;
+  /// faultOperator auto compresses S where S_tt has this many rows or more (k·n): measured on
+  /// BP3 (utilities/frictionStudy/faultOperatorStudy.sh, README), below it a product by the
+  /// H-matrix saves little and the right-hand side's other work dominates.
+  static constexpr long autoHierarchicalFrom = 1000;
+  bool hierarchical_ = false;  ///< decided in prepare() for auto
   HierarchicalSettings hSettings_;
   std::unique_ptr<HierarchicalMatrix> H_;
 };
