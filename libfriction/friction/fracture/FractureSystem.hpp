@@ -18,8 +18,9 @@
 // edges, each edge once, by ascending (smaller, larger) unsplit end numbers. The jump is held at
 // zero at tips (single nodes: the tip line in 3D) and at nodes on Dirichlet patches. Signs and
 // the 3D frame: SignConventions.hpp. Where fractures meet (2D junctions, 3D intersection
-// curves in P1) the jumps of the fractures passing through a node move its sectors, and a
-// fracture ending there is held (controlNodes2D, controlNodes3D).
+// curves, P1 and P2) the jumps of the fractures passing through a node move its sectors, a
+// fracture ending on another is held, and two ending together (joined) share the first's
+// control node (controlNodes2D, controlNodes3D).
 #pragma once
 
 #include <array>
@@ -164,8 +165,8 @@ class FractureSystem : public SlipResponse {
   /// Fracture f's node i as a control node: its copies and position (the frame is the caller's).
   ControlNode vertexNode(int f, const FractureGeometry& g, Index i) const;
   void controlNodes2D(int degree);
-  // Junctions (2D) and intersection nodes (3D P1): the lifting L and recovery E at nodes
-  // where several fractures meet.
+  // Junctions (2D) and intersection nodes (3D: vertices, and P2 mid-edge nodes on the curves):
+  // the lifting L and recovery E at nodes where several fractures meet.
   struct JunctionBranch {
     Index plusCopy, minusCopy;  ///< the sectors on either side of a fracture edge at the node
     Index node;                 ///< the control node whose jump it carries, −1 if held
@@ -225,8 +226,16 @@ class FractureSystem : public SlipResponse {
   // consistent mass on R with the other nodes' columns extended from R, X: Σ_R to all nodes.
   bool consistent_ = false;
   std::vector<std::array<Index, 6>> faultTriangles_;  ///< control nodes of each P2 fault triangle
-  std::vector<Index> recovered_;                      ///< R: control node of each row of G
-  Eigen::SparseMatrix<double> extend_;                ///< X: n × |R|
+  std::vector<double> faultTriangleArea_;             ///< [m²], per faultTriangles_
+  /// Per faultTriangles_ node: −1 at a joined node owned by a fracture oriented against the
+  /// triangle's (its Σ is the opposite of the triangle's field), else +1.
+  std::vector<std::array<double, 6>> faultTriangleSign_;
+  /// 3D: fault surfaces meet (some node of several fractures): weights and the P2 mass from
+  /// each fracture's triangles on its control nodes.
+  bool meet_ = false;
+  std::vector<std::vector<Index>> vertexControl_;  ///< 3D: per fracture node, its control node
+  std::vector<Index> recovered_;                   ///< R: control node of each row of G
+  Eigen::SparseMatrix<double> extend_;             ///< X: n × |R|
   Eigen::SparseLU<Eigen::SparseMatrix<double>> massLU_, massLUt_;  ///< G and Gᵀ
 };
 

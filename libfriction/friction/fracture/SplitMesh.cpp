@@ -1010,7 +1010,8 @@ std::string IntersectionCurve::kind() const {
   if (onOuterBoundary) return "on the outer boundary";
   if (passing.size() >= 2) return "crossing";
   if (passing.size() == 1) return "abutting";
-  return "ending together";
+  // Two ending together act as one surface there (the 2D kind's name); three or more are held.
+  return ending.size() == 2 ? "joined" : "ending together";
 }
 
 std::vector<IntersectionCurve> intersectionCurves(const SplitMesh& split, const Mesh& unsplit) {
