@@ -1164,8 +1164,12 @@ std::vector<std::string> intersectionNotes(const SplitMesh& split,
     if (passes)
       line << "passes through";
     else if (c.passing.empty())
+      // A joined node is one control node, the first-listed fracture's: its row is there.
       line << "ends together with " << (others.size() == 1 ? "it" : "them") << " (" << joined
-           << " nodes joined, " << held << " held: state junction)";
+           << " nodes joined, their rows "
+           << (c.ending.front() == f ? std::string("in this table")
+                                     : "in '" + split.fractures[c.ending.front()].name + "'")
+           << "; " << held << " held: state junction)";
     else
       line << "ends on " << (c.passing.size() == 1 ? "it" : "them") << ", its jump held at " << held
            << " nodes (state junction)";
