@@ -410,7 +410,8 @@ joinedFaults3d)
   # A fault cut along a line into two ('west' and 'east', ending together: joined) equals the
   # uncut one ('main') on the same mesh (faultNetworkBox/constant/mesh/joined.geo), P1 and P2,
   # with the cut line from tip line to tip line and reaching the free outer boundary: the
-  # split summary reports the curve, and the tables' slips agree to the tables' 10 digits.
+  # split summary reports the curve, and the tables' slips agree to the tables' 10 digits;
+  # east's .vtp (P1, tip to tip) has the line's nodes from west's table.
   for across in 0 1; do
     for order in 1 2; do
       for cut in 0 1; do
@@ -422,7 +423,8 @@ joinedFaults3d)
           fail "gmsh failed: $(tail -3 "$c/gmsh.log")"
         sed -i 's/^elementOrder .*/elementOrder    2;/' "$c/system/frictionSolution"
         ((order == 1)) && sed -i 's/^elementOrder .*/elementOrder    1;/' "$c/system/frictionSolution"
-        sed -i 's/^deltaT .*/deltaT          1;/; s/^writeVTK .*/writeVTK        no;/' "$c/system/controlDict"
+        sed -i 's/^deltaT .*/deltaT          1;/' "$c/system/controlDict"
+        ((across + order == 1)) || sed -i 's/^writeVTK .*/writeVTK        no;/' "$c/system/controlDict"
         if ((cut)); then
           sed -i 's/main 5; crossing 6; abutting 7;/west 5; east 6;/; s/fractures (main crossing abutting);/fractures (west east);/' "$c/system/meshDict"
           sed -i 's/^main$/west/; s/^crossing$/east/; /^abutting$/,/^}/d' "$c/constant/fractureProperties"
@@ -441,6 +443,13 @@ joinedFaults3d)
       done
       uncut=$work/across$across-P$order-cut0/1/fractures cut=$work/across$across-P$order-cut1/1/fractures
       expect "$(sed -n 4p "$cut/west.dat")" "# intersection (joined) with 'east'"
+      if ((across + order == 1)); then
+        # east's .vtp: its table's rows and the 5 nodes of the line, whose rows are in west's
+        # (3 joined, 2 tips), which its triangles use.
+        rows=$(grep -c '^[^#]' "$cut/east.dat")
+        grep -qa "NumberOfPoints=\"$((rows + 5))\"" "$work/across0-P1-cut1/VTK/fractures/east_1.vtp" ||
+          fail "east_1.vtp: not $((rows + 5)) points"
+      fi
       expect "$(sed -n 4p "$cut/east.dat")" "ends together with it ($( ((across)) && echo 7 || echo 3) nodes joined, their rows in 'west'; 0 held"
       /usr/bin/python3 - "$uncut/main.dat" "$cut/west.dat" "$cut/east.dat" <<'PY' || fail "across $across, P$order: the cut fault differs from the uncut one"
 import sys

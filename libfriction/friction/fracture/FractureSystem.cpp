@@ -453,7 +453,13 @@ void FractureSystem::controlNodes3D(int degree) {
       controlOf.push_back(static_cast<Index>(nodes_.size()));
       nodes_.push_back(v);
     }
-    if (degree != 2) continue;
+    triangleNodes_.emplace_back();
+    if (degree != 2) {
+      for (const auto& t : g.triangles)
+        triangleNodes_.back().push_back(
+            {controlOf[local[t[0]]], controlOf[local[t[1]]], controlOf[local[t[2]]], -1, -1, -1});
+      continue;
+    }
     // Each edge once, by ascending (smaller, larger) end: its midpoint's normal sums the
     // right-hand normals (b − a) × (c − a) (twice the area times n_Γ) of its triangles.
     std::map<Edge, Point> edgeNormal;
@@ -507,6 +513,10 @@ void FractureSystem::controlNodes3D(int degree) {
       m.tip = m.plus == m.minus || m.junction;
       midControl[f][edge] = static_cast<Index>(nodes_.size());
       nodes_.push_back(m);
+      if (curveEdges.count(edge)) {
+        edgeCode_.resize(nodes_.size(), 0);
+        edgeCode_.back() = role == Role::passes ? 1 : role == Role::held ? 2 : 3;
+      }
     }
     // The six control nodes of each triangle (for the recovery's extension, factor()).
     for (const auto& t : g.triangles) {
@@ -522,9 +532,11 @@ void FractureSystem::controlNodes3D(int degree) {
       }
       faultTriangles_.push_back(c);
       faultTriangleSign_.push_back(sign);
+      triangleNodes_.back().push_back(c);
       faultTriangleArea_.push_back(0.5 * cross(t).norm());
     }
   }
+  if (!edgeCode_.empty()) edgeCode_.resize(nodes_.size(), 0);
   // A joined node's frame is that of the two fractures as one surface: the sum of both
   // fractures' right-hand normals, the second's turned where its Ω⁺ is the first's Ω⁻.
   for (const Joined& j : joinedTo) normalSum.at(j.node) += j.sign * j.normalSum;

@@ -112,6 +112,19 @@ class FractureSystem : public SlipResponse {
   Index ownCells() const { return ownCells_; }
 
   const std::vector<ControlNode>& controlNodes() const { return nodes_; }
+  /// 3D: fracture f's triangles (its order) by control node: the three vertices, then for P2
+  /// the mid-edge nodes of (0 1), (1 2), (2 0) (−1 in P1). A joined node is the first-listed
+  /// fracture's control node, in the other's triangles too.
+  const std::vector<std::array<Index, 6>>& triangleNodes(std::size_t f) const {
+    return triangleNodes_.at(f);
+  }
+  /// 3D: the control node of fracture f's node i (SplitMesh order).
+  const std::vector<Index>& vertexControl(std::size_t f) const { return vertexControl_.at(f); }
+  /// 3D P2: per control node, for a mid-edge node on an intersection curve what its fracture
+  /// does there (intersectionCodes' numbers: 1 passes, 2 held, 3 joined), else 0.
+  int edgeIntersectionCode(Index k) const {
+    return edgeCode_.empty() ? 0 : edgeCode_[static_cast<std::size_t>(k)];
+  }
   /// 3D: replace node i's tangent basis by (t₁, n_Γ × t₁), t₁ a unit vector normal to n_Γ —
   /// another choice than tangentBasis()'s. Tangential components (β, τ, S) are then on the new
   /// basis; the physics does not change (the laws are isotropic in the tangent plane).
@@ -234,8 +247,10 @@ class FractureSystem : public SlipResponse {
   /// each fracture's triangles on its control nodes.
   bool meet_ = false;
   std::vector<std::vector<Index>> vertexControl_;  ///< 3D: per fracture node, its control node
-  std::vector<Index> recovered_;                   ///< R: control node of each row of G
-  Eigen::SparseMatrix<double> extend_;             ///< X: n × |R|
+  std::vector<std::vector<std::array<Index, 6>>> triangleNodes_;  ///< 3D: triangleNodes()
+  std::vector<int> edgeCode_;                                     ///< 3D P2: edgeIntersectionCode
+  std::vector<Index> recovered_;        ///< R: control node of each row of G
+  Eigen::SparseMatrix<double> extend_;  ///< X: n × |R|
   Eigen::SparseLU<Eigen::SparseMatrix<double>> massLU_, massLUt_;  ///< G and Gᵀ
 };
 
