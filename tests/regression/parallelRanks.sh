@@ -13,7 +13,8 @@
 #         strikeSlipFault (3D: gravity, in-situ stress, cohesion, 8 steps), faultInCubeP2 (3D,
 #         P2: the consistent traction recovery), sneddonCrack (a crack that opens: contact
 #         unilateral), faultNetworkBox (3D: fault surfaces crossing and abutting, the
-#         intersection curves' sectors; 4 steps), refusals, outputErrors, rigidBody
+#         intersection curves' sectors; 4 steps), faultNetworkBoxP2 (the same in P2: the
+#         curves' mid-edge nodes too), refusals, outputErrors, rigidBody
 set -u
 bin=$1 src=$2 work=$3 scenario=$4
 fail() { echo "FAIL [parallel.$scenario]: $*" >&2; exit 1; }
@@ -46,7 +47,7 @@ prepare() {  # prepare NAME SOURCE_CASE: a split copy in NAME/case (VTK files ar
 case $scenario in
   paperBenchmarkP2) base=paperBenchmark ;;
   faultInCubeP2) base=tests/regression/cases/faultInCube ;;
-  faultNetworkBox) base=tests/regression/cases/faultNetworkBox ;;
+  faultNetworkBox | faultNetworkBoxP2) base=tests/regression/cases/faultNetworkBox ;;
   fractureNetwork | strikeSlipFault | sneddonCrack) base=$scenario ;;
   refusals)
     prepare refuse paperBenchmark

@@ -384,6 +384,101 @@ shallowIntersection3d)
     expect "$(sed -n 4p "$c/1/fractures/$f.dat")" "# intersection (crossing) with '"
   done
   ;;
+faultNetwork3dP2)
+  # The faults of faultNetwork3d in P2: the mid-edge nodes on the curves are junction nodes
+  # too. 'abutting' is held at its 3 inner vertices and the 4 mid-edge nodes of the curve;
+  # 'main' and 'crossing' slip; every .vtp has the array 'intersection'.
+  cp -r "$src/tests/regression/cases/faultNetworkBox" "$work/"; c=$work/faultNetworkBox
+  "$c/Allclean" >/dev/null
+  sed -i 's/^elementOrder .*/elementOrder    2;/' "$c/system/frictionSolution"
+  run -case "$c"
+  ((rc == 0)) || fail "exit code $rc"
+  solve -case "$c"
+  ((rc == 0)) || fail "frictionSolver: exit code $rc"
+  expect "$out" "converged"
+  held=$(grep -c ' junction$' "$c/1/fractures/abutting.dat")
+  ((held == 7)) || fail "abutting.dat: $held nodes in state junction (7 expected)"
+  for f in main crossing; do
+    slipping=$(grep -c ' slip$' "$c/1/fractures/$f.dat")
+    ((slipping > 0)) || fail "$f.dat: no node slips"
+  done
+  for f in main crossing abutting; do
+    grep -qa 'Name="intersection"' "$c/VTK/fractures/${f}_1.vtp" || fail "${f}_1.vtp: no array intersection"
+  done
+  ;;
+joinedFaults3d)
+  # A fault cut along a line into two ('west' and 'east', ending together: joined) equals the
+  # uncut one ('main') on the same mesh (faultNetworkBox/constant/mesh/joined.geo), P1 and P2,
+  # with the cut line from tip line to tip line and reaching the free outer boundary: the
+  # split summary reports the curve, and the tables' slips agree to the tables' 10 digits;
+  # east's .vtp (P1, tip to tip) has the line's nodes from west's table.
+  for across in 0 1; do
+    for order in 1 2; do
+      for cut in 0 1; do
+        c=$work/across$across-P$order-cut$cut
+        cp -r "$src/tests/regression/cases/faultNetworkBox" "$c"
+        "$c/Allclean" >/dev/null
+        gmsh -3 -format msh41 -setnumber cut $cut -setnumber across $across \
+          "$c/constant/mesh/joined.geo" -o "$c/constant/mesh/network.msh" >"$c/gmsh.log" 2>&1 ||
+          fail "gmsh failed: $(tail -3 "$c/gmsh.log")"
+        sed -i 's/^elementOrder .*/elementOrder    2;/' "$c/system/frictionSolution"
+        ((order == 1)) && sed -i 's/^elementOrder .*/elementOrder    1;/' "$c/system/frictionSolution"
+        sed -i 's/^deltaT .*/deltaT          1;/' "$c/system/controlDict"
+        ((across + order == 1)) || sed -i 's/^writeVTK .*/writeVTK        no;/' "$c/system/controlDict"
+        if ((cut)); then
+          sed -i 's/main 5; crossing 6; abutting 7;/west 5; east 6;/; s/fractures (main crossing abutting);/fractures (west east);/' "$c/system/meshDict"
+          sed -i 's/^main$/west/; s/^crossing$/east/; /^abutting$/,/^}/d' "$c/constant/fractureProperties"
+        else
+          sed -i 's/main 5; crossing 6; abutting 7;/main 5;/; s/fractures (main crossing abutting);/fractures (main);/' "$c/system/meshDict"
+          sed -i '/^crossing$/,/^}/d; /^abutting$/,/^}/d' "$c/constant/fractureProperties"
+        fi
+        run -case "$c"
+        ((rc == 0)) || fail "$c: exit code $rc"
+        if ((cut)); then
+          expect "$out" "Intersections: 1"
+          expect "$out" "    joined: 'west' and 'east' end together; length $( ((across)) && echo 1 || echo 0.6),"
+        fi
+        solve -case "$c"
+        ((rc == 0)) || fail "$c: frictionSolver: exit code $rc"
+      done
+      uncut=$work/across$across-P$order-cut0/1/fractures cut=$work/across$across-P$order-cut1/1/fractures
+      expect "$(sed -n 4p "$cut/west.dat")" "# intersection (joined) with 'east'"
+      if ((across + order == 1)); then
+        # east's .vtp: its table's rows and the 5 nodes of the line, whose rows are in west's
+        # (3 joined, 2 tips), which its triangles use.
+        rows=$(grep -c '^[^#]' "$cut/east.dat")
+        grep -qa "NumberOfPoints=\"$((rows + 5))\"" "$work/across0-P1-cut1/VTK/fractures/east_1.vtp" ||
+          fail "east_1.vtp: not $((rows + 5)) points"
+      fi
+      expect "$(sed -n 4p "$cut/east.dat")" "ends together with it ($( ((across)) && echo 7 || echo 3) nodes joined, their rows in 'west'; 0 held"
+      /usr/bin/python3 - "$uncut/main.dat" "$cut/west.dat" "$cut/east.dat" <<'PY' || fail "across $across, P$order: the cut fault differs from the uncut one"
+import sys
+def read(path):
+    rows = {}
+    for line in open(path):
+        if line.startswith("# x "):
+            cols = line[2:].split()
+        elif line.strip() and not line.startswith("#"):
+            v = line.split()
+            key = tuple(round(float(x), 9) for x in v[:3])
+            rows[key] = ([float(v[cols.index(c)]) for c in ("slipX", "slipY", "slipZ")], v[-1])
+    return rows
+whole = read(sys.argv[1])
+largest = max(max(abs(s) for s in slip) for slip, _ in whole.values())
+seen, worst = 0, 0.0
+for piece in sys.argv[2:]:
+    for key, (slip, state) in read(piece).items():
+        ref, refState = whole[key]
+        worst = max(worst, max(abs(a - b) for a, b in zip(slip, ref)) / largest)
+        assert state == refState, (key, state, refState)
+        seen += 1
+print(f"{seen} of {len(whole)} nodes compared, largest slip {largest:.4g} m, "
+      f"largest difference / largest slip {worst:.2g}")
+assert seen == len(whole) and largest > 0 and worst < 1e-8
+PY
+    done
+  done
+  ;;
 *) fail "unknown scenario" ;;
 esac
 echo "PASS [$scenario]"

@@ -9,7 +9,7 @@ reference's largest slip. Regions, all with y in [0.3, 0.7] (0.1 or more from th
 at y = 0.2, 0.8): "curve", the nodes on the intersection (x = 0.45, z = 0.5); "near", nodes
 within 0.1 of it; "far", nodes 0.15 or more from it ('crossing' is 0.25 wide on each side, so
 its far nodes are within 0.1 of its tip lines). The observed order between successive sizes
-is log2 of the ratio of their errors (the reference's own error adds to both).
+is log(e_i / e_i+1) / log(h_i / h_i+1) (the reference's own error adds to both).
 """
 import math
 import sys
@@ -80,7 +80,9 @@ def main():
                     sys.exit(f"{folder}/{fault}.dat: no nodes in region {region}")
                 errors[region].append(math.sqrt(np.mean(diff[m] ** 2)))
         for region, e in errors.items():
-            orders = [math.log2(e[i] / e[i + 1]) for i in range(len(e) - 1)]
+            hs = [h for h, _ in runs[:-1]]
+            orders = [math.log(e[i] / e[i + 1]) / math.log(hs[i] / hs[i + 1])
+                      for i in range(len(e) - 1)]
             print(f"| {fault} | {region} | " + " | ".join(f"{v:.2e}" for v in e) + " | " +
                   ", ".join(f"{o:.2f}" for o in orders) + " |")
 

@@ -2243,7 +2243,7 @@ std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f) const {
 }
 
 std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::VectorXd& beta,
-                                                    std::map<Index, Index>* rowOfPlus) const {
+                                                    std::map<Index, Index>* rowOfNode) const {
   const FractureSystem& sys = *system_;
   const auto& nodes = sys.controlNodes();
   // k tangential components per node (k = d − 1), node-major in last_.tau, last_.D, slip_, beta.
@@ -2320,7 +2320,7 @@ std::vector<FractureRow> FrictionCase::fractureRows(std::size_t f, const Eigen::
       row.frictionCoefficient =
           w.form == Weakening::none ? mu_[static_cast<Eigen::Index>(k)] : w.mu(row.slipPath);
     }
-    if (rowOfPlus) (*rowOfPlus)[nodes[k].plus] = static_cast<Index>(rows.size());
+    if (rowOfNode) (*rowOfNode)[static_cast<Index>(k)] = static_cast<Index>(rows.size());
     rows.push_back(row);
   }
   return rows;
@@ -2362,38 +2362,49 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
   std::vector<VtkSeries::Fracture> vtkFractures;
   for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
     VtkSeries::Fracture out{split_.fractures[f].name, {}};
-    std::map<Index, Index> rowOfPlus;  // the Ω⁺ copy of a control node -> its row
-    out.rows = fractureRows(f, beta, &rowOfPlus);
+    std::map<Index, Index> rowOf;  // control node -> its row
+    out.rows = fractureRows(f, beta, &rowOf);
     writeFractureTable(folder.file("fractures/" + split_.fractures[f].name + ".dat"), out.rows,
                        status.str(), precision, dim,
                        dim == 2 ? junctionNotes(split_, f) : intersectionNotes3D(f));
-    if (dim == 3 && !intersectionNotes3D(f).empty())
-      out.intersection = intersectionCodes(split_, f);
-    // 3D: the fault triangles as row indices for the .vtp. A vertex's row is found by its Ω⁺
-    // copy (the unsplit number, as in the triangles), a P2 midpoint's by the split-space node
-    // of the edge between the Ω⁺ copies, as FractureSystem made those control nodes.
-    const FractureGeometry& g = split_.fractures[f];
+    if (dim != 3) {
+      vtkFractures.push_back(std::move(out));
+      continue;
+    }
+    // 3D: the fault triangles as row indices for the .vtp (FractureSystem::triangleNodes). A
+    // node whose row is in another fracture's table (joined: the first-listed one's) is
+    // appended to this .vtp's rows, not to its table.
     out.nodesPerTriangle = space.degree() == 2 ? 6 : 3;
-    const auto row = [&rowOfPlus](Index plus) {
-      const auto it = rowOfPlus.find(plus);
-      FRICTION_ASSERT(it != rowOfPlus.end(), "a fault triangle's node is a control node");
-      return it->second;
-    };
-    std::map<Index, Index> plusOf;  // unsplit number -> Ω⁺ copy
-    for (Index i = 0; i < g.numNodes(); ++i) plusOf[g.node[i]] = g.plus[i];
-    for (const auto& t : g.triangles) {
-      std::array<Index, 6> tri{};
-      std::array<Index, 3> plus{};
-      for (int j = 0; j < 3; ++j) {
-        const auto it = plusOf.find(t[j]);
-        FRICTION_ASSERT(it != plusOf.end(), "a fault triangle's vertices are fracture nodes");
-        plus[j] = it->second;
-        tri[j] = row(plus[j]);
+    std::map<int, std::pair<std::vector<FractureRow>, std::map<Index, Index>>> others;
+    const auto row = [&](Index k) {
+      const auto it = rowOf.find(k);
+      if (it != rowOf.end()) return it->second;
+      const int o = sys.controlNodes()[static_cast<std::size_t>(k)].fracture;
+      auto found = others.find(o);
+      if (found == others.end()) {
+        found =
+            others.emplace(o, std::make_pair(std::vector<FractureRow>{}, std::map<Index, Index>{}))
+                .first;
+        found->second.first =
+            fractureRows(static_cast<std::size_t>(o), beta, &found->second.second);
       }
-      if (out.nodesPerTriangle == 6)
-        for (int j = 0; j < 3; ++j)
-          tri[3 + j] = row(space.midpointNode(plus[j], plus[(j + 1) % 3]));
+      out.rows.push_back(found->second.first.at(found->second.second.at(k)));
+      return rowOf[k] = static_cast<Index>(out.rows.size()) - 1;
+    };
+    for (const auto& t : sys.triangleNodes(f)) {
+      std::array<Index, 6> tri{};
+      for (int j = 0; j < out.nodesPerTriangle; ++j) tri[j] = row(t[j]);
       out.triangles.push_back(tri);
+    }
+    // Per row, what the node does where the fault meets others (intersectionCodes, by the
+    // fracture's nodes; P2 mid-edge nodes on the curves by FractureSystem).
+    if (!intersectionNotes3D(f).empty()) {
+      const std::vector<int> codes = intersectionCodes(split_, f);
+      out.intersection.assign(out.rows.size(), 0);
+      for (std::size_t i = 0; i < codes.size(); ++i)
+        out.intersection[rowOf.at(sys.vertexControl(f)[i])] = codes[i];
+      for (const auto& [k, at] : rowOf)
+        if (sys.edgeIntersectionCode(k) != 0) out.intersection[at] = sys.edgeIntersectionCode(k);
     }
     vtkFractures.push_back(std::move(out));
   }

@@ -142,10 +142,10 @@ class FrictionCase : private StepHost {
   void initialiseRateState();
 
   void writeTimeFolder(const StepResult& r, const Eigen::VectorXd& beta, long step);
-  /// Fracture f's rows for the control β (and the state of the last step); rowOfPlus, if
-  /// given, maps each row's Ω⁺ copy to its row.
+  /// Fracture f's rows for the control β (and the state of the last step); rowOfNode, if
+  /// given, maps each row's control node to its row.
   std::vector<FractureRow> fractureRows(std::size_t f, const Eigen::VectorXd& beta,
-                                        std::map<Index, Index>* rowOfPlus) const;
+                                        std::map<Index, Index>* rowOfNode) const;
   /// 3D: fracture f's comment lines on where it meets other fault surfaces (intersectionNotes,
   /// SplitMesh.hpp), made on the first call for every fracture.
   const std::vector<std::string>& intersectionNotes3D(std::size_t f);

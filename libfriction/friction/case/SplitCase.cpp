@@ -109,6 +109,8 @@ void printIntersections(std::ostream& out, const Mesh& mesh, const SplitMesh& sp
     if (c.passing.size() == 1 && !c.onOuterBoundary)
       out << names(c.ending) << " " << (c.ending.size() == 1 ? "ends" : "end") << " on "
           << names(c.passing);
+    else if (c.passing.empty() && !c.onOuterBoundary)
+      out << names(all) << " end together";
     else
       out << names(all);
     out << "; length " << c.length << ", " << c.nodes.size() << " nodes, ";

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/Parallel.hpp"
+#include "friction/fe/Simplex.hpp"
 #include "friction/fracture/SignConventions.hpp"
 #include "friction/mesh/MeshTopology.hpp"
 
@@ -306,69 +308,170 @@ std::map<Index, std::map<Index, double>> FractureSystem::junctionLifting(
 }
 
 void FractureSystem::controlNodes3D(int degree) {
-  // Where fault surfaces meet (a node of several fractures): the rules of 2D junctions per
-  // intersection node (a fracture passing through keeps a free control node whose jump moves
-  // the sectors on its ⁺ side against those on its ⁻ side; one ending on another is held at
-  // zero). Not yet solved: surfaces ending together (joined) and P2 (the mid-edge nodes of
-  // the intersection curves would be junctions too).
+  // Where fault surfaces meet (a node of several fractures; in P2 also the mid-edge node of an
+  // edge of several): the rules of 2D junctions per node. A fracture passing through keeps a
+  // free control node whose jump moves the sectors on its ⁺ side against those on its ⁻ side;
+  // one ending where another passes, or with two or more others, is held at zero; two ending
+  // together (joined, no other there) share one control node, the first-listed fracture's,
+  // with the normal of the two as one surface (README "Intersections (3D)").
+  const int nf = static_cast<int>(split_.fractures.size());
   std::map<Index, std::vector<std::pair<int, Index>>> fracturesAt;  // node -> (fracture, its node)
-  for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f)
+  for (int f = 0; f < nf; ++f)
     for (Index i = 0; i < split_.fractures[f].numNodes(); ++i)
       fracturesAt[split_.fractures[f].node[i]].push_back({f, i});
   for (auto it = fracturesAt.begin(); it != fracturesAt.end();)
     it = it->second.size() > 1 ? std::next(it) : fracturesAt.erase(it);
-  for (const auto& [node, list] : fracturesAt) {
-    std::string names;
-    for (std::size_t k = 0; k < list.size(); ++k)
-      names += (k == 0                 ? "'"
-                : k + 1 == list.size() ? " and '"
-                                       : ", '") +
-               split_.fractures[list[k].first].name + "'";
-    const std::string where = "fault surfaces " + names + " meet at " +
-                              formatPoint(split_.mesh.points[node], 3) + " (constant/splitMesh)";
-    if (degree == 2)
-      throw InputError(split_.mesh.source,
-                       where +
-                           ": intersections of fault surfaces are solved in P1 only so far "
-                           "(in P2 the mid-edge nodes on the intersection curves would be "
-                           "junctions as well); use order 1");
-    for (const auto& [f, i] : list)
-      if (split_.fractures[f].kind[i] == FractureNodeKind::joined)
-        throw InputError(split_.mesh.source,
-                         where +
-                             ": they end together there (joined), which the 3D solver does "
-                             "not take yet (it solves crossing faults and faults ending on "
-                             "another); give the two one label, so that they are one bent "
-                             "surface");
+  meet_ = !fracturesAt.empty();
+  const auto topology = unsplitMesh_.topology();
+
+  // The right-hand normal (b − a) × (c − a) of an oriented triangle: twice its area times n_Γ.
+  const auto cross = [&](const std::array<Index, 3>& t) {
+    const Point& a = unsplitMesh_.points[t[0]];
+    return Point((unsplitMesh_.points[t[1]] - a).cross(unsplitMesh_.points[t[2]] - a));
+  };
+  // The copies of node p (q == p) or of the mid-edge node of p–q in the tetrahedra on the Ω⁺
+  // (first) and Ω⁻ side of fracture f's triangle t; −1 where a side has none.
+  const auto copiesAcross = [&](const std::array<Index, 3>& t, Index p, Index q) {
+    const Point& a = unsplitMesh_.points[t[0]];
+    const Point normal = cross(t);
+    const Index side = topology->findFacet({t[0], t[1], t[2]});
+    std::array<Index, 2> pm{-1, -1};
+    for (int c = 0; side >= 0 && c < topology->numCellsOf(side); ++c) {
+      const Index cell = topology->cellOf(side, c).cell;
+      const auto unsplit = unsplitMesh_.cell(cell);
+      const auto splitCell = split_.mesh.cell(cell);
+      Index cp = -1, cq = -1;
+      bool plus = false;
+      for (int l = 0; l < 4; ++l) {
+        if (unsplit[l] == p) cp = splitCell[l];
+        if (unsplit[l] == q) cq = splitCell[l];
+        if (unsplit[l] != t[0] && unsplit[l] != t[1] && unsplit[l] != t[2])
+          plus = (unsplitMesh_.points[unsplit[l]] - a).dot(normal) < 0;
+      }
+      (plus ? pm[0] : pm[1]) = p == q ? cp : splitSpace_->midpointNode(cp, cq);
+    }
+    return pm;
+  };
+
+  // P2: the edges of several fractures' triangles (the intersection curves' edges), per
+  // fracture the number of its triangles there; and the edges on the outer boundary.
+  using Edge = std::array<Index, 2>;
+  const auto edgeOf = [](Index p, Index q) { return Edge{std::min(p, q), std::max(p, q)}; };
+  std::map<Edge, std::map<int, int>> curveEdges;
+  std::map<Edge, std::map<int, int>> runs;  // per fracture, +1 if a triangle runs it low to high
+  std::set<Edge> outer;
+  if (meet_) {
+    for (int f = 0; f < nf; ++f)
+      for (const auto& t : split_.fractures[f].triangles)
+        for (int e = 0; e < 3; ++e) {
+          const Edge edge = edgeOf(t[e], t[(e + 1) % 3]);
+          ++curveEdges[edge][f];
+          runs[edge][f] = t[e] < t[(e + 1) % 3] ? 1 : -1;
+        }
+    for (auto it = curveEdges.begin(); it != curveEdges.end();)
+      it = it->second.size() > 1 ? std::next(it) : curveEdges.erase(it);
+    for (Index s = 0; s < topology->numFacets(); ++s)
+      if (topology->isBoundary(s))
+        for (int k = 0; k < 3; ++k)
+          outer.insert(edgeOf(topology->facetVertex(s, k), topology->facetVertex(s, (k + 1) % 3)));
   }
-  std::vector<std::vector<Index>> controlOf(split_.fractures.size());
-  for (int f = 0; f < static_cast<int>(split_.fractures.size()); ++f) {
+  // The ends of the lines where two fractures end together (joined) inside the body: on the
+  // common tip line of the two, their tips are one node too.
+  // Along such a line the two are one surface oriented alike where their triangles run the
+  // common edge in opposite directions (orientedAlike: +1, else −1).
+  std::map<Index, Edge> joinedLine;  // node -> an edge of the line there
+  for (const auto& [edge, uses] : curveEdges)
+    if (uses.size() == 2 && uses.begin()->second == 1 && uses.rbegin()->second == 1 &&
+        !outer.count(edge))
+      for (Index v : edge) joinedLine.emplace(v, edge);
+  const auto orientedAlike = [&](const Edge& edge) {
+    const auto& r = runs.at(edge);
+    return r.begin()->second == r.rbegin()->second ? -1.0 : 1.0;
+  };
+  // What fracture f does on curve edge e, as the splitter's kinds at a vertex: passes (two of
+  // its triangles there, or an edge on the outer boundary: free), joined (it ends there with
+  // exactly one other fracture, which ends there too) or held (abutting).
+  enum class Role { passes, joined, held };
+  const auto roleOn = [&](const Edge& e, int f) {
+    const auto& uses = curveEdges.at(e);
+    const auto passes = [&](int o) { return uses.at(o) == 2 || outer.count(e) > 0; };
+    if (passes(f)) return Role::passes;
+    bool anotherPasses = false;
+    for (const auto& [o, count] : uses) anotherPasses = anotherPasses || (o != f && passes(o));
+    return !anotherPasses && uses.size() == 2 ? Role::joined : Role::held;
+  };
+
+  // The control nodes. A node joined to an earlier fracture's is that one's (joinedTo: the
+  // node, the sum of this fracture's right-hand normals there, its ⁺ copy).
+  struct Joined {
+    Index node;
+    Point normalSum;
+    double sign;  ///< orientedAlike
+  };
+  std::vector<Joined> joinedTo;
+  std::map<Index, Point> normalSum;  // of the joined nodes' owners
+  vertexControl_.assign(static_cast<std::size_t>(nf), {});
+  std::vector<std::map<Edge, Index>> midControl(static_cast<std::size_t>(nf));
+  for (int f = 0; f < nf; ++f) {
     const FractureGeometry& g = split_.fractures[f];
     std::vector<Index> local(static_cast<std::size_t>(split_.numOriginalPoints()), -1);
+    // Per node of g (and mid-edge node), −1 where it is an earlier fracture's joined node
+    // oriented against g: its Σ there is the opposite of g's (the P2 mass, buildRecovery).
+    std::vector<double> vertexSign(static_cast<std::size_t>(g.numNodes()), 1.0);
+    std::map<Edge, double> midSign;
+    for (Index i = 0; i < g.numNodes(); ++i) local[g.node[i]] = i;
+    const auto vertexSum = [&](Index v) {
+      Point s = Point::Zero();
+      for (const auto& t : g.triangles)
+        if (t[0] == v || t[1] == v || t[2] == v) s += cross(t);
+      return s;
+    };
+    std::vector<Index>& controlOf = vertexControl_[f];
     for (Index i = 0; i < g.numNodes(); ++i) {
-      local[g.node[i]] = i;
+      const auto at = fracturesAt.find(g.node[i]);
+      const bool sharedTip = g.kind[i] == FractureNodeKind::tip && at != fracturesAt.end() &&
+                             at->second.size() == 2 && joinedLine.count(g.node[i]) > 0 &&
+                             split_.fractures[at->second[0].first].kind[at->second[0].second] ==
+                                 split_.fractures[at->second[1].first].kind[at->second[1].second];
+      if (g.kind[i] == FractureNodeKind::joined || sharedTip) {
+        const auto& [owner, j] = at->second.front();
+        if (owner != f) {
+          const Index k = vertexControl_[owner][j];
+          controlOf.push_back(k);
+          const auto line = joinedLine.find(g.node[i]);
+          vertexSign[i] = line == joinedLine.end() ? 1.0 : orientedAlike(line->second);
+          joinedTo.push_back({k, vertexSum(g.node[i]), vertexSign[i]});
+          continue;
+        }
+        normalSum[static_cast<Index>(nodes_.size())] = vertexSum(g.node[i]);
+      }
       ControlNode v = vertexNode(f, g, i);
       v.normal = g.normal[i];
       v.tangent = tangentBasis(v.normal);
       v.junction = g.kind[i] == FractureNodeKind::abutting;
       v.tip = g.kind[i] == FractureNodeKind::tip || v.junction;
-      controlOf[f].push_back(static_cast<Index>(nodes_.size()));
+      controlOf.push_back(static_cast<Index>(nodes_.size()));
       nodes_.push_back(v);
     }
-    if (degree != 2) continue;
-    const Index base = static_cast<Index>(nodes_.size()) - g.numNodes();
+    triangleNodes_.emplace_back();
+    if (degree != 2) {
+      for (const auto& t : g.triangles)
+        triangleNodes_.back().push_back(
+            {controlOf[local[t[0]]], controlOf[local[t[1]]], controlOf[local[t[2]]], -1, -1, -1});
+      continue;
+    }
     // Each edge once, by ascending (smaller, larger) end: its midpoint's normal sums the
     // right-hand normals (b − a) × (c − a) (twice the area times n_Γ) of its triangles.
-    std::map<std::array<Index, 2>, Point> edgeNormal;
-    for (const auto& t : g.triangles) {
+    std::map<Edge, Point> edgeNormal;
+    std::map<Edge, std::size_t> firstTriangle;
+    for (std::size_t ti = 0; ti < g.triangles.size(); ++ti) {
+      const auto& t = g.triangles[ti];
       const Point& a = split_.mesh.points[t[0]];
       const Point an = (split_.mesh.points[t[1]] - a).cross(split_.mesh.points[t[2]] - a);
       for (int e = 0; e < 3; ++e) {
-        const Index p = t[e], q = t[(e + 1) % 3];
-        auto it =
-            edgeNormal.emplace(std::array<Index, 2>{std::min(p, q), std::max(p, q)}, Point::Zero())
-                .first;
-        it->second += an;
+        const Edge edge = edgeOf(t[e], t[(e + 1) % 3]);
+        edgeNormal.emplace(edge, Point::Zero()).first->second += an;
+        firstTriangle.emplace(edge, ti);
       }
     }
     for (const auto& [edge, sum] : edgeNormal) {
@@ -376,35 +479,77 @@ void FractureSystem::controlNodes3D(int degree) {
       FRICTION_ASSERT(a >= 0 && b >= 0, "a fault triangle's vertices are fracture nodes");
       ControlNode m;
       m.fracture = f;
-      m.plus = splitSpace_->midpointNode(g.plus[a], g.plus[b]);
-      m.minus = splitSpace_->midpointNode(g.minus[a], g.minus[b]);
+      if (meet_ && (fracturesAt.count(edge[0]) || fracturesAt.count(edge[1]))) {
+        // Next to an intersection the sectors of its ends depend on the triangle: the copies
+        // of the tetrahedra on either side of one of the fracture's triangles at the edge.
+        const auto pm = copiesAcross(g.triangles[firstTriangle.at(edge)], edge[0], edge[1]);
+        m.plus = pm[0];
+        m.minus = pm[1];
+      } else {
+        m.plus = splitSpace_->midpointNode(g.plus[a], g.plus[b]);
+        m.minus = splitSpace_->midpointNode(g.minus[a], g.minus[b]);
+      }
+      FRICTION_ASSERT(m.plus >= 0 && m.minus >= 0, "a fault edge's mid-edge node on each side");
+      const Role role = curveEdges.count(edge) ? roleOn(edge, f) : Role::passes;
+      if (role == Role::joined) {
+        int owner = f;
+        for (const auto& [o, count] : curveEdges.at(edge)) owner = std::min(owner, o);
+        if (owner != f) {
+          const Index k = midControl[owner].at(edge);
+          midControl[f][edge] = k;
+          midSign[edge] = orientedAlike(edge);
+          joinedTo.push_back({k, sum, midSign[edge]});
+          continue;
+        }
+        normalSum[static_cast<Index>(nodes_.size())] = sum;
+      }
       m.position = splitSpace_->point(m.plus);
       m.x = m.position.head<2>();
       m.normal = sum.normalized();
       m.tangent = tangentBasis(m.normal);
-      // Single where both sides share the edge: on the tip line.
-      m.tip = m.plus == m.minus;
+      // Single where both sides share the edge: on the tip line. Held where the fracture
+      // ends on another.
+      m.junction = role == Role::held;
+      m.tip = m.plus == m.minus || m.junction;
+      midControl[f][edge] = static_cast<Index>(nodes_.size());
       nodes_.push_back(m);
+      if (curveEdges.count(edge)) {
+        edgeCode_.resize(nodes_.size(), 0);
+        edgeCode_.back() = role == Role::passes ? 1 : role == Role::held ? 2 : 3;
+      }
     }
     // The six control nodes of each triangle (for the recovery's extension, factor()).
-    std::map<std::array<Index, 2>, Index> edgeNode;
-    Index next = base + g.numNodes();
-    for (const auto& entry : edgeNormal) edgeNode[entry.first] = next++;
     for (const auto& t : g.triangles) {
       std::array<Index, 6> c{};
+      std::array<double, 6> sign{1, 1, 1, 1, 1, 1};
       for (int e = 0; e < 3; ++e) {
-        const Index p = t[e], q = t[(e + 1) % 3];
-        c[e] = base + local[p];
-        c[3 + e] = edgeNode.at({std::min(p, q), std::max(p, q)});
+        const Edge edge = edgeOf(t[e], t[(e + 1) % 3]);
+        c[e] = controlOf[local[t[e]]];
+        c[3 + e] = midControl[f].at(edge);
+        sign[e] = vertexSign[local[t[e]]];
+        const auto it = midSign.find(edge);
+        if (it != midSign.end()) sign[3 + e] = it->second;
       }
       faultTriangles_.push_back(c);
+      faultTriangleSign_.push_back(sign);
+      triangleNodes_.back().push_back(c);
+      faultTriangleArea_.push_back(0.5 * cross(t).norm());
     }
   }
+  if (!edgeCode_.empty()) edgeCode_.resize(nodes_.size(), 0);
+  // A joined node's frame is that of the two fractures as one surface: the sum of both
+  // fractures' right-hand normals, the second's turned where its Ω⁺ is the first's Ω⁻.
+  for (const Joined& j : joinedTo) normalSum.at(j.node) += j.sign * j.normalSum;
+  for (const auto& [k, sum] : normalSum) {
+    nodes_[k].normal = sum.normalized();
+    nodes_[k].tangent = tangentBasis(nodes_[k].normal);
+  }
+
   // Lumped mass of Γ from the ⁺-side triangles (the ⁺ copies keep the unsplit numbers):
   // 1/3 of the area per vertex (P1); A/12 per vertex and A/4 per mid-edge node (P2,
   // P1-iso-P2 nodal quadrature: positive, so M⁻¹ exists and the law holds node by node).
   weights_.resize(size());
-  if (fracturesAt.empty()) {
+  if (!meet_) {
     std::vector<Index> facets;
     for (const FractureGeometry& g : split_.fractures)
       for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
@@ -412,72 +557,81 @@ void FractureSystem::controlNodes3D(int degree) {
     for (Index k = 0; k < size(); ++k) weights_[k] = w[nodes_[k].plus];
     return;
   }
-  // Fault surfaces meet (P1): each fracture's weights from its own triangles, at the unsplit
-  // node numbers (the triangles' vertices; a ⁺ copy there may be another sector's number).
-  for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
-    const FractureGeometry& g = split_.fractures[f];
-    std::vector<Index> facets;
-    for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
-    const Eigen::VectorXd w = splitAssembler_->lumpedFacetMass(facets);
-    for (Index i = 0; i < g.numNodes(); ++i) weights_[controlOf[f][i]] = w[g.node[i]];
+  // Fault surfaces meet: each fracture's weights from its own triangles (a joined node: both
+  // fractures'), P1 at the unsplit node numbers (the triangles' vertices; a ⁺ copy there may
+  // be another sector's number), P2 on the control nodes of each triangle.
+  weights_.setZero();
+  if (degree == 1) {
+    for (int f = 0; f < nf; ++f) {
+      const FractureGeometry& g = split_.fractures[f];
+      std::vector<Index> facets;
+      for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
+      const Eigen::VectorXd w = splitAssembler_->lumpedFacetMass(facets);
+      for (Index i = 0; i < g.numNodes(); ++i) weights_[vertexControl_[f][i]] += w[g.node[i]];
+    }
+  } else {
+    const double* w = facetLumpedMass<3>(2);
+    for (std::size_t t = 0; t < faultTriangles_.size(); ++t)
+      for (int i = 0; i < 6; ++i) weights_[faultTriangles_[t][i]] += w[i] * faultTriangleArea_[t];
   }
 
   // Each fault triangle through an intersection node separates two of its sectors: the copies
-  // of the node in the tetrahedra on the triangle's Ω⁺ and Ω⁻ sides. The jumps of the
-  // fractures' control nodes there (none where held) give the sectors' displacements.
-  const auto topology = unsplitMesh_.topology();
+  // of the node in the tetrahedra on the triangle's Ω⁺ and Ω⁻ sides; in P2 likewise the
+  // mid-edge nodes of its edges on the curves. The jumps of the fractures' control nodes
+  // there (none where held) give the sectors' displacements; a joined node's second fracture
+  // carries the first's jump, turned where its Ω⁺ is the first's Ω⁻.
   atJunction_.assign(static_cast<std::size_t>(size()), 0);
+  const auto branch = [&](int f, Index k, const std::array<Index, 2>& pm,
+                          const std::string& where) {
+    if (pm[0] < 0 || pm[1] < 0)
+      throw InputError(split_.mesh.source,
+                       "the split mesh's fault '" + split_.fractures[f].name + "' at " + where +
+                           " has a triangle without a tetrahedron on each side; split the "
+                           "mesh again with splitFractureNodes");
+    atJunction_[k] = 1;
+    const double sign = nodes_[k].fracture == f || pm[0] == nodes_[k].plus ? 1.0 : -1.0;
+    return JunctionBranch{pm[0], pm[1], nodes_[k].tip ? Index(-1) : k, sign};
+  };
   std::map<Index, std::vector<JunctionBranch>> branchesAt;
-  for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
+  std::map<Edge, std::vector<JunctionBranch>> branchesOn;
+  for (int f = 0; f < nf; ++f) {
     const FractureGeometry& g = split_.fractures[f];
     std::map<Index, Index> local;
     for (Index i = 0; i < g.numNodes(); ++i)
       if (fracturesAt.count(g.node[i])) local[g.node[i]] = i;
     for (const auto& t : g.triangles) {
-      const Point& a = unsplitMesh_.points[t[0]];
-      const Point normal = (unsplitMesh_.points[t[1]] - a).cross(unsplitMesh_.points[t[2]] - a);
-      const Index side = topology->findFacet({t[0], t[1], t[2]});
       for (Index v : t) {
         const auto at = local.find(v);
         if (at == local.end()) continue;
-        const Index k = controlOf[f][at->second];
-        atJunction_[k] = 1;
-        JunctionBranch b{-1, -1, nodes_[k].tip ? Index(-1) : k, 1.0};
-        for (int c = 0; side >= 0 && c < topology->numCellsOf(side); ++c) {
-          const Index cell = topology->cellOf(side, c).cell;
-          const auto unsplit = unsplitMesh_.cell(cell);
-          const auto splitCell = split_.mesh.cell(cell);
-          Index copy = -1;
-          bool plus = false;
-          for (int l = 0; l < 4; ++l) {
-            if (unsplit[l] == v) copy = splitCell[l];
-            if (unsplit[l] != t[0] && unsplit[l] != t[1] && unsplit[l] != t[2])
-              plus = (unsplitMesh_.points[unsplit[l]] - a).dot(normal) < 0;
-          }
-          (plus ? b.plusCopy : b.minusCopy) = copy;
-        }
-        if (b.plusCopy < 0 || b.minusCopy < 0)
-          throw InputError(split_.mesh.source,
-                           "the split mesh's fault '" + g.name + "' at " +
-                               formatPoint(unsplitMesh_.points[v], 3) +
-                               " has a triangle without a tetrahedron on each side; split the "
-                               "mesh again with splitFractureNodes");
-        branchesAt[v].push_back(b);
+        branchesAt[v].push_back(branch(f, vertexControl_[f][at->second], copiesAcross(t, v, v),
+                                       formatPoint(unsplitMesh_.points[v], 3)));
+      }
+      for (int e = 0; e < 3 && degree == 2; ++e) {
+        const Edge edge = edgeOf(t[e], t[(e + 1) % 3]);
+        if (!curveEdges.count(edge)) continue;
+        branchesOn[edge].push_back(
+            branch(f, midControl[f].at(edge), copiesAcross(t, edge[0], edge[1]),
+                   "the midpoint of " + formatPoint(unsplitMesh_.points[edge[0]], 3) + "-" +
+                       formatPoint(unsplitMesh_.points[edge[1]], 3)));
       }
     }
   }
-  for (const auto& [node, branches] : branchesAt) {
+  const auto lift = [&](const std::vector<JunctionBranch>& branches, const std::string& where) {
     const auto lifting = junctionLifting(branches);
     if (lifting.empty())
       throw InputError(split_.mesh.source,
-                       "the split mesh's intersection node " +
-                           formatPoint(split_.mesh.points[node], 3) +
+                       "the split mesh's intersection node " + where +
                            " is not consistent (its fractures' jumps do not add up to zero "
                            "around it); split the mesh again with splitFractureNodes");
     for (const auto& [copy, terms] : lifting)
       for (const auto& [k, coefficient] : terms)
         if (coefficient != 0) junctionLift_.push_back({copy, k, coefficient});
-  }
+  };
+  for (const auto& [node, branches] : branchesAt)
+    lift(branches, formatPoint(split_.mesh.points[node], 3));
+  for (const auto& [edge, branches] : branchesOn)
+    lift(branches, "at the midpoint of " + formatPoint(split_.mesh.points[edge[0]], 3) + "-" +
+                       formatPoint(split_.mesh.points[edge[1]], 3));
 }
 
 std::vector<std::vector<Eigen::Index>> FractureSystem::nodeGraph() const {
@@ -497,14 +651,13 @@ std::vector<std::vector<Eigen::Index>> FractureSystem::nodeGraph() const {
     for (const auto& t : faultTriangles_)
       for (int a = 0; a < 6; ++a)
         for (int b = a + 1; b < 6; ++b) link(t[a], t[b]);
-  } else {  // P1: each fracture's vertices in the splitter's order (controlNodes3D)
-    Index base = 0;
-    for (const FractureGeometry& g : split_.fractures) {
+  } else {  // P1: each fracture's vertices (controlNodes3D)
+    for (std::size_t f = 0; f < split_.fractures.size(); ++f) {
+      const FractureGeometry& g = split_.fractures[f];
       std::map<Index, Index> local;
-      for (Index i = 0; i < g.numNodes(); ++i) local[g.node[i]] = base + i;
+      for (Index i = 0; i < g.numNodes(); ++i) local[g.node[i]] = vertexControl_[f][i];
       for (const auto& t : g.triangles)
         for (int e = 0; e < 3; ++e) link(local.at(t[e]), local.at(t[(e + 1) % 3]));
-      base += g.numNodes();
     }
   }
   return graph;
@@ -750,9 +903,13 @@ bool FractureSystem::buildRecovery() {
       recovered_.push_back(k);
     }
   const Index r = static_cast<Index>(recovered_.size());
-  std::vector<std::vector<Index>> trianglesOf(static_cast<std::size_t>(n));
+  // (triangle, its local node) per control node. A triangle's sign of a node (faultTriangleSign_)
+  // is −1 where the node is a joined node of a fracture oriented against the triangle's: Σ there
+  // is the opposite of the triangle's field, in M and in the extension.
+  std::vector<std::vector<std::pair<Index, int>>> trianglesOf(static_cast<std::size_t>(n));
   for (std::size_t t = 0; t < faultTriangles_.size(); ++t)
-    for (Index k : faultTriangles_[t]) trianglesOf[k].push_back(static_cast<Index>(t));
+    for (int a = 0; a < 6; ++a)
+      trianglesOf[faultTriangles_[t][a]].push_back({static_cast<Index>(t), a});
   Triplets full, out;  // E on every node; X: E without the tip rows (tips report zero)
   for (Index k = 0; k < n; ++k) {
     if (row[k] >= 0) {
@@ -760,26 +917,41 @@ bool FractureSystem::buildRecovery() {
       out.emplace_back(k, row[k], 1.0);
       continue;
     }
-    std::vector<Index> from;
-    for (Index t : trianglesOf[k])
-      for (Index j : faultTriangles_[t])
-        if (row[j] >= 0) from.push_back(row[j]);
-    std::sort(from.begin(), from.end());
-    from.erase(std::unique(from.begin(), from.end()), from.end());
-    for (Index j : from) {
-      full.emplace_back(k, j, 1.0 / static_cast<double>(from.size()));
-      if (!nodes_[k].tip) out.emplace_back(k, j, 1.0 / static_cast<double>(from.size()));
+    std::map<Index, double> from;  // row of R -> its sign against node k
+    for (const auto& [t, a] : trianglesOf[k])
+      for (int b = 0; b < 6; ++b) {
+        const Index j = faultTriangles_[t][b];
+        if (row[j] >= 0) from.emplace(row[j], faultTriangleSign_[t][a] * faultTriangleSign_[t][b]);
+      }
+    for (const auto& [j, sign] : from) {
+      full.emplace_back(k, j, sign / static_cast<double>(from.size()));
+      if (!nodes_[k].tip) out.emplace_back(k, j, sign / static_cast<double>(from.size()));
     }
   }
   extend_ = fromTriplets(n, r, out);
   if (r == 0) return true;
+  Triplets mt;
+  if (meet_) {
+    // Where fault surfaces meet, a node's ⁺ copy is not that of every triangle around it: M
+    // from each fracture's triangles on their control nodes (a joined node: both fractures',
+    // turned where one is oriented against the node's owner).
+    for (std::size_t t = 0; t < faultTriangles_.size(); ++t)
+      for (int a = 0; a < 6; ++a) {
+        const Index i = faultTriangles_[t][a];
+        if (row[i] < 0) continue;
+        for (int b = 0; b < 6; ++b)
+          mt.emplace_back(row[i], faultTriangles_[t][b],
+                          faultTriangleSign_[t][a] * faultTriangleSign_[t][b] *
+                              faultTriangleArea_[t] * facetConsistentMass<3>(2, a, b));
+      }
+  }
   // M on the control nodes: the ⁺ copies are the split-space nodes of the ⁺-side triangles.
   std::vector<Index> facets, control(static_cast<std::size_t>(splitSpace_->numNodes()), -1);
   for (const FractureGeometry& g : split_.fractures)
     for (const auto& t : g.triangles) facets.insert(facets.end(), t.begin(), t.end());
   for (Index k = 0; k < n; ++k) control[nodes_[k].plus] = k;
-  const Eigen::SparseMatrix<double> Msplit = splitAssembler_->consistentFacetMass(facets);
-  Triplets mt;
+  const Eigen::SparseMatrix<double> Msplit =
+      meet_ ? Eigen::SparseMatrix<double>() : splitAssembler_->consistentFacetMass(facets);
   for (Index c = 0; c < Msplit.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(Msplit, c); it; ++it) {
       const Index i = control[it.row()], j = control[it.col()];

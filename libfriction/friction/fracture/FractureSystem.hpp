@@ -18,8 +18,9 @@
 // edges, each edge once, by ascending (smaller, larger) unsplit end numbers. The jump is held at
 // zero at tips (single nodes: the tip line in 3D) and at nodes on Dirichlet patches. Signs and
 // the 3D frame: SignConventions.hpp. Where fractures meet (2D junctions, 3D intersection
-// curves in P1) the jumps of the fractures passing through a node move its sectors, and a
-// fracture ending there is held (controlNodes2D, controlNodes3D).
+// curves, P1 and P2) the jumps of the fractures passing through a node move its sectors, a
+// fracture ending on another is held, and two ending together (joined) share the first's
+// control node (controlNodes2D, controlNodes3D).
 #pragma once
 
 #include <array>
@@ -111,6 +112,19 @@ class FractureSystem : public SlipResponse {
   Index ownCells() const { return ownCells_; }
 
   const std::vector<ControlNode>& controlNodes() const { return nodes_; }
+  /// 3D: fracture f's triangles (its order) by control node: the three vertices, then for P2
+  /// the mid-edge nodes of (0 1), (1 2), (2 0) (−1 in P1). A joined node is the first-listed
+  /// fracture's control node, in the other's triangles too.
+  const std::vector<std::array<Index, 6>>& triangleNodes(std::size_t f) const {
+    return triangleNodes_.at(f);
+  }
+  /// 3D: the control node of fracture f's node i (SplitMesh order).
+  const std::vector<Index>& vertexControl(std::size_t f) const { return vertexControl_.at(f); }
+  /// 3D P2: per control node, for a mid-edge node on an intersection curve what its fracture
+  /// does there (intersectionCodes' numbers: 1 passes, 2 held, 3 joined), else 0.
+  int edgeIntersectionCode(Index k) const {
+    return edgeCode_.empty() ? 0 : edgeCode_[static_cast<std::size_t>(k)];
+  }
   /// 3D: replace node i's tangent basis by (t₁, n_Γ × t₁), t₁ a unit vector normal to n_Γ —
   /// another choice than tangentBasis()'s. Tangential components (β, τ, S) are then on the new
   /// basis; the physics does not change (the laws are isotropic in the tangent plane).
@@ -169,8 +183,8 @@ class FractureSystem : public SlipResponse {
   /// Fracture f's node i as a control node: its copies and position (the frame is the caller's).
   ControlNode vertexNode(int f, const FractureGeometry& g, Index i) const;
   void controlNodes2D(int degree);
-  // Junctions (2D) and intersection nodes (3D P1): the lifting L and recovery E at nodes
-  // where several fractures meet.
+  // Junctions (2D) and intersection nodes (3D: vertices, and P2 mid-edge nodes on the curves):
+  // the lifting L and recovery E at nodes where several fractures meet.
   struct JunctionBranch {
     Index plusCopy, minusCopy;  ///< the sectors on either side of a fracture edge at the node
     Index node;                 ///< the control node whose jump it carries, −1 if held
@@ -230,8 +244,18 @@ class FractureSystem : public SlipResponse {
   // consistent mass on R with the other nodes' columns extended from R, X: Σ_R to all nodes.
   bool consistent_ = false;
   std::vector<std::array<Index, 6>> faultTriangles_;  ///< control nodes of each P2 fault triangle
-  std::vector<Index> recovered_;                      ///< R: control node of each row of G
-  Eigen::SparseMatrix<double> extend_;                ///< X: n × |R|
+  std::vector<double> faultTriangleArea_;             ///< [m²], per faultTriangles_
+  /// Per faultTriangles_ node: −1 at a joined node owned by a fracture oriented against the
+  /// triangle's (its Σ is the opposite of the triangle's field), else +1.
+  std::vector<std::array<double, 6>> faultTriangleSign_;
+  /// 3D: fault surfaces meet (some node of several fractures): weights and the P2 mass from
+  /// each fracture's triangles on its control nodes.
+  bool meet_ = false;
+  std::vector<std::vector<Index>> vertexControl_;  ///< 3D: per fracture node, its control node
+  std::vector<std::vector<std::array<Index, 6>>> triangleNodes_;  ///< 3D: triangleNodes()
+  std::vector<int> edgeCode_;                                     ///< 3D P2: edgeIntersectionCode
+  std::vector<Index> recovered_;        ///< R: control node of each row of G
+  Eigen::SparseMatrix<double> extend_;  ///< X: n × |R|
   Eigen::SparseLU<Eigen::SparseMatrix<double>> massLU_, massLUt_;  ///< G and Gᵀ
 };
 

@@ -1010,7 +1010,8 @@ std::string IntersectionCurve::kind() const {
   if (onOuterBoundary) return "on the outer boundary";
   if (passing.size() >= 2) return "crossing";
   if (passing.size() == 1) return "abutting";
-  return "ending together";
+  // Two ending together act as one surface there (the 2D kind's name); three or more are held.
+  return ending.size() == 2 ? "joined" : "ending together";
 }
 
 std::vector<IntersectionCurve> intersectionCurves(const SplitMesh& split, const Mesh& unsplit) {
@@ -1163,8 +1164,12 @@ std::vector<std::string> intersectionNotes(const SplitMesh& split,
     if (passes)
       line << "passes through";
     else if (c.passing.empty())
+      // A joined node is one control node, the first-listed fracture's: its row is there.
       line << "ends together with " << (others.size() == 1 ? "it" : "them") << " (" << joined
-           << " nodes joined, " << held << " held: state junction)";
+           << " nodes joined, their rows "
+           << (c.ending.front() == f ? std::string("in this table")
+                                     : "in '" + split.fractures[c.ending.front()].name + "'")
+           << "; " << held << " held: state junction)";
     else
       line << "ends on " << (c.passing.size() == 1 ? "it" : "them") << ", its jump held at " << held
            << " nodes (state junction)";

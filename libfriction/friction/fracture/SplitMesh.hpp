@@ -119,8 +119,9 @@ struct IntersectionCurve {
   std::vector<Index> nodes;          ///< unsplit node numbers, ascending
   std::vector<Index> ends;           ///< nodes on one of its edges only (none: a closed curve)
   double length = 0;                 ///< [length units of the mesh]
-  /// crossing (two or more pass), abutting (one passes, the others end on it), ending
-  /// together (none passes), on the outer boundary (its edges lie there).
+  /// crossing (two or more pass), abutting (one passes, the others end on it), joined (none
+  /// passes, two end: one surface cut along the curve), ending together (none passes, three or
+  /// more end: all held), on the outer boundary (its edges lie there).
   std::string kind() const;
 };
 
@@ -143,7 +144,8 @@ std::vector<IntersectionCurve> intersectionCurves(const SplitMesh& split, const 
 ///   pieces (not joined through edges); an intersection node where a fracture passing through
 ///   it does not separate the tetrahedra on either side of each of its triangles there.
 ///   Surfaces that meet are split at their intersection nodes (FractureNodeKind crossing,
-///   abutting, joined, and boundary where one passes through on the outer boundary).
+///   abutting, joined, and boundary where one passes through on the outer boundary); a line
+///   where two end together (joined) may reach the outer boundary.
 SplitMesh splitFractures(const Mesh& mesh, const std::vector<FractureSpec>& fractures);
 
 /// The fractures other than f that have unsplit node `node`, quoted and listed in their

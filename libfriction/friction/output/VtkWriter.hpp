@@ -98,7 +98,7 @@ void writeVtu(const std::string& path, const LagrangeSpace& space,
 ///    (3, x y z: slip₁ t₁ + slip₂ t₂), slipMagnitude [m], slipIncrement [m] (3, x y z),
 ///    sigmaN [Pa], traction [Pa] (3, the tangential traction τ in x y z), tauMagnitude [Pa],
 ///    ST [-], residual [Pa] (|D|); with `intersection` (a fault that meets others: one code per
-///    fracture node, the rows' first ones) also intersection (Int32: 0 no other fault, 1
+///    row, 0 past its end) also intersection (Int32: 0 no other fault, 1
 ///    passes through, 2 ends on another (held), 3 ends together with another, 4 tip;
 ///    intersectionCodes, SplitMesh.hpp).
 /// Both: Float64 (tips: the rows' values, the body's stress there), and state

@@ -155,7 +155,7 @@ TEST_CASE("3D intersections: two faults ending together act as one bent fault",
   CHECK(kindAtLine(s, 1, FractureNodeKind::joined) == 5);
   const auto curves = intersectionCurves(s, m);
   REQUIRE(curves.size() == 1);
-  CHECK(curves[0].kind() == "ending together");
+  CHECK(curves[0].kind() == "joined");
   CHECK(curves[0].ending == std::vector<std::size_t>{0, 1});
 }
 
