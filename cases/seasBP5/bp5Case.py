@@ -62,8 +62,8 @@ def tau0(x, d):
 
 # The fields, on a 500 m grid of the rate-and-state rectangle (every node there of a mesh of
 # h = 500 m multiples, P2 midpoints included, lies on a row). The rest of the plane y = 0 (the
-# benchmark's creeping region) takes the nearest row, on the rectangle's border, whose values
-# are those outside (a_max, L = 0.14 m, V_p): hence maxDistance 400 km.
+# benchmark's creeping region, which has no state) takes the nearest row, on the rectangle's
+# border: hence maxDistance 400 km.
 step = 500.0
 nx, nz = int(round(lf / step)), int(round(Wf / step))
 rows = {"a": [], "L": [], "Vinit": [], "tau0": []}
@@ -76,14 +76,33 @@ for i in range(nx + 1):
         rows["L"].append("%s %.17g" % (xyz, Lnuc if nucleation(x, d) else L))
         rows["Vinit"].append("%s %.17g" % (xyz, Vi if nucleation(x, d) else Vp))
         rows["tau0"].append("%s %.17g" % (xyz, tau0(x, d)))
+# Where the fault creeps at V_p: the plane y = 0 beyond the rectangle (|x| > 50 km or depth >
+# 40 km); 0 on the rectangle, whose nodes lie on rows. Rows every 500 m to 10 km from it (the
+# outer nodes nearest to it are a cell away: their nearest row is an outer one), every 5 km
+# farther, to the body's sides (200 km) and bottom (100 km).
+X, Z = 200e3, 100e3
+creep = []
+for spacing, reach in ((500.0, 10e3), (5e3, None)):
+    for i in range(int(round(2 * X / spacing)) + 1):
+        x = -X + i * spacing
+        for j in range(int(round(Z / spacing)) + 1):
+            d = j * spacing
+            inside = abs(x) <= lf / 2 and d <= Wf
+            near = abs(x) <= lf / 2 + 10e3 and d <= Wf + 10e3
+            if reach is not None and (not near or inside and spacing != step):
+                continue
+            if reach is None and near:
+                continue
+            creep.append("%g 0 %g %.17g" % (x, -d, 0.0 if inside else Vp))
+rows["creep"] = creep
 for name, r in rows.items():
     with open("constant/bp5-%s.dat" % name, "w") as f:
         f.write("# x y z %s on SEAS BP5-QD's fault, written by bp5Case.py\n" % name)
         f.write("\n".join(r) + "\n")
 
 
-def field(name):
-    return '{ type points; file "constant/bp5-%s.dat"; maxDistance 4e5; }' % name
+def field(name, maxDistance=4e5):
+    return '{ type points; file "constant/bp5-%s.dat"; maxDistance %g; }' % (name, maxDistance)
 
 
 head = lambda obj, cls="dictionary": (
@@ -107,18 +126,18 @@ files["constant/fractureProperties"] = head("fractureProperties") + (
     "// Rate-and-state friction on the plane y = 0: on the 100 km x 40 km fault a = 0.004 on the\n"
     "// velocity-weakening patch (60 km x 12 km at 4-16 km depth), 0.04 outside, linear over\n"
     "// h_t = 2 km between; L = 0.13 m and V_init = %g m/s in the 12 km x 12 km nucleation zone\n"
-    "// (x from -30 to -18 km), 0.14 m and V_p elsewhere. Beyond the 100 km x 40 km, where the\n"
-    "// benchmark imposes creep at V_p, the velocity-strengthening a = 0.04 (3D faults cannot yet\n"
-    "// be joined to a 'law creep' one): it creeps at about V_p as the sides move.\n"
+    "// (x from -30 to -18 km), 0.14 m and V_p elsewhere. Beyond the 100 km x 40 km the fault\n"
+    "// creeps at V_p along +x (creepSlipRate > 0 there).\n"
     "fault\n{\n    law                 rateState;\n    a                   %s;\n"
     "    b                   %g;\n    characteristicSlip  %s;\n    referenceFriction   %g;\n"
-    "    referenceSlipRate   %g;\n    initialSlipRate     %s;\n    shearWaveSpeed      %g;\n}\n"
-    % (Vi, field("a"), b, field("L"), f0, V0, field("Vinit"), cs))
+    "    referenceSlipRate   %g;\n    initialSlipRate     %s;\n    shearWaveSpeed      %g;\n"
+    "    creepSlipRate       %s;\n    creepDirection      (1 0 0);\n}\n"
+    % (Vi, field("a"), b, field("L"), f0, V0, field("Vinit"), cs, field("creep", 4e3)))
 half = Vp * end / 2
 files["0/D"] = head("D", "pointVectorField") + (
     "// The far sides move as rigid bodies along strike, +/- V_p t / 2 (y > 0: +x), linearly in\n"
     "// time; the free surface and the bottom are traction-free (tandem's BP5 example). The\n"
-    "// fault plane y = 0 cuts the whole body: far from the rate-and-state patch it creeps.\n"
+    "// fault plane y = 0 cuts the whole body: beyond the 100 km x 40 km it creeps at V_p.\n"
     "dimensions [0 1 0 0 0 0 0];\ninternalField uniform (0 0 0);\nboundaryField\n{\n"
     "    top    { type free; }\n    bottom { type free; }\n"
     "    plus   { type fixedDisplacement; value table ((0 (0 0 0)) (%s (%s 0 0))); }\n"

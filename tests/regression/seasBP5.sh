@@ -18,9 +18,11 @@
 #    G sum A_i |V_i| within 1 % of G (0.01 x 12 km x 12 km + V_p x the rest) (the lumped
 #    areas of the nucleation zone's nodes approximate its area: checked against the mesh);
 #  * a run stopped at 5e4 s and restarted writes the very bytes of the uninterrupted one;
+#  * law rateState's creepSlipRate: every node beyond the 100 km x 40 km has slipped V_p t
+#    along +x exactly;
 #  * refusals, exit 1 naming the key, nothing written: a station 30 km off the fault,
 #    stations without strike, strike down the dip, profiles, surfaceStations and positiveSlip
-#    in 3D, an arclength station in 3D.
+#    in 3D, an arclength station in 3D, a creepDirection normal to the fault.
 # Usage: seasBP5.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$1 src=$2 work=$3
@@ -90,6 +92,25 @@ st = [float(l.split()[0]) for l in open(out + "/fltst_strk+00dp+10.dat").read().
 assert ts == st, "global.dat at the stations' times"
 print("PASS: global.dat at the stations' times, log10 max V = -2 and the moment rate at t = 0")
 PY
+# creepSlipRate: beyond the 100 km x 40 km every node has slipped V_p t along +x exactly (Omega+
+# is y > 0), those on it not by that; but those on the sides, which their Dirichlet conditions
+# hold.
+/usr/bin/python3 - <<'PY'
+lines = open("100000/fractures/fault.dat").read().splitlines()
+h = lines[0][1:].split()
+rows = [[float(v) for v in l.split()[:-1]] for l in lines if not l.startswith("#")]
+ix, iz, isx, isy, isz = (h.index(c) for c in ("x", "z", "slipX", "slipY", "slipZ"))
+# (Nodes on the sides x = -/+200 km are held by the sides' Dirichlet conditions.)
+outside = [r for r in rows if (abs(r[ix]) > 50001 or r[iz] < -40001) and abs(r[ix]) < 199999]
+inside = [r for r in rows if abs(r[ix]) < 49999 and r[iz] > -39999]
+assert len(outside) >= 50 and len(inside) >= 20, (len(outside), len(inside))
+worst = max(abs(r[isx] - 1e-9 * 1e5) + abs(r[isy]) + abs(r[isz]) for r in outside)
+assert worst <= 1e-9 * 1e-4, worst  # round-off of V t
+assert any(abs(r[isx] - 1e-4) > 1e-6 for r in inside)
+print(f"PASS: {len(outside)} nodes beyond the rate-and-state rectangle crept V_p t along +x "
+      f"(to {worst:.1e} m)")
+PY
+grep -q "^Fracture fault: [0-9]* of [0-9]* nodes creep (creepSlipRate > 0) along (1 0 0)" log.frictionSolver
 # Restart, byte for byte.
 cd "$work/restarted/bp5"
 sed -i 's/^endTime .*/endTime 5e4;/' system/controlDict
@@ -129,4 +150,12 @@ refuse positive 's/^    seismicSlipRate.*/&\n    positiveSlip (1 0 0);/' \
   "controlDict:.*faultOutput: 'positiveSlip' is the 2D key; in 3D give 'strike (x y z)'"
 refuse arclength 's/fltst_strk+00dp+22 (0 0 -22000);/fltst_strk+00dp+22 22000;/' \
   "controlDict:.*station 'fltst_strk+00dp+22': in 3D a station is a point (x y z)"
-echo "PASS: 3D refusals (off the fault, no strike, strike down the dip, profiles, surface stations, positiveSlip, an arclength)"
+# A creep direction normal to the fault.
+rm -rf "$work/creepNormal" && cp -r "$work/full/bp5" "$work/creepNormal" && cd "$work/creepNormal"
+rm -rf postProcessing [1-9]* VTK
+sed -i 's/^    creepDirection .*/    creepDirection      (0 1 0);/' constant/fractureProperties
+rc=0
+"$bin/frictionSolver" -case . >log 2>&1 || rc=$?
+[[ $rc == 1 ]] && grep -q "constant/fractureProperties: fracture 'fault': creepDirection is normal to the fracture at the node at" log ||
+  { echo "FAIL: creepDirection normal to the fault (exit $rc)"; cat log; exit 1; }
+echo "PASS: 3D refusals (off the fault, no strike, strike down the dip, profiles, surface stations, positiveSlip, an arclength, creepDirection normal to the fault)"

@@ -234,7 +234,8 @@ FaultSeries::Station FaultSeries::locate(double s, const std::string& what,
 void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
                        const std::vector<std::string>& fractureNames,
                        const std::vector<RateState>& laws, const LagrangeSpace& space,
-                       const Eigen::VectorXd& weights, double shearModulus) {
+                       const Eigen::VectorXd& weights, double shearModulus,
+                       const Eigen::VectorXd& imposed) {
   shearModulus_ = shearModulus;
   dim_ = dim;
   if (dim == 3) {
@@ -291,7 +292,12 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
   const std::size_t n = nodes.size();
   sign_.assign(n, 1.0);
   weight_.assign(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i) weight_[i] = weights[static_cast<Eigen::Index>(i)];
+  creeping_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    weight_[i] = weights[static_cast<Eigen::Index>(i)];
+    creeping_[i] =
+        static_cast<Eigen::Index>(i) < imposed.size() && imposed[static_cast<Eigen::Index>(i)] != 0;
+  }
   L_.assign(n, 0.0), V0_.assign(n, 1.0), f0_.assign(n, 0.0), b_.assign(n, 1.0);
   for (const Eigen::Index i : onFracture_) {
     const auto u = static_cast<std::size_t>(i);
@@ -512,7 +518,8 @@ void FaultSeries::open(const std::string& caseDir, bool fresh, double restartTim
         "# Column #1 = Time (s)\n"
         "# Column #2 = Max slip rate (log10 m/s)\n" +
         std::string(dim_ == 3 ? "# Column #3 = Moment rate (N m/s): G sum_i A_i |V_i| (A_i the "
-                                "nodes' lumped areas), G = "
+                                "nodes' lumped areas; both columns without the nodes that creep, "
+                                "creepSlipRate), G = "
                               : "# Column #3 = Moment rate (N/s, per metre along strike): G "
                                 "sum_i w_i |V_i|, G = ") +
         formatNumber(shearModulus_) +
@@ -548,7 +555,8 @@ void FaultSeries::sample(const RateSample& s) {
   const Eigen::VectorXd &slip = *s.slip, &psi = *s.psi, &rate = *s.rate;
   const auto speed = [&](Eigen::Index i) { return rate.segment(k_ * i, k_).norm(); };
   double maxV = 0;
-  for (const Eigen::Index i : onFracture_) maxV = std::max(maxV, speed(i));
+  for (const Eigen::Index i : onFracture_)
+    if (!creeping_[static_cast<std::size_t>(i)]) maxV = std::max(maxV, speed(i));
   const bool seismic = maxV >= seismicRate_;
   const auto due = [&](bool have, double last, double interval) {
     return !have || (s.time > last && s.time - last >= interval);
@@ -619,7 +627,8 @@ void FaultSeries::sample(const RateSample& s) {
     }
     double momentRate = 0;
     for (const Eigen::Index i : onFracture_)
-      momentRate += weight_[static_cast<std::size_t>(i)] * speed(i);
+      if (!creeping_[static_cast<std::size_t>(i)])
+        momentRate += weight_[static_cast<std::size_t>(i)] * speed(i);
     appendTime(globalRows_, s.time);
     appendValue(globalRows_, logRate(maxV));
     appendValue(globalRows_, shearModulus_ * momentRate);
@@ -673,7 +682,8 @@ void FaultSeries::sample3D(const RateSample& s, double maxV) {
   }
   double momentRate = 0;
   for (const Eigen::Index i : onFracture_)
-    momentRate += weight_[static_cast<std::size_t>(i)] * rate.segment(k_ * i, k_).norm();
+    if (!creeping_[static_cast<std::size_t>(i)])
+      momentRate += weight_[static_cast<std::size_t>(i)] * rate.segment(k_ * i, k_).norm();
   appendTime(globalRows_, s.time);
   appendValue(globalRows_, logRate(maxV));
   appendValue(globalRows_, shearModulus_ * momentRate);

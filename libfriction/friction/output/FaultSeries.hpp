@@ -89,9 +89,12 @@ class FaultSeries {
 
   /// Resolves the fracture, stations and profile points on the case's control nodes (their
   /// per-node laws for θ). InputError naming the key where one does not lie on the fracture.
+  /// `imposed`: per control node 1 where the slip rate is imposed (law rateState's
+  /// creepSlipRate): such nodes are left out of global.dat's max slip rate and moment rate.
   void bind(const std::vector<ControlNode>& nodes, int dim, int k,
             const std::vector<std::string>& fractureNames, const std::vector<RateState>& laws,
-            const LagrangeSpace& space, const Eigen::VectorXd& weights, double shearModulus);
+            const LagrangeSpace& space, const Eigen::VectorXd& weights, double shearModulus,
+            const Eigen::VectorXd& imposed);
   bool hasSurfaceStations() const { return !surface_.empty(); }
   const std::string& fracture() const { return fracture_; }
   /// W: the displacement at the surface stations (d rows per station) from the split space's
@@ -149,6 +152,7 @@ class FaultSeries {
   std::vector<std::string> surfaceRows_;
   double shearModulus_ = 0;     ///< G of the rock at the fracture [Pa]
   std::vector<double> weight_;  ///< per control node: its lumped length [m]
+  std::vector<char> creeping_;  ///< per control node: its slip rate is imposed
   std::unique_ptr<AppendFile> globalFile_;
   std::string globalRows_;
 
