@@ -669,6 +669,34 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
         r.evolution = F.aging ? StateEvolution::aging : StateEvolution::slip;
         initialSlipRate_[index[i]] = vi[j];
       }
+      // creepSlipRate: the nodes where it is > 0 creep as law creep's (no state).
+      if (!F.creepDirection.isZero()) {
+        const Eigen::VectorXd rate = F.creepRate.evaluate(on);
+        const int k = system_->blockSize();
+        long creeping = 0;
+        for (std::size_t i = 0; i < index.size(); ++i) {
+          const double v = rate[static_cast<Eigen::Index>(i)];
+          if (!(v > 0)) continue;
+          const ControlNode& node = *on[i];
+          Eigen::Vector3d d = F.creepDirection - F.creepDirection.dot(node.normal) * node.normal;
+          if (!(d.norm() > 1e-6))
+            throw InputError(
+                (fs::path(caseDir_) / "constant" / "fractureProperties").string(),
+                "fracture '" + fractures_[f].name + "': creepDirection is normal to the " +
+                    "fracture at the node at (" + formatNumber(node.position.x()) + ", " +
+                    formatNumber(node.position.y()) +
+                    (system_->dimension() == 3 ? ", " + formatNumber(node.position.z()) : "") +
+                    "): it has no component along the fracture to creep in");
+          d.normalize();
+          imposed_[index[i]] = 1;
+          for (int c = 0; c < k; ++c) imposedRate_[k * index[i] + c] = v * d.dot(node.tangent[c]);
+          ++creeping;
+        }
+        log << "Fracture " << fractures_[f].name << ": " << creeping << " of " << index.size()
+            << " nodes creep (creepSlipRate > 0) along (" << formatNumber(F.creepDirection.x())
+            << " " << formatNumber(F.creepDirection.y())
+            << (system_->dimension() == 3 ? " " + formatNumber(F.creepDirection.z()) : "") << ")\n";
+      }
       log << "Fracture " << fractures_[f].name << ": radiation damping eta " << eta << " Pa s/m"
           << (F.radiationDamping >= 0 ? ""
                                       : " (G/(2 c_s), G " + formatNumber(shearModulus_[f]) + " Pa)")
@@ -693,7 +721,7 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
         std::find(names.begin(), names.end(), faultSeries_->fracture()) - names.begin());
     faultSeries_->bind(nodes, split_.mesh.dim, system_->blockSize(), names, rateLaws_,
                        system_->splitSpace(), system_->weights(),
-                       f < shearModulus_.size() ? shearModulus_[f] : 0.0);
+                       f < shearModulus_.size() ? shearModulus_[f] : 0.0, imposed_);
   }
   // The cells around each tip and junction end, for the stress the tables give there: those
   // holding a node of the split space at the tip's position (every copy of it; copies share

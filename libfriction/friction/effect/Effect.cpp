@@ -369,6 +369,80 @@ class FracturePressure : public Effect {
   std::vector<double> s_, p_;
 };
 
+/// A prestress on one fracture given as fields along it (SEAS BP5's τ⁰(x, z), which varies
+/// with a(x, z) and no in-situ stress tensor gives): σ_n += normal, and a shear of magnitude
+/// `shear` that drives Ω⁺ along `direction` (projected on each node's tangent plane) relative
+/// to Ω⁻, i.e. τ = −shear d̂ (φ = −τ drives the slip, docs/method.md §2). Constant in time; it
+/// does not load the body.
+class FaultTraction : public Effect {
+ public:
+  FaultTraction(const std::string& name, const Dictionary& d,
+                const std::vector<std::string>& fractures, const std::string& caseDir, int dim)
+      : where_(d.location()) {
+    name_ = name;
+    fracture_ = d.getWord("fracture");
+    if (std::find(fractures.begin(), fractures.end(), fracture_) == fractures.end())
+      d.fail("fracture", "key 'fracture': '" + fracture_ + "' is not a fracture of the case" +
+                             suggestionText(fracture_, fractures) +
+                             " (fractures: " + joinWords(fractures) + ")");
+    shear_ = FrictionField::read(d, "shear", Bounds::nonNegative(), caseDir, dim);
+    normal_ = d.found("normal") ? FrictionField::read(d, "normal", Bounds{}, caseDir, dim)
+                                : FrictionField(0.0);
+    const std::vector<double> v = d.getScalarList("direction");
+    if (v.size() != static_cast<std::size_t>(dim))
+      d.fail("direction", dim == 2 ? "key 'direction': expected (x y) on a 2D mesh"
+                                   : "key 'direction': expected (x y z) on a 3D mesh");
+    direction_ << v[0], v[1], dim == 3 ? v[2] : 0.0;
+    if (!(direction_.norm() > 0) || !std::isfinite(direction_.norm()))
+      d.fail("direction",
+             "key 'direction': expected a non-zero vector, the way the shear drives "
+             "Omega+ relative to Omega-");
+  }
+  std::string type() const override { return "faultTraction"; }
+  std::string describe() const override {
+    return "on fracture " + fracture_ + ": shear " + shear_.describe() + " Pa along " +
+           vec(direction_) + ", normal " + normal_.describe() + " Pa";
+  }
+  void bind(const EffectContext& c) override {
+    const auto takes = [&](std::size_t f) { return c.fractureNames[f] == fracture_; };
+    std::vector<char> on;
+    fieldOnFractures(shear_, c, takes, "shear (" + name_ + ")", shearAt_, on);
+    fieldOnFractures(normal_, c, takes, "normal stress (" + name_ + ")", normalAt_, on);
+    on_ = on;
+    for (std::size_t i = 0; i < c.nodes.size(); ++i) {
+      if (!on_[i]) continue;
+      const ControlNode& node = c.nodes[i];
+      const Eigen::Vector3d d = direction_ - direction_.dot(node.normal) * node.normal;
+      if (!(d.norm() > 1e-6 * direction_.norm()))
+        throw InputError(where_, "effect '" + name_ + "': direction " + vec(direction_) +
+                                     " is normal to fracture '" + fracture_ + "' at the node at " +
+                                     vec(node.position) +
+                                     ": it gives the shear no direction there");
+    }
+  }
+  void addFractureTraction(const std::vector<ControlNode>& nodes, double, Eigen::VectorXd& sigmaN,
+                           Eigen::VectorXd& tau) const override {
+    const Eigen::Index n = sigmaN.size(), k = n > 0 ? tau.size() / n : 1;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (!on_[static_cast<std::size_t>(i)]) continue;
+      const ControlNode& node = nodes[static_cast<std::size_t>(i)];
+      const Eigen::Vector3d d =
+          (direction_ - direction_.dot(node.normal) * node.normal).normalized();
+      sigmaN[i] += normalAt_[i];
+      for (Eigen::Index c = 0; c < k && c < 2; ++c)
+        tau[k * i + c] -= shearAt_[i] * d.dot(node.tangent[static_cast<std::size_t>(c)]);
+    }
+  }
+
+ private:
+  std::string fracture_;
+  SourceLocation where_;
+  FrictionField shear_, normal_;
+  Eigen::Vector3d direction_ = Eigen::Vector3d::Zero();
+  Eigen::VectorXd shearAt_, normalAt_;
+  std::vector<char> on_;
+};
+
 struct EffectEntry {
   const char* name;
   std::unique_ptr<Effect> (*make)(const std::string&, const Dictionary&,
@@ -389,6 +463,11 @@ const EffectEntry effectTable[] = {
      [](const std::string& n, const Dictionary& d, const std::vector<std::string>& f,
         const std::string& c, int dim) -> std::unique_ptr<Effect> {
        return std::make_unique<FracturePressure>(n, d, f, c, dim);
+     }},
+    {"faultTraction",
+     [](const std::string& n, const Dictionary& d, const std::vector<std::string>& f,
+        const std::string& c, int dim) -> std::unique_ptr<Effect> {
+       return std::make_unique<FaultTraction>(n, d, f, c, dim);
      }},
     {"faultPressure", makeFaultPressure},
     {"porePressure", makePorePressure},

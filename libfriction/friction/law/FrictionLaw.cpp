@@ -105,6 +105,20 @@ const LawEntry lawTable[] = {
                                               : FrictionField(1e-6);
        f.initialV = in.field("initialSlipRate", Bounds::positive());
        f.aging = in.d.getChoiceOr("stateEvolution", {"aging", "slip"}, "aging") == "aging";
+       if (in.d.found("creepSlipRate") || in.d.found("creepDirection")) {
+         f.creepRate = in.field("creepSlipRate", Bounds::nonNegative());
+         const std::vector<double> v = in.d.getScalarList("creepDirection");
+         if (v.size() != static_cast<std::size_t>(in.dim))
+           in.d.fail("creepDirection", in.dim == 2 ? "key 'creepDirection': expected (x y)"
+                                                   : "key 'creepDirection': expected (x y z) on "
+                                                     "a 3D mesh");
+         f.creepDirection << v[0], v[1], in.dim == 3 ? v[2] : 0.0;
+         if (!(f.creepDirection.norm() > 0) || !std::isfinite(f.creepDirection.norm()))
+           in.d.fail("creepDirection",
+                     "key 'creepDirection': expected a non-zero vector, the direction in which "
+                     "the side Omega+ creeps relative to Omega-");
+         f.creepDirection.normalize();
+       }
        if (in.d.alternative({{"shearWaveSpeed"}, {"radiationDamping"}}) == 0)
          f.shearWaveSpeed = in.d.getScalar("shearWaveSpeed", Bounds::positive());
        else

@@ -134,6 +134,11 @@ class RateStateLaw : public FrictionLaw {
     FrictionField a, b, L, f0, V0, initialV;
     bool aging = true;
     double shearWaveSpeed = 0, radiationDamping = -1;  ///< one of the two given (else < 0 / 0)
+    /// Optional: where this field is > 0 a node creeps at that rate [m/s] along creepDirection
+    /// (Ω⁺ relative to Ω⁻, projected on its tangent plane) as law creep's, the rest of the
+    /// fracture obeying the law: the creeping region around a 3D fault (SEAS BP5), one surface.
+    FrictionField creepRate{0.0};
+    Eigen::Vector3d creepDirection = Eigen::Vector3d::Zero();  ///< zero: no creepSlipRate
   };
   explicit RateStateLaw(Fields f) : f_(std::move(f)) {}
   std::string name() const override { return "rateState"; }

@@ -6,13 +6,17 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <sstream>
+
+#include <Eigen/Geometry>
 
 #include "friction/core/AtomicFile.hpp"
 #include "friction/core/InputFile.hpp"
 #include "friction/core/Suggest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
+#include "friction/dict/Value.hpp"
 #include "friction/fe/LagrangeSpace.hpp"
 #include "friction/fe/Simplex.hpp"
 #include "friction/fracture/FractureSystem.hpp"
@@ -54,6 +58,26 @@ std::string keptLines(const std::string& path, double limit) {
   return kept;
 }
 
+std::string shortNumber(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+/// "(x y z)" to 10 significant digits, round-off below 1e-9 of the largest component as 0:
+/// a header names the node, not its last bits.
+std::string shortPoint(const Eigen::Vector3d& x) {
+  const double scale = x.cwiseAbs().maxCoeff();
+  std::string out = "(";
+  for (int c = 0; c < 3; ++c) {
+    char buf[64];
+    const double v = std::abs(x[c]) <= 1e-9 * scale ? 0.0 : x[c];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    out += (c > 0 ? " " : "") + std::string(buf);
+  }
+  return out + ")";
+}
+
 }  // namespace
 
 FaultSeries::~FaultSeries() = default;
@@ -78,6 +102,18 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
       d.fail("positiveSlip", "key 'positiveSlip': expected a non-zero vector");
     o.positive_.normalize();
     o.positiveGiven_ = true;
+    o.positiveAt_ = d.location("positiveSlip");
+  }
+  if (d.found("strike")) {
+    const std::vector<double> v = d.getScalarList("strike");
+    if (v.size() != 3)
+      d.fail("strike", "key 'strike': expected a vector (x y z), SEAS's along-strike direction 2");
+    o.strike_ << v[0], v[1], v[2];
+    if (!(o.strike_.norm() > 0) || !std::isfinite(o.strike_.norm()))
+      d.fail("strike", "key 'strike': expected a non-zero vector");
+    o.strike_.normalize();
+    o.strikeGiven_ = true;
+    o.strikeAt_ = d.location("strike");
   }
   o.seismicRate_ = d.getScalarOr("seismicSlipRate", 1e-3, Bounds::positive());
   o.stationInterval_ = d.getScalarOr("stationInterval", 0.0, Bounds::nonNegative());
@@ -90,8 +126,19 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
       o.checkStationName(st, name, "station");
       Station s;
       s.name = name;
-      s.s = st.getScalar(name);
       s.where = st.location(name);
+      // A number is an arclength (2D); a list (x y z) a point on a fault surface (3D).
+      const std::vector<Value>& v = st.values(name);
+      if (v.size() == 1 && v[0].isList()) {
+        const std::vector<double> x = st.getScalarList(name);
+        if (x.size() != 3)
+          st.fail(name, "station '" + name +
+                            "': expected an arclength s [m] (2D) or a point (x y z) [m] (3D)");
+        s.point = true;
+        s.x << x[0], x[1], x[2];
+      } else {
+        s.s = st.getScalar(name);
+      }
       o.stations_.push_back(s);
     }
     if (o.stations_.empty())
@@ -123,12 +170,19 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
       o.checkStationName(st, name, "surface station");
       Surface x;
       x.name = name;
-      x.x = st.getVector(name);
       x.where = st.location(name);
+      const std::vector<Value>& v = st.values(name);
+      if (v.size() == 1 && v[0].isList() && v[0].items.size() == 3) {
+        x.in3D = true;  // refused by bind(): 3D surface stations are not written yet
+        (void)st.getScalarList(name);
+      } else {
+        x.x = st.getVector(name);
+      }
       o.surface_.push_back(x);
     }
     if (o.surface_.empty())
       d.fail("surfaceStations", "key 'surfaceStations': no station (expected 'name (x y);')");
+    o.surfaceAt_ = d.location("surfaceStations");
   }
   o.verticalDown_ = d.getBoolOr("verticalDown", false);
   if (o.stations_.empty() && !o.profiles_ && o.surface_.empty())
@@ -180,12 +234,45 @@ FaultSeries::Station FaultSeries::locate(double s, const std::string& what,
 void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
                        const std::vector<std::string>& fractureNames,
                        const std::vector<RateState>& laws, const LagrangeSpace& space,
-                       const Eigen::VectorXd& weights, double shearModulus) {
+                       const Eigen::VectorXd& weights, double shearModulus,
+                       const Eigen::VectorXd& imposed) {
   shearModulus_ = shearModulus;
-  if (dim != 2)
-    throw InputError(fractureAt_,
-                     "faultOutput: fault stations and profiles are written for 2D cases only (a "
-                     "fault surface has no arclength; 3D: not yet)");
+  dim_ = dim;
+  if (dim == 3) {
+    // What 3D does not write yet, and the 2D key that 3D replaces, before any work.
+    if (profiles_)
+      throw InputError(profilesAt_,
+                       "faultOutput: 'profiles' run along a 2D fracture's arclength, which a "
+                       "fault surface (3D) does not have: remove them (3D writes the stations "
+                       "and global.dat)");
+    if (!surface_.empty())
+      throw InputError(surfaceAt_,
+                       "faultOutput: 'surfaceStations' are written for 2D cases only so far: "
+                       "remove them in 3D");
+    if (positiveGiven_)
+      throw InputError(positiveAt_,
+                       "faultOutput: 'positiveSlip' is the 2D key; in 3D give 'strike (x y z)', "
+                       "SEAS's along-strike direction 2 (slip_2 and slip_3 then follow SEAS's "
+                       "signs)");
+    if (!stations_.empty() && !strikeGiven_)
+      throw InputError(fractureAt_,
+                       "faultOutput: 3D stations need 'strike (x y z)', SEAS's along-strike "
+                       "direction 2 (e.g. strike (1 0 0) for a fault in the plane y = 0)");
+  } else {
+    if (strikeGiven_)
+      throw InputError(strikeAt_,
+                       "faultOutput: 'strike' is for 3D faults; in 2D the slip's sign is "
+                       "'positiveSlip (x y)'");
+    for (const Surface& x : surface_)
+      if (x.in3D)
+        throw InputError(x.where,
+                         "surface station '" + x.name + "': expected a point (x y) on a 2D mesh");
+    for (const Station& st : stations_)
+      if (st.point)
+        throw InputError(st.where, "station '" + st.name +
+                                       "': a point (x y z) is a 3D station; in 2D give the "
+                                       "arclength s [m] along the fracture");
+  }
   const auto it = std::find(fractureNames.begin(), fractureNames.end(), fracture_);
   if (it == fractureNames.end())
     throw InputError(fractureAt_, "faultOutput: '" + fracture_ + "' is not a fracture" +
@@ -197,14 +284,20 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
     if (nodes[i].fracture == f) onFracture_.push_back(static_cast<Eigen::Index>(i));
   if (onFracture_.empty())
     throw InputError(fractureAt_, "faultOutput: fracture '" + fracture_ + "' has no node");
-  std::stable_sort(onFracture_.begin(), onFracture_.end(), [&](Eigen::Index a, Eigen::Index b) {
-    return nodes[static_cast<std::size_t>(a)].arclength <
-           nodes[static_cast<std::size_t>(b)].arclength;
-  });
+  if (dim == 2)
+    std::stable_sort(onFracture_.begin(), onFracture_.end(), [&](Eigen::Index a, Eigen::Index b) {
+      return nodes[static_cast<std::size_t>(a)].arclength <
+             nodes[static_cast<std::size_t>(b)].arclength;
+    });
   const std::size_t n = nodes.size();
   sign_.assign(n, 1.0);
   weight_.assign(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i) weight_[i] = weights[static_cast<Eigen::Index>(i)];
+  creeping_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    weight_[i] = weights[static_cast<Eigen::Index>(i)];
+    creeping_[i] =
+        static_cast<Eigen::Index>(i) < imposed.size() && imposed[static_cast<Eigen::Index>(i)] != 0;
+  }
   L_.assign(n, 0.0), V0_.assign(n, 1.0), f0_.assign(n, 0.0), b_.assign(n, 1.0);
   for (const Eigen::Index i : onFracture_) {
     const auto u = static_cast<std::size_t>(i);
@@ -214,7 +307,7 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
                                         "' has no rate-and-state law (its state column needs "
                                         "law rateState)");
     L_[u] = law.L, V0_[u] = law.V0, f0_[u] = law.f0, b_[u] = law.b;
-    if (positiveGiven_) {
+    if (positiveGiven_ && dim == 2) {
       const double d = positive_.dot(nodes[u].tangent[0]);
       if (std::abs(d) < 1e-6)
         throw InputError(fractureAt_, "faultOutput: positiveSlip is normal to fracture '" +
@@ -223,6 +316,11 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
                                           " m: it gives the slip no sign there");
       sign_[u] = d > 0 ? 1.0 : -1.0;
     }
+  }
+  if (dim == 3) {
+    bind3D(nodes);
+    W_.resize(0, space.numDofs());
+    return;
   }
   for (Station& st : stations_) {
     const std::string name = st.name;
@@ -270,8 +368,93 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
   }
 }
 
+void FaultSeries::bind3D(const std::vector<ControlNode>& nodes) {
+  const auto point = shortPoint;
+  // SEAS's frame per node: e2 the strike on the tangent plane, e1 the normal whose side makes
+  // e3 = e1 × e2 point downwards (x1 x2 x3 right-handed, x3 down: BP4, BP5); the + side is the
+  // one e1 points to, Ω⁺ (the −n_Γ side) or Ω⁻.
+  seas_.assign(nodes.size(), Eigen::Matrix2d::Zero());
+  std::vector<Eigen::Vector3d> plusNormal(nodes.size(), Eigen::Vector3d::Zero());
+  for (const Eigen::Index i : onFracture_) {
+    const auto u = static_cast<std::size_t>(i);
+    const ControlNode& node = nodes[u];
+    const std::string at =
+        "at the node at " + point(node.position) + " of fracture '" + fracture_ + "'";
+    Eigen::Vector3d e2 = strike_ - strike_.dot(node.normal) * node.normal;
+    if (!(e2.norm() > 1e-6))
+      throw InputError(strikeAt_, "faultOutput: strike " + point(strike_) +
+                                      " is normal to the fault " + at +
+                                      ": it gives no direction along it");
+    e2.normalize();
+    Eigen::Vector3d e1 = -node.normal;
+    Eigen::Vector3d e3 = e1.cross(e2);
+    if (!(std::abs(e3.z()) > 1e-6))
+      throw InputError(strikeAt_, "faultOutput: strike " + point(strike_) +
+                                      " runs down the fault's dip " + at +
+                                      " (SEAS's direction 3 = e1 x e2 would be horizontal): "
+                                      "give the horizontal direction along the fault");
+    double sign = 1.0;  // the + side is Ω⁺
+    if (e3.z() > 0) e1 = -e1, e3 = -e3, sign = -1.0;
+    for (int c = 0; c < 2; ++c) {
+      seas_[u](0, c) = sign * e2.dot(node.tangent[c]);
+      seas_[u](1, c) = sign * e3.dot(node.tangent[c]);
+    }
+    plusNormal[u] = e1;
+  }
+  // A station takes its nearest node of the fracture, which must lie within a cell of it: the
+  // distance from that node to its own nearest neighbour on the fracture.
+  for (Station& st : stations_) {
+    if (!st.point)
+      throw InputError(st.where, "station '" + st.name +
+                                     "': in 3D a station is a point (x y z) [m] on the fault, not "
+                                     "an arclength");
+    Eigen::Index best = onFracture_.front();
+    double d = std::numeric_limits<double>::infinity();
+    for (const Eigen::Index i : onFracture_) {
+      const double e = (nodes[static_cast<std::size_t>(i)].position - st.x).norm();
+      if (e < d) d = e, best = i;
+    }
+    const Eigen::Vector3d& x = nodes[static_cast<std::size_t>(best)].position;
+    double cell = std::numeric_limits<double>::infinity();
+    for (const Eigen::Index i : onFracture_)
+      if (i != best) {
+        const double e = (nodes[static_cast<std::size_t>(i)].position - x).norm();
+        if (e > 0) cell = std::min(cell, e);
+      }
+    if (d > cell)
+      throw InputError(st.where, "station '" + st.name + "' at " + point(st.x) +
+                                     ": not on fracture '" + fracture_ +
+                                     "': its nearest node, at " + point(x) + ", is " +
+                                     shortNumber(d) + " m away, farther than a cell (" +
+                                     shortNumber(cell) + " m, that node's nearest neighbour)");
+    st.i0 = st.i1 = best;
+    st.w = 0;
+    st.at = x;
+    st.e1 = plusNormal[static_cast<std::size_t>(best)];
+  }
+}
+
 std::string FaultSeries::header(const Station& st) const {
   std::ostringstream h;
+  if (dim_ == 3) {
+    const auto point = shortPoint;
+    h << "# libfriction, frictionSolver: fault station '" << st.name << "' on fracture '"
+      << fracture_ << "' at " << point(st.x) << " m: its nearest node, at " << point(st.at)
+      << " m (" << shortNumber((st.at - st.x).norm()) << " m away)\n"
+      << "# direction 2 along strike " << point(strike_)
+      << ", 3 = e1 x e2 (down-dip), e1 = " << point(st.e1)
+      << " pointing to the + side; slip is the + side's motion relative to the - side\n"
+      << "# Column #1 = Time (s)\n"
+      << "# Column #2 = Slip_2 (m)\n"
+      << "# Column #3 = Slip_3 (m)\n"
+      << "# Column #4 = Slip_rate_2 (log10 m/s), of the absolute value\n"
+      << "# Column #5 = Slip_rate_3 (log10 m/s), of the absolute value\n"
+      << "# Column #6 = Shear_stress_2 (MPa)\n"
+      << "# Column #7 = Shear_stress_3 (MPa)\n"
+      << "# Column #8 = State (log10 s), theta = (L/V0) exp((psi - f0)/b)\n"
+      << "t slip_2 slip_3 slip_rate_2 slip_rate_3 shear_stress_2 shear_stress_3 state\n";
+    return h.str();
+  }
   h << "# libfriction, frictionSolver: fault station '" << st.name << "' on fracture '" << fracture_
     << "' at arclength " << formatNumber(st.s) << " m\n"
     << "# slip and shear stress count positive along "
@@ -333,8 +516,12 @@ void FaultSeries::open(const std::string& caseDir, bool fresh, double restartTim
         "# libfriction, frictionSolver: fracture '" + fracture_ +
         "' as a whole, at the stations' times\n"
         "# Column #1 = Time (s)\n"
-        "# Column #2 = Max slip rate (log10 m/s)\n"
-        "# Column #3 = Moment rate (N/s, per metre along strike): G sum_i w_i |V_i|, G = " +
+        "# Column #2 = Max slip rate (log10 m/s)\n" +
+        std::string(dim_ == 3 ? "# Column #3 = Moment rate (N m/s): G sum_i A_i |V_i| (A_i the "
+                                "nodes' lumped areas; both columns without the nodes that creep, "
+                                "creepSlipRate), G = "
+                              : "# Column #3 = Moment rate (N/s, per metre along strike): G "
+                                "sum_i w_i |V_i|, G = ") +
         formatNumber(shearModulus_) +
         " Pa\n"
         "t max_slip_rate moment_rate\n";
@@ -368,7 +555,8 @@ void FaultSeries::sample(const RateSample& s) {
   const Eigen::VectorXd &slip = *s.slip, &psi = *s.psi, &rate = *s.rate;
   const auto speed = [&](Eigen::Index i) { return rate.segment(k_ * i, k_).norm(); };
   double maxV = 0;
-  for (const Eigen::Index i : onFracture_) maxV = std::max(maxV, speed(i));
+  for (const Eigen::Index i : onFracture_)
+    if (!creeping_[static_cast<std::size_t>(i)]) maxV = std::max(maxV, speed(i));
   const bool seismic = maxV >= seismicRate_;
   const auto due = [&](bool have, double last, double interval) {
     return !have || (s.time > last && s.time - last >= interval);
@@ -379,6 +567,10 @@ void FaultSeries::sample(const RateSample& s) {
   const bool profileRow =
       profiles_ && due(haveProfileRow_, lastProfile_, seismic ? profileSeismic_ : profileInterval_);
   if (!stationRow && !profileRow) return;
+  if (dim_ == 3) {
+    sample3D(s, maxV);
+    return;
+  }
 
   // The values at a node, with the slip's sign: slip, |V|, φ = −τ along the slip, σ̄, log10 θ.
   Eigen::VectorXd tau(k_);
@@ -435,7 +627,8 @@ void FaultSeries::sample(const RateSample& s) {
     }
     double momentRate = 0;
     for (const Eigen::Index i : onFracture_)
-      momentRate += weight_[static_cast<std::size_t>(i)] * speed(i);
+      if (!creeping_[static_cast<std::size_t>(i)])
+        momentRate += weight_[static_cast<std::size_t>(i)] * speed(i);
     appendTime(globalRows_, s.time);
     appendValue(globalRows_, logRate(maxV));
     appendValue(globalRows_, shearModulus_ * momentRate);
@@ -461,6 +654,42 @@ void FaultSeries::sample(const RateSample& s) {
     lastProfile_ = s.time;
     haveProfileRow_ = true;
   }
+}
+
+void FaultSeries::sample3D(const RateSample& s, double maxV) {
+  const Eigen::VectorXd &slip = *s.slip, &psi = *s.psi, &rate = *s.rate;
+  const auto logRate = [](double v) { return std::log10(std::max(v, 1e-300)); };
+  Eigen::VectorXd tau(k_);
+  for (std::size_t j = 0; j < stations_.size(); ++j) {
+    const Eigen::Index i = stations_[j].i0;
+    const auto u = static_cast<std::size_t>(i);
+    double sigmaEff = 0;
+    s.traction(i, tau, sigmaEff);
+    const Eigen::Matrix2d& P = seas_[u];
+    const Eigen::Vector2d d = P * Eigen::Vector2d(slip[k_ * i], slip[k_ * i + 1]);
+    const Eigen::Vector2d v = P * Eigen::Vector2d(rate[k_ * i], rate[k_ * i + 1]);
+    const Eigen::Vector2d phi = -(P * Eigen::Vector2d(tau[0], tau[1])) / 1e6;
+    std::string& row = stationRows_[j];
+    appendTime(row, s.time);
+    appendValue(row, d[0]);
+    appendValue(row, d[1]);
+    appendValue(row, logRate(std::abs(v[0])));
+    appendValue(row, logRate(std::abs(v[1])));
+    appendValue(row, phi[0]);
+    appendValue(row, phi[1]);
+    appendValue(row, std::log10(L_[u] / V0_[u]) + (psi[i] - f0_[u]) / (b_[u] * std::log(10.0)));
+    row += "\n";
+  }
+  double momentRate = 0;
+  for (const Eigen::Index i : onFracture_)
+    if (!creeping_[static_cast<std::size_t>(i)])
+      momentRate += weight_[static_cast<std::size_t>(i)] * rate.segment(k_ * i, k_).norm();
+  appendTime(globalRows_, s.time);
+  appendValue(globalRows_, logRate(maxV));
+  appendValue(globalRows_, shearModulus_ * momentRate);
+  globalRows_ += "\n";
+  lastStation_ = s.time;
+  haveStationRow_ = true;
 }
 
 void FaultSeries::flush() {

@@ -34,7 +34,18 @@
 //
 // The rows of a step are appended when the step ends (flush), with the case's other histories;
 // a restart keeps the rows up to its time and the times of the last rows (uniform/
-// frictionState), so the files go on as in an uninterrupted run. 2D only for now.
+// frictionState), so the files go on as in an uninterrupted run.
+//
+// 3D (SEAS BP5-QD's layout, Jiang et al. 2022): a station is a point (x y z) on the fault and
+// takes its nearest fault node (InputError naming the key if that node is farther than its own
+// nearest neighbour, a cell); `strike (x y z)` gives SEAS's direction 2 (projected on each
+// node's tangent plane), direction 3 is e1 × e2 with e1 the fault normal whose side makes it
+// point downwards (SEAS's right-handed x1 x2 x3, x3 down), and the + side is the one e1
+// points to. Columns t slip_2 slip_3 slip_rate_2 slip_rate_3 shear_stress_2 shear_stress_3
+// state: the + side's motion relative to the − side along 2 and 3 [m], log10 of the absolute
+// slip-rate components [m/s], the driving shear along 2 and 3 [MPa], log10 θ [s]. global.dat's
+// moment rate is then G Σ A_i |V_i| [N m/s] (A_i the lumped areas). Profiles and surface
+// stations: 2D only so far (refused in 3D, naming the key).
 #pragma once
 
 #include <functional>
@@ -78,9 +89,12 @@ class FaultSeries {
 
   /// Resolves the fracture, stations and profile points on the case's control nodes (their
   /// per-node laws for θ). InputError naming the key where one does not lie on the fracture.
+  /// `imposed`: per control node 1 where the slip rate is imposed (law rateState's
+  /// creepSlipRate): such nodes are left out of global.dat's max slip rate and moment rate.
   void bind(const std::vector<ControlNode>& nodes, int dim, int k,
             const std::vector<std::string>& fractureNames, const std::vector<RateState>& laws,
-            const LagrangeSpace& space, const Eigen::VectorXd& weights, double shearModulus);
+            const LagrangeSpace& space, const Eigen::VectorXd& weights, double shearModulus,
+            const Eigen::VectorXd& imposed);
   bool hasSurfaceStations() const { return !surface_.empty(); }
   const std::string& fracture() const { return fracture_; }
   /// W: the displacement at the surface stations (d rows per station) from the split space's
@@ -102,13 +116,24 @@ class FaultSeries {
     std::string name;
     double s = 0;
     SourceLocation where;
-    Eigen::Index i0 = 0, i1 = 0;  ///< control nodes around s
-    double w = 0;                 ///< weight of i1
+    Eigen::Index i0 = 0, i1 = 0;                   ///< control nodes around s
+    double w = 0;                                  ///< weight of i1
+    bool point = false;                            ///< given as a point (x y z): 3D
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();   ///< the point given (3D)
+    Eigen::Vector3d at = Eigen::Vector3d::Zero();  ///< 3D: the node taken, and its e1 (+ side)
+    Eigen::Vector3d e1 = Eigen::Vector3d::Zero();
   };
   std::string fracture_;
   SourceLocation fractureAt_, profilesAt_;
   Eigen::Vector3d positive_ = Eigen::Vector3d::Zero();  ///< zero: t_Γ
   bool positiveGiven_ = false;
+  Eigen::Vector3d strike_ = Eigen::Vector3d::Zero();  ///< 3D: SEAS's direction 2
+  bool strikeGiven_ = false;
+  SourceLocation strikeAt_, surfaceAt_, positiveAt_;
+  int dim_ = 2;
+  /// 3D, per control node: row j (SEAS's directions 2, 3) of the map from the node's tangent
+  /// components (t₁, t₂) to the + side's motion relative to the − side (sign included).
+  std::vector<Eigen::Matrix2d> seas_;
   double seismicRate_ = 1e-3, stationInterval_ = 0, stationSeismic_ = 0;
   std::vector<Station> stations_;
   bool profiles_ = false;
@@ -118,6 +143,7 @@ class FaultSeries {
     std::string name;
     Eigen::Vector2d x;
     SourceLocation where;
+    bool in3D = false;  ///< given as (x y z): refused, 3D surface stations are not written yet
   };
   std::vector<Surface> surface_;
   bool verticalDown_ = false;
@@ -126,6 +152,7 @@ class FaultSeries {
   std::vector<std::string> surfaceRows_;
   double shearModulus_ = 0;     ///< G of the rock at the fracture [Pa]
   std::vector<double> weight_;  ///< per control node: its lumped length [m]
+  std::vector<char> creeping_;  ///< per control node: its slip rate is imposed
   std::unique_ptr<AppendFile> globalFile_;
   std::string globalRows_;
 
@@ -144,6 +171,8 @@ class FaultSeries {
   Station locate(double s, const std::string& what, const SourceLocation& where,
                  const std::vector<ControlNode>& nodes) const;
   std::string header(const Station& st) const;
+  void bind3D(const std::vector<ControlNode>& nodes);
+  void sample3D(const RateSample& s, double maxV);
   /// InputError naming the key unless `name` can be a file of its own in the output folder.
   void checkStationName(const Dictionary& d, const std::string& name,
                         const std::string& what) const;
