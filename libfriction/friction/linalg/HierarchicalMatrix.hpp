@@ -34,7 +34,7 @@
 namespace friction {
 
 struct HierarchicalSettings {
-  double tolerance = 1e-6;  ///< relative Frobenius error of every compressed block
+  double tolerance = 1e-8;  ///< relative Frobenius error of every compressed block
   double eta = 2.0;         ///< admissibility: min(diam τ, diam σ) ≤ eta · dist(τ, σ)
   int leafSize = 32;        ///< at most this many points per leaf cluster
 };

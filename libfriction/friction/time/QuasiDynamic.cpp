@@ -99,6 +99,20 @@ std::string QuasiDynamic::prepare(StepHost& host) {
   };
   H_ =
       std::make_unique<HierarchicalMatrix>(source, fault.positions, rowPoint, colPoint, hSettings_);
+  // auto keeps the H-matrix only where it stores at most autoHierarchicalShare of S's entries:
+  // a deterministic rule (a restart decides alike), where a timing would not be. On a fault
+  // surface of a few thousand nodes most blocks are near each other and stay dense.
+  const double share = H_->stats().storedEntries / H_->stats().denseEntries;
+  if (choice_ == OperatorChoice::automatic && share > autoHierarchicalShare) {
+    std::ostringstream s;
+    s << (built.empty() ? std::string() : built + "; ")
+      << "S of the right-hand side dense (faultOperator auto: S_tt " << kn << " rows; an H-matrix "
+      << "would store " << std::fixed << std::setprecision(1) << 100 * share
+      << " % of its entries, more than " << 100 * autoHierarchicalShare << " %)";
+    H_.reset();
+    hierarchical_ = false;
+    return s.str();
+  }
   // What a product costs either way, measured here in one run (alternating, the best of
   // several: this machine is shared), and how far apart the two are on a slip of every node.
   Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(kn, -1.0, 1.0).array().sin();

@@ -18,7 +18,7 @@
 //   of the error control, scheme dormandPrince54 (default) or bogackiShampine32, maxStep [s]
 //   (none), faultOperator (the S_tt, S_nt of the right-hand side: `auto`, the default, is
 //   `hierarchical` where S_tt has autoHierarchicalFrom rows or more and `dense` below;
-//   `dense`; or `{ type hierarchical; tolerance 1e-6; eta 2; leafSize 32; }`, compressed as an
+//   `dense`; or `{ type hierarchical; tolerance 1e-8; eta 2; leafSize 32; }`, compressed as an
 //   H-matrix, HierarchicalMatrix.hpp: a product then costs about (k+1)·n·r·log n instead of
 //   (k+1)·k·n², within `tolerance` of the dense one block by block). Each interval starts from the
 //   step size the last one proposed (the integrator's state, restarted from uniform/frictionState),
@@ -65,6 +65,10 @@ class QuasiDynamic : public TimeIntegrator {
   /// BP3 (utilities/frictionStudy/faultOperatorStudy.sh, README), below it a product by the
   /// H-matrix saves little and the right-hand side's other work dominates.
   static constexpr long autoHierarchicalFrom = 1000;
+  /// ... and keeps it only where it stores at most this share of S's entries (BP3 at 1 000
+  /// rows and more: 20-32 %; BP5 at 2 km, a 3D fault of 1 522 nodes: 95 %, and a product
+  /// slower than the dense one).
+  static constexpr double autoHierarchicalShare = 0.5;
   bool hierarchical_ = false;  ///< decided in prepare() for auto
   HierarchicalSettings hSettings_;
   std::unique_ptr<HierarchicalMatrix> H_;
