@@ -892,17 +892,52 @@ void FractureSystem::solve(const Eigen::VectorXd& j, bool withLoads, Eigen::Vect
 // solves G Σ_R = (r⁺ − r⁻)_R / 2 exactly at every node of R (a node of ¬R with no node of R on
 // its triangles has no M entry in a row of R: its column is dropped without harm). Held nodes
 // report the extended value; tips report zero, as before. G is not symmetric: it is factored
-// by LU, once, and Gᵀ for the adjoint.
+// by LU, once, and Gᵀ for the adjoint. Each Cartesian component has its own R (a roller holds
+// one component: its node is a row of the others), so up to d factorisations; components with
+// the same R share one.
 bool FractureSystem::buildRecovery() {
   const Index n = size();
-  recovered_.clear();
-  std::vector<Index> row(static_cast<std::size_t>(n), -1);
-  for (Index k = 0; k < n; ++k)
-    if (mask_[k] > 0 && nodes_[k].heldComponent < 0) {
-      row[k] = static_cast<Index>(recovered_.size());
-      recovered_.push_back(k);
+  // Per Cartesian component c the rows R_c: the free nodes, but for a node held by a roller
+  // not the component the roller holds. A roller fixes a Cartesian component (fixedDisplacement
+  // `components`), its reaction is along that axis alone, so the node's other components of
+  // (r⁺ − r⁻)/2 are still the traction's moments: the node keeps its own traction there
+  // instead of the mean of its neighbours' (which, measured on a fault extruded between two
+  // rollers in P2, left the nodes on the rollers cycling between stick and slip).
+  std::vector<std::vector<Index>> rows(static_cast<std::size_t>(dim_));
+  for (Index k = 0; k < n; ++k) {
+    if (mask_[k] <= 0) continue;
+    const int held = nodes_[k].heldComponent;
+    int axis = -1;  // the Cartesian axis the roller holds (-1: none, or not along an axis)
+    if (held >= 0)
+      for (int a = 0; a < dim_; ++a)
+        if (std::abs(std::abs(nodes_[k].tangent[held][a]) - 1) <= 1e-9) axis = a;
+    if (held >= 0 && axis < 0) continue;  // held along no single axis: no row (as before)
+    for (int c = 0; c < dim_; ++c)
+      if (c != axis) rows[static_cast<std::size_t>(c)].push_back(k);
+  }
+  recoveries_.clear();
+  for (int c = 0; c < dim_; ++c) {
+    int same = -1;
+    for (int b = 0; b < c; ++b)
+      if (rows[static_cast<std::size_t>(b)] == rows[static_cast<std::size_t>(c)])
+        same = recoveryOf_[static_cast<std::size_t>(b)];
+    if (same >= 0) {
+      recoveryOf_[static_cast<std::size_t>(c)] = same;
+      continue;
     }
-  const Index r = static_cast<Index>(recovered_.size());
+    recoveryOf_[static_cast<std::size_t>(c)] = static_cast<int>(recoveries_.size());
+    recoveries_.push_back(std::make_unique<Recovery>());
+    if (!buildRecovery(*recoveries_.back(), rows[static_cast<std::size_t>(c)])) return false;
+  }
+  return true;
+}
+
+bool FractureSystem::buildRecovery(Recovery& rec, const std::vector<Index>& recovered) {
+  const Index n = size();
+  rec.recovered = recovered;
+  std::vector<Index> row(static_cast<std::size_t>(n), -1);
+  for (std::size_t a = 0; a < recovered.size(); ++a) row[recovered[a]] = static_cast<Index>(a);
+  const Index r = static_cast<Index>(recovered.size());
   // (triangle, its local node) per control node. A triangle's sign of a node (faultTriangleSign_)
   // is −1 where the node is a joined node of a fracture oriented against the triangle's: Σ there
   // is the opposite of the triangle's field, in M and in the extension.
@@ -928,7 +963,7 @@ bool FractureSystem::buildRecovery() {
       if (!nodes_[k].tip) out.emplace_back(k, j, sign / static_cast<double>(from.size()));
     }
   }
-  extend_ = fromTriplets(n, r, out);
+  rec.extend = fromTriplets(n, r, out);
   if (r == 0) return true;
   Triplets mt;
   if (meet_) {
@@ -960,16 +995,19 @@ bool FractureSystem::buildRecovery() {
     }
   Eigen::SparseMatrix<double> G = fromTriplets(r, n, mt) * fromTriplets(n, r, full);
   G.makeCompressed();
-  massLU_.compute(G);
+  rec.lu.compute(G);
   Eigen::SparseMatrix<double> Gt = G.transpose();
   Gt.makeCompressed();
-  massLUt_.compute(Gt);
-  return massLU_.info() == Eigen::Success && massLUt_.info() == Eigen::Success;
+  rec.lut.compute(Gt);
+  return rec.lu.info() == Eigen::Success && rec.lut.info() == Eigen::Success;
 }
 
 void FractureSystem::applyRecovery(Eigen::MatrixXd& x, bool transpose) const {
-  const Index n = size(), r = static_cast<Index>(recovered_.size());
+  const Index n = size();
   for (int c = 0; c < dim_; ++c) {
+    const Recovery& rec =
+        *recoveries_[static_cast<std::size_t>(recoveryOf_[static_cast<std::size_t>(c)])];
+    const Index r = static_cast<Index>(rec.recovered.size());
     Eigen::MatrixXd part(n, x.cols());
     for (Index i = 0; i < n; ++i) part.row(i) = x.row(dim_ * i + c);
     Eigen::MatrixXd result;
@@ -977,12 +1015,12 @@ void FractureSystem::applyRecovery(Eigen::MatrixXd& x, bool transpose) const {
       result = Eigen::MatrixXd::Zero(n, x.cols());
     } else if (!transpose) {
       Eigen::MatrixXd onR(r, x.cols());
-      for (Index a = 0; a < r; ++a) onR.row(a) = part.row(recovered_[a]);
-      result = extend_ * Eigen::MatrixXd(massLU_.solve(onR));
+      for (Index a = 0; a < r; ++a) onR.row(a) = part.row(rec.recovered[a]);
+      result = rec.extend * Eigen::MatrixXd(rec.lu.solve(onR));
     } else {
-      const Eigen::MatrixXd onR = massLUt_.solve(Eigen::MatrixXd(extend_.transpose() * part));
+      const Eigen::MatrixXd onR = rec.lut.solve(Eigen::MatrixXd(rec.extend.transpose() * part));
       result = Eigen::MatrixXd::Zero(n, x.cols());
-      for (Index a = 0; a < r; ++a) result.row(recovered_[a]) = onR.row(a);
+      for (Index a = 0; a < r; ++a) result.row(rec.recovered[a]) = onR.row(a);
     }
     for (Index i = 0; i < n; ++i) x.row(dim_ * i + c) = result.row(i);
   }

@@ -209,6 +209,8 @@ class FractureSystem : public SlipResponse {
   // Σ = X G⁻¹ Σ̃_R per component (transpose: Σ̃ = Rᵀ G⁻ᵀ Xᵀ Σ), see factor().
   void applyRecovery(Eigen::MatrixXd& x, bool transpose) const;
   bool buildRecovery();
+  struct Recovery;
+  bool buildRecovery(Recovery& rec, const std::vector<Index>& recovered);
   // Σ·direction at a node of sigma (d entries per node), summed in component order.
   double project(const Eigen::VectorXd& sigma, Index node, const Eigen::Vector3d& direction) const;
 
@@ -254,9 +256,16 @@ class FractureSystem : public SlipResponse {
   std::vector<std::vector<Index>> vertexControl_;  ///< 3D: per fracture node, its control node
   std::vector<std::vector<std::array<Index, 6>>> triangleNodes_;  ///< 3D: triangleNodes()
   std::vector<int> edgeCode_;                                     ///< 3D P2: edgeIntersectionCode
-  std::vector<Index> recovered_;        ///< R: control node of each row of G
-  Eigen::SparseMatrix<double> extend_;  ///< X: n × |R|
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> massLU_, massLUt_;  ///< G and Gᵀ
+  /// The recovery of one Cartesian component of Σ (buildRecovery()): its rows R, extension X
+  /// and G's factors. A node held by a roller has that component's row only where the roller
+  /// does not hold it, so the components may differ; equal ones share one recovery.
+  struct Recovery {
+    std::vector<Index> recovered;                          ///< R: control node of each row of G
+    Eigen::SparseMatrix<double> extend;                    ///< X: n × |R|
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu, lut;  ///< G and Gᵀ
+  };
+  std::vector<std::unique_ptr<Recovery>> recoveries_;  ///< the distinct ones
+  std::array<int, 3> recoveryOf_{0, 0, 0};             ///< per Cartesian component
 };
 
 }  // namespace friction
