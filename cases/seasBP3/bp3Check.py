@@ -149,10 +149,11 @@ def main():
         ev = surfaceEvents(rows(path))
         print("# %s: offsets per event (|v| >= 1e-4 m/s) disp1 disp2 [m] (disp2 positive down)%s"
               % (name, "  FDRA (first four)" if name in surfaceRef else ""))
+        # Not `ref`: that name holds the events' reference the check below compares with.
+        offsets = surfaceRef.get(name, [])
         for k, (t, du, dw) in enumerate(ev):
-            ref = surfaceRef.get(name, [])
             print("%5d %10.2f %8.3f %8.3f%s" % (k + 1, t / YEAR, du, dw,
-                                              "   %8.3f %8.3f" % ref[k] if k < len(ref) else ""))
+                                              "   %8.3f %8.3f" % offsets[k] if k < len(offsets) else ""))
     if not a.check:
         return
     if not ref:
@@ -180,4 +181,5 @@ def main():
           "at 7.5 km agree with FDRA's within the bounds")
 
 
-main()
+if __name__ == "__main__":
+    main()
