@@ -28,27 +28,6 @@ read -r -a tolerances <<<"${TOLERANCES:-1e-6 1e-8}"
 mkdir -p "$work"
 work=$(cd "$work" && pwd)
 
-cat >"$work/events.py" <<'PY'
-import sys
-def events(case):
-    on, peaks, above = [], [], False
-    for line in open(case + "/postProcessing/faultOutput/global.dat"):
-        p = line.split()
-        if not p or p[0].startswith("#") or p[0] == "t":
-            continue
-        t, lv = float(p[0]), float(p[1])
-        if lv > -3 and not above:
-            on.append(t); peaks.append(lv); above = True
-        elif above:
-            peaks[-1] = max(peaks[-1], lv)
-        if lv < -4:
-            above = False
-    return on, peaks
-(a, pa), (b, pb) = events(sys.argv[1]), events(sys.argv[2])
-shift = max([abs(x - y) for x, y in zip(a, b)] or [0])
-peak = max([abs(x - y) for x, y in zip(pa, pb)] or [0])
-print("%d %d %.3g %.3g" % (len(a), len(b), shift, peak))
-PY
 
 printf "%5s %6s %8s %7s %8s %9s %9s %6s %8s %8s %9s %8s %7s %10s %9s\n" h kn operator "stored" MB \
   "prod[us]" "dense[us]" ratio "wall[s]" steps rhs "us/rhs" events "onset[s]" "peak"
@@ -85,7 +64,8 @@ for h in "${sizes[@]}"; do
     else
       mb=$(/usr/bin/python3 -c "print($kn * $kn * 2 * 8 / 1048576)")  # S_tt and S_nt (k = 1)
     fi
-    read -r ea eb shift peak < <(/usr/bin/python3 "$work/events.py" "$work/h$h-p$order-dense" "$c")
+    read -r _ ea eb _ shift _ peak < <(/usr/bin/python3 -B "$root/cases/seasBP3/bp3Compare.py" \
+      "$work/h$h-p$order-dense" "$c" | tail -n 1)
     printf "%5s %6s %8s %6s%% %8.1f %9s %9s %6s %8.0f %8s %9s %8s %7s %10s %9s\n" "$h" "$kn" "$op" "$stored" \
       "$mb" "$prod" "$dense" "$ratio" "$wall" "$steps" "$rhs" "$perRhs" "$eb" "$shift" "$peak"
   done
