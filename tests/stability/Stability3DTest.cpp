@@ -490,16 +490,21 @@ TEST_CASE("stability 3D: a block held only by a fault that opens", "[stability][
             "fluid { type fracturePressure; fracture fault; pressure 1e6; }\n");
   const int rc = c.solve();
   INFO(c.log());
-  // Measured: every step stalled (3 to 8 iterations), slip up to 2.9e10 m and opening up to
-  // 1.7e11 m at t = 1 (finite: the interface operator is singular only along the rigid
-  // motions of the upper half, which the dense LU meets as huge pivots), exit 3.
+  // The interface operator is singular along the rigid motions of the upper half, and what
+  // the dense LU makes of that is round-off: measured with one ordering of the factor, huge
+  // pivots (slip up to 2.9e10 m, opening up to 1.7e11 m at t = 1, note 3 of the judging);
+  // with another (the ordering on the graph of the nodes), a step the line search refuses
+  // (slip and opening 0, note 4). Every step stalled either way, exit 3, and the note names
+  // the part and the remedy (a closed fracture).
   const RunSummary s = checkRun(c, rc);
   CHECK(rc == 3);
   CHECK(s.times.size() == 4);
   for (const std::string& st : s.statuses) CHECK(st == "stalled");
-  CHECK_THAT(c.log(), Catch::Contains("opening up to") &&
-                          Catch::Contains("touches no Dirichlet patch and only 'fault' holds it") &&
-                          Catch::Contains("keep its fracture closed (contact bilateral"));
+  CHECK_THAT(c.log(), Catch::Contains("touches no Dirichlet patch and only 'fault' holds it"));
+  CHECK_THAT(c.log(), (Catch::Contains("opening up to") &&
+                       Catch::Contains("keep its fracture closed (contact bilateral")) ||
+                          (Catch::Contains("where they all open nothing holds the part") &&
+                           Catch::Contains("make the fracture bilateral")));
   const Table t = c.namedTable("1", "fault");
   CHECK(count(t, "open") == static_cast<int>(t.rows.size()));  // no tip: the fault cuts through
   // The same block with the fault kept closed (bilateral): the fault holds it, the pressure

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <sstream>
 
@@ -64,6 +65,21 @@ using CholmodMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, CholmodIndex>
 class CholmodLlt : public Eigen::CholmodSupernodalLLT<CholmodMatrix, Eigen::Lower> {
  public:
   const cholmod_factor* cholmodFactor() const { return m_cholmodFactor; }
+  /// The symbolic analysis of A (lower triangle read) in the order `perm` (postordered on
+  /// top, as CHOLMOD's own orderings are), in place of analyzePattern's own ordering.
+  void analyzeGiven(const CholmodMatrix& A, CholmodIndex* perm) {
+    release();
+    cholmod_common& cm = cholmod();
+    cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+    cm.nmethods = 1;
+    cm.method[0].ordering = CHOLMOD_GIVEN;
+    cm.postorder = 1;
+    m_cholmodFactor = cholmod_l_analyze_p(&view, perm, nullptr, 0, &cm);
+    this->m_isInitialized = true;
+    this->m_info = Eigen::Success;
+    m_analysisIsOk = true;
+    m_factorizationIsOk = false;
+  }
   /// Release the factor (or the analysis) held: the bordered path needs only its ordering.
   void release() {
     if (m_cholmodFactor) cholmod_l_free_factor(&m_cholmodFactor, &cholmod());
@@ -152,6 +168,115 @@ CholmodMatrix lowerTriangle(const Eigen::SparseMatrix<double>& A) {
   return lower;
 }
 
+// The columns of a symmetric matrix grouped by their pattern. Columns with the same rows —
+// the d displacement components of a node in a finite-element stiffness — are
+// indistinguishable to a fill-reducing ordering, so it can order the graph of the groups
+// instead: a d-th of the vertices and about a d²-th of the edges, where its time goes (AMD and
+// METIS find such vertices themselves, but only after reading the whole graph; measured in the
+// README, "The ordering"). A group's columns are then consecutive in the ordering.
+struct ColumnGroups {
+  std::vector<CholmodIndex> first;    ///< group g: members[first[g]] … members[first[g+1]−1]
+  std::vector<CholmodIndex> members;  ///< the columns, group after group, ascending in each
+  std::vector<CholmodIndex> of;       ///< each column's group
+  CholmodIndex count() const { return static_cast<CholmodIndex>(first.size()) - 1; }
+};
+
+// Groups of equal columns of A (both triangles stored, rows sorted in each column). Two
+// equal columns that hold their diagonal hold each other, so a column's candidates are its
+// own rows: one pass over the pattern, with a hash to skip most comparisons. A column whose
+// rows are not sorted stays alone (the ordering is then that of A's own graph there).
+ColumnGroups indistinguishableColumns(const Eigen::SparseMatrix<double>& A) {
+  using I = CholmodIndex;
+  const I n = A.cols();
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  const int* nnz = A.innerNonZeroPtr();  // null when compressed
+  auto end = [&](I j) { return nnz ? outer[j] + nnz[j] : outer[j + 1]; };
+  std::vector<std::uint64_t> hash(static_cast<std::size_t>(n));
+  for (I j = 0; j < n; ++j) {
+    std::uint64_t h = 0;
+    bool sorted = true;
+    for (int p = outer[j]; p < end(j); ++p) {
+      std::uint64_t x = static_cast<std::uint64_t>(inner[p]) + 0x9e3779b97f4a7c15ULL;
+      x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;  // splitmix64's finaliser
+      x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+      h += x ^ (x >> 31);
+      if (p > outer[j] && inner[p] <= inner[p - 1]) sorted = false;
+    }
+    // An unsorted column gets a hash of its own index: no other column matches it.
+    hash[j] = sorted ? h : ~static_cast<std::uint64_t>(j) * 0x9e3779b97f4a7c15ULL;
+  }
+  ColumnGroups g;
+  g.of.assign(static_cast<std::size_t>(n), -1);
+  g.members.reserve(static_cast<std::size_t>(n));
+  g.first.reserve(static_cast<std::size_t>(n) + 1);
+  auto same = [&](I j, I k) {
+    if (hash[j] != hash[k] || end(j) - outer[j] != end(k) - outer[k]) return false;
+    return std::equal(inner + outer[j], inner + end(j), inner + outer[k]);
+  };
+  g.first.push_back(0);
+  for (I j = 0; j < n; ++j) {
+    if (g.of[j] >= 0) continue;
+    const I group = g.count();
+    g.of[j] = group;
+    g.members.push_back(j);
+    for (int p = outer[j]; p < end(j); ++p) {
+      const I k = inner[p];
+      if (k > j && g.of[k] < 0 && same(j, k)) {
+        g.of[k] = group;
+        g.members.push_back(k);
+      }
+    }
+    g.first.push_back(static_cast<I>(g.members.size()));
+  }
+  return g;
+}
+
+// The lower triangle of the graph of the groups, as a pattern: column g holds the groups of
+// the rows of g's first column that are ≥ g (its own included).
+struct GroupGraph {
+  std::vector<CholmodIndex> p, i;
+  cholmod_sparse view() {
+    cholmod_sparse c{};
+    c.nrow = c.ncol = p.size() - 1;
+    c.nzmax = i.size();
+    c.p = p.data();
+    c.i = i.data();
+    c.stype = -1;
+    c.itype = CHOLMOD_LONG;
+    c.xtype = CHOLMOD_PATTERN;
+    c.dtype = CHOLMOD_DOUBLE;
+    c.sorted = 0;
+    c.packed = 1;
+    return c;
+  }
+};
+
+GroupGraph groupGraph(const Eigen::SparseMatrix<double>& A, const ColumnGroups& groups) {
+  using I = CholmodIndex;
+  const I G = groups.count();
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  const int* nnz = A.innerNonZeroPtr();
+  GroupGraph graph;
+  graph.p.reserve(static_cast<std::size_t>(G) + 1);
+  std::vector<I> mark(static_cast<std::size_t>(G), -1);
+  graph.p.push_back(0);
+  for (I g = 0; g < G; ++g) {
+    const I j = groups.members[groups.first[g]];
+    const int last = nnz ? outer[j] + nnz[j] : outer[j + 1];
+    for (int q = outer[j]; q < last; ++q) {
+      const I h = groups.of[inner[q]];
+      if (h >= g && mark[h] != g) {
+        mark[h] = g;
+        graph.i.push_back(h);
+      }
+    }
+    graph.p.push_back(static_cast<I>(graph.i.size()));
+  }
+  return graph;
+}
+
 cholmod_dense viewDense(Eigen::MatrixXd& X) {
   cholmod_dense d{};
   d.nrow = static_cast<std::size_t>(X.rows());
@@ -221,10 +346,19 @@ class CholmodBackend : public SparseFactor::Backend {
     analysis_ = {};
     const CholmodMatrix A = A32;
     auto clock = std::chrono::steady_clock::now();
-    applyOrdering();
-    llt_.analyzePattern(A);
+    if (ordering_ == Ordering::cholmodDefault) {
+      applyOrdering();
+      llt_.analyzePattern(A);
+      recordAnalysis(llt_.cholmodFactor());
+    } else {
+      std::vector<CholmodIndex> perm;
+      int orderingA = -1;
+      if (!groupedOrdering(A32, perm, orderingA)) return FactorStatus::failed;
+      analysis_.orderingSeconds = secondsSince(clock);
+      llt_.analyzeGiven(A, perm.data());
+      recordAnalysis(llt_.cholmodFactor(), orderingA);
+    }
     const double analysisSeconds = secondsSince(clock);
-    recordAnalysis(llt_.cholmodFactor());
     if (!llt_.cholmodFactor() || llt_.cholmod().status < 0) return FactorStatus::failed;
     reportPhase(orderingPhase(), analysisSeconds);
     clock = std::chrono::steady_clock::now();
@@ -271,18 +405,26 @@ class CholmodBackend : public SparseFactor::Backend {
     cholmod_common& cm = llt_.cholmod();
     const I n = A32.rows(), m = B.cols();
     // 1. A's own fill-reducing ordering, chosen exactly as factor() chooses it (the same
-    //    permutation, postorder included). Only the ordering is kept, so the analysis is
-    //    simplicial: CHOLMOD orders and postorders before its supernodal analysis, which here
-    //    would be of A alone and thrown away (step 3 analyses the bordered matrix). CHOLMOD
-    //    reads A's lower triangle only: the upper one is not copied (half the entries for
-    //    its copies and transposes to skip; the ordering is the same).
+    //    permutation, postorder included): on the graph of A's groups of equal columns
+    //    (groupedOrdering), or with cholmodDefault CHOLMOD's strategy on A itself. Only the
+    //    ordering is kept, so the analysis is simplicial: CHOLMOD orders and postorders before
+    //    its supernodal analysis, which here would be thrown away (step 3 analyses the
+    //    bordered matrix). CHOLMOD reads A's lower triangle only: the upper one is not copied.
     std::vector<I>& perm = borderedPerm_;
     perm.assign(static_cast<std::size_t>(n + m), 0);
     int orderingA = -1;
     llt_.release();  // a factor of an earlier factor(): at 10⁶ unknowns in 3D memory counts
     auto clock = std::chrono::steady_clock::now();
-    CholmodMatrix Alower = lowerTriangle(A32);
-    {
+    if (ordering_ != Ordering::cholmodDefault) {
+      std::vector<I> permA;
+      if (!groupedOrdering(A32, permA, orderingA)) {
+        status = FactorStatus::failed;
+        return true;
+      }
+      std::copy(permA.begin(), permA.end(), perm.begin());
+      for (I a = 0; a < m; ++a) perm[n + a] = n + a;
+    } else {
+      CholmodMatrix Alower = lowerTriangle(A32);
       cholmod_sparse viewA = viewLower(Alower);
       applyOrdering();
       const int supernodal = cm.supernodal;
@@ -316,27 +458,32 @@ class CholmodBackend : public SparseFactor::Backend {
     for (I a = 0; a < m; ++a) Clower.coeffRef(a, a) += sigma;
     Clower.makeCompressed();
     CholmodMatrix Ab(n + m, n + m);
-    Ab.resizeNonZeros(Alower.nonZeros() + Brows.nonZeros() + Clower.nonZeros());
     I* outer = Ab.outerIndexPtr();
-    I* inner = Ab.innerIndexPtr();
-    double* value = Ab.valuePtr();
     // Count the entries of each new column, then place them (next: each column's free slot).
+    // A's lower triangle is read in place (rows ≥ the column), in A's order within a column.
     std::fill(outer, outer + n + m + 1, I(0));
-    const I* aOuter = Alower.outerIndexPtr();
-    const I* aInner = Alower.innerIndexPtr();
-    const double* aValue = Alower.valuePtr();
+    const int* aOuter = A32.outerIndexPtr();
+    const int* aNnz = A32.innerNonZeroPtr();  // null when compressed
+    const int* aInner = A32.innerIndexPtr();
+    const double* aValue = A32.valuePtr();
+    auto aEnd = [&](I j) { return aNnz ? aOuter[j] + aNnz[j] : aOuter[j + 1]; };
     for (I j = 0; j < n; ++j) {
       const I cj = inverse[j];
-      for (I p = aOuter[j]; p < aOuter[j + 1]; ++p) ++outer[std::min(inverse[aInner[p]], cj) + 1];
+      for (I p = aOuter[j]; p < aEnd(j); ++p)
+        if (aInner[p] >= j) ++outer[std::min(inverse[aInner[p]], cj) + 1];
       outer[cj + 1] += Brows.outerIndexPtr()[j + 1] - Brows.outerIndexPtr()[j];
     }
     for (I a = 0; a < m; ++a)
       outer[n + a + 1] = Clower.outerIndexPtr()[a + 1] - Clower.outerIndexPtr()[a];
     for (I k = 0; k < n + m; ++k) outer[k + 1] += outer[k];
+    Ab.resizeNonZeros(outer[n + m]);
+    I* inner = Ab.innerIndexPtr();
+    double* value = Ab.valuePtr();
     std::vector<I> next(outer, outer + n + m);
     for (I j = 0; j < n; ++j) {
       const I cj = inverse[j];
-      for (I p = aOuter[j]; p < aOuter[j + 1]; ++p) {
+      for (I p = aOuter[j]; p < aEnd(j); ++p) {
+        if (aInner[p] < j) continue;
         const I ri = inverse[aInner[p]];
         const I q = next[std::min(ri, cj)]++;
         inner[q] = std::max(ri, cj);
@@ -354,8 +501,7 @@ class CholmodBackend : public SparseFactor::Backend {
         inner[q] = n + it.row();
         value[q] = it.value();
       }
-    FRICTION_ASSERT(outer[n + m] == Ab.nonZeros(), "bordered matrix: entry count");
-    CholmodMatrix().swap(Alower);
+    FRICTION_ASSERT(n + m == 0 || next[n + m - 1] == outer[n + m], "bordered matrix: entry count");
     std::vector<I>().swap(next);
     std::vector<I>().swap(inverse);
     cholmod_sparse view = viewLower(Ab);
@@ -459,6 +605,55 @@ class CholmodBackend : public SparseFactor::Backend {
   FactorAnalysis analysis() const override { return analysis_; }
 
  private:
+  // A's fill-reducing ordering (ordering_, not cholmodDefault), postordered, computed on the
+  // graph of A's groups of equal columns (indistinguishableColumns) and expanded to its
+  // columns. The analysis is simplicial and thrown away: only the permutation is kept. False
+  // if CHOLMOD failed (its status is in the common block).
+  bool groupedOrdering(const SparseMatrix& A, std::vector<CholmodIndex>& perm, int& ordering) {
+    using I = CholmodIndex;
+    cholmod_common& cm = llt_.cholmod();
+    const ColumnGroups groups = indistinguishableColumns(A);
+    GroupGraph graph = groupGraph(A, groups);
+    cholmod_sparse view = graph.view();
+    applyOrdering();
+    const int supernodal = cm.supernodal;
+    cm.supernodal = CHOLMOD_SIMPLICIAL;
+    std::vector<I> permG;
+    cholmod_factor* L = nullptr;
+    bool amdDone = false;
+    if (ordering_ == Ordering::amd) {
+      // AMD alone: its order is already a postorder of its elimination tree.
+      permG.resize(static_cast<std::size_t>(groups.count()));
+      amdDone = cholmod_l_amd(&view, nullptr, 0, permG.data(), &cm) != 0;
+    } else {
+      L = cholmod_l_analyze(&view, &cm);
+    }
+    cm.supernodal = supernodal;
+    if (L) {
+      recordAnalysis(L);
+      if (cm.status < 0) {
+        cholmod_l_free_factor(&L, &cm);
+        return false;
+      }
+      ordering = L->ordering;
+      const I* p = static_cast<const I*>(L->Perm);
+      permG.resize(static_cast<std::size_t>(groups.count()));
+      for (I k = 0; k < groups.count(); ++k) permG[k] = p ? p[k] : k;
+      cholmod_l_free_factor(&L, &cm);
+    } else if (amdDone) {
+      ordering = CHOLMOD_AMD;
+      analysis_.orderingChoice = choice_;
+    } else {
+      return false;
+    }
+    perm.resize(groups.members.size());
+    std::size_t pos = 0;
+    for (const I g : permG)
+      for (I q = groups.first[g]; q < groups.first[g + 1]; ++q) perm[pos++] = groups.members[q];
+    analysis_.orderedGroups = static_cast<double>(groups.count());
+    return true;
+  }
+
   // The analysis CHOLMOD just made (its common block holds the last one's counts); the
   // ordering is L's own unless given (a bordered factor's is "given": A's is the one chosen).
   void recordAnalysis(const cholmod_factor* L, int ordering = -2) {
@@ -483,7 +678,12 @@ class CholmodBackend : public SparseFactor::Backend {
     s << std::setprecision(3) << "ordering and analysis ("
       << (analysis_.ordering.empty() ? "CHOLMOD" : analysis_.ordering) << ", "
       << analysis_.orderingChoice;
-    if (analysis_.orderingSeconds > 0) s << "; ordering A " << analysis_.orderingSeconds << " s";
+    if (analysis_.orderingSeconds > 0) {
+      s << "; ordering A " << analysis_.orderingSeconds << " s";
+      if (analysis_.orderedGroups > 0)
+        s << " on its " << static_cast<long long>(analysis_.orderedGroups)
+          << " groups of equal columns";
+    }
     s << "; " << analysis_.entries << " entries in the factor, " << analysis_.bytes / 1e9 << " GB)";
     return s.str();
   }
@@ -601,16 +801,21 @@ class SingleBlasThread {
 
 bool metisOrdering(const SparseMatrix& A, std::vector<long>& order) {
   if (A.rows() == 0) return false;
-  const CholmodMatrix lower = A.triangularView<Eigen::Lower>();
-  cholmod_sparse view = viewLower(lower);
-  view.xtype = CHOLMOD_PATTERN;
+  // On the graph of A's groups of equal columns, as CHOLMOD's orderings (groupedOrdering).
+  const ColumnGroups groups = indistinguishableColumns(A);
+  GroupGraph graph = groupGraph(A, groups);
+  cholmod_sparse view = graph.view();
   cholmod_common cm;
   cholmod_l_start(&cm);
   cm.print = 0;
-  std::vector<CholmodIndex> perm(static_cast<std::size_t>(A.rows()));
+  std::vector<CholmodIndex> perm(static_cast<std::size_t>(groups.count()));
   const bool ok = cholmod_l_metis(&view, nullptr, 0, 1, perm.data(), &cm) != 0;
   cholmod_l_finish(&cm);
-  order.assign(perm.begin(), perm.end());
+  order.clear();
+  order.reserve(groups.members.size());
+  for (const CholmodIndex g : perm)
+    for (CholmodIndex q = groups.first[g]; q < groups.first[g + 1]; ++q)
+      order.push_back(groups.members[q]);
   return ok;
 }
 

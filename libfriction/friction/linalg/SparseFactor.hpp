@@ -66,13 +66,17 @@ struct FactorAnalysis {
   /// metis" (the case's key), "cholmodDefault" (CHOLMOD's strategy); empty for backends that
   /// take no ordering.
   std::string orderingChoice;
+  /// Vertices of the graph the ordering ordered: A's groups of equal columns (a node's
+  /// displacement components, SparseFactor.cpp indistinguishableColumns); 0 when it ordered
+  /// A's own graph (cholmodDefault) or is unknown.
+  double orderedGroups = 0;
   double entries = 0;  ///< nonzeros of the factor L (0: unknown)
   double bytes = 0;    ///< memory of L's values, padding of dense blocks included (0: unknown)
   double flops = 0;    ///< floating-point operations of the numeric factorisation (0: unknown)
   // Wall time of the phases [s] (0: unknown): the ordering and the symbolic analysis (with a
   // border: A's ordering, then the bordered matrix's analysis), the numeric factorisation,
   // and the dense work that turns the border's block into the complement. orderingSeconds is
-  // the part of analysisSeconds spent ordering A (with a border; 0 otherwise: unknown).
+  // the part of analysisSeconds spent ordering A (0: unknown).
   double analysisSeconds = 0;
   double orderingSeconds = 0;
   double numericSeconds = 0;

@@ -3,8 +3,11 @@
 // give a status value; a typo in the backend name is an InputError listing valid names; the
 // cholmod backend orders as told (SparseFactor::setOrdering).
 #include <Eigen/Dense>
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <set>
+#include <vector>
 
 #include "../fe/FeTestMeshes.hpp"
 #include "friction/fe/DirichletConditions.hpp"
@@ -33,6 +36,20 @@ Eigen::SparseMatrix<double> spdMatrix(Eigen::SparseMatrix<double>* full = nullpt
 bool pivotsPass(const SparseFactor& factor) {
   if (factor.backend() == "mumps") return factor.ok() && std::isnan(factor.minPivotRatio());
   return factor.minPivotRatio() > factor.pivotTolerance();
+}
+
+/// The number of different column patterns of A (sets of rows), counted independently of
+/// SparseFactor's grouping.
+double distinctColumns(const Eigen::SparseMatrix<double>& A) {
+  std::set<std::vector<int>> patterns;
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j) {
+    std::vector<int> rows;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      rows.push_back(static_cast<int>(it.row()));
+    std::sort(rows.begin(), rows.end());
+    patterns.insert(rows);
+  }
+  return static_cast<double>(patterns.size());
 }
 
 }  // namespace
@@ -338,11 +355,16 @@ TEST_CASE("linalg SparseFactor cholmod orders as told, once, and says what chose
     REQUIRE(f.factor(A) == FactorStatus::ok);
     CHECK(f.analysis().ordering == c.used);
     CHECK(f.analysis().orderingChoice == std::string("ordering ") + c.word);
+    // Ordered on the graph of the groups of equal columns: a node's two components (and in
+    // P2 the nodes of a corner's one triangle, which have the same neighbours).
+    CHECK(f.analysis().orderedGroups == distinctColumns(A));
+    CHECK(f.analysis().orderedGroups <= n / 2);
     entries.push_back(f.analysis().entries);
     CHECK((f.solve(b) - x0).norm() <= 1e-10 * x0.norm());
     REQUIRE(f.factorWithSchur(A, B, C) == FactorStatus::ok);
     REQUIRE(f.schurSolves() == 0);
     CHECK(f.analysis().ordering == c.used);
+    CHECK(f.analysis().orderedGroups == distinctColumns(A));
     CHECK(f.analysis().orderingSeconds > 0);
     CHECK((f.solve(b) - x0).norm() <= 1e-10 * x0.norm());
   }
@@ -370,6 +392,7 @@ TEST_CASE("linalg SparseFactor cholmod orders as told, once, and says what chose
   f.setOrdering(Ordering::cholmodDefault, 2);
   REQUIRE(f.factor(A) == FactorStatus::ok);
   CHECK_THAT(f.analysis().orderingChoice, Catch::StartsWith("cholmodDefault, AMD "));
+  CHECK(f.analysis().orderedGroups == 0);  // CHOLMOD's strategy orders A's own graph
   CHECK((f.solve(b) - x0).norm() <= 1e-10 * x0.norm());
 
   // The other backends have their own ordering and report no choice.
@@ -377,4 +400,45 @@ TEST_CASE("linalg SparseFactor cholmod orders as told, once, and says what chose
   CHECK_FALSE(ldlt.takesOrdering());
   REQUIRE(ldlt.factor(A) == FactorStatus::ok);
   CHECK(ldlt.analysis().orderingChoice.empty());
+}
+
+TEST_CASE("linalg SparseFactor cholmod orders the graph of equal columns wherever they are",
+          "[linalg]") {
+  // The stiffness with its unknowns shuffled: a node's two components are no longer
+  // neighbours in the numbering, and the matrix is left uncompressed. The groups are found
+  // all the same, and the factor solves to round-off with and without a border.
+  const Eigen::SparseMatrix<double> A0 = spdMatrix();
+  const Eigen::Index n = A0.rows();
+  REQUIRE(distinctColumns(A0) <= n / 2);
+  Eigen::VectorXi order(n);
+  for (Eigen::Index i = 0; i < n; ++i) order[i] = static_cast<int>((i * 7919) % n);
+  REQUIRE(std::set<int>(order.data(), order.data() + n).size() == static_cast<std::size_t>(n));
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P(order);
+  Eigen::SparseMatrix<double> A = P * A0 * P.transpose();
+  A.uncompress();
+  REQUIRE_FALSE(A.isCompressed());
+  Eigen::SparseMatrix<double> B, C;
+  border(n, 40, B, C);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  for (const Ordering o : {Ordering::amd, Ordering::metis}) {
+    CAPTURE(toString(o));
+    SparseFactor f("cholmod");
+    f.setOrdering(o, 2);
+    REQUIRE(f.factor(A) == FactorStatus::ok);
+    CHECK(f.analysis().orderedGroups == distinctColumns(A0));
+    const Eigen::VectorXd x = f.solve(b);
+    CHECK((A * x - b).norm() <= 1e-10 * b.norm());
+    REQUIRE(f.factorWithSchur(A, B, C) == FactorStatus::ok);
+    CHECK(f.analysis().orderedGroups == distinctColumns(A0));
+    CHECK((A * f.solve(b) - b).norm() <= 1e-10 * b.norm());
+  }
+  // No two columns alike (a diagonal): as many groups as columns, still exact.
+  Eigen::SparseMatrix<double> D(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) D.insert(i, i) = 1.0 + static_cast<double>(i);
+  D.makeCompressed();
+  SparseFactor f("cholmod");
+  f.setOrdering(Ordering::amd, 2);
+  REQUIRE(f.factor(D) == FactorStatus::ok);
+  CHECK(f.analysis().orderedGroups == n);
+  CHECK((D * f.solve(b) - b).norm() <= 1e-14 * b.norm());
 }
