@@ -316,10 +316,7 @@ class FracturePressure : public Effect {
                    const std::vector<std::string>& fractures, const std::string& caseDir, int dim) {
     name_ = name;
     fracture_ = d.getWord("fracture");
-    if (std::find(fractures.begin(), fractures.end(), fracture_) == fractures.end())
-      d.fail("fracture", "key 'fracture': '" + fracture_ + "' is not a fracture of the case" +
-                             suggestionText(fracture_, fractures) +
-                             " (fractures: " + joinWords(fractures) + ")");
+    requireFracture(d, "fracture", fracture_, fractures);
     if (d.alternative({{"pressure"}, {"values"}}) == 1) {
       if (dim == 3)
         d.fail("values",
@@ -381,10 +378,7 @@ class FaultTraction : public Effect {
       : where_(d.location()) {
     name_ = name;
     fracture_ = d.getWord("fracture");
-    if (std::find(fractures.begin(), fractures.end(), fracture_) == fractures.end())
-      d.fail("fracture", "key 'fracture': '" + fracture_ + "' is not a fracture of the case" +
-                             suggestionText(fracture_, fractures) +
-                             " (fractures: " + joinWords(fractures) + ")");
+    requireFracture(d, "fracture", fracture_, fractures);
     shear_ = FrictionField::read(d, "shear", Bounds::nonNegative(), caseDir, dim);
     normal_ = d.found("normal") ? FrictionField::read(d, "normal", Bounds{}, caseDir, dim)
                                 : FrictionField(0.0);
@@ -488,6 +482,13 @@ std::unique_ptr<Effect> Effect::New(const std::string& name, const Dictionary& d
   for (const auto& e : effectTable)
     if (type == e.name) return e.make(name, dict, fractureNames, caseDir, dim);
   return nullptr;  // unreachable: getChoice validated the name
+}
+
+void requireFracture(const Dictionary& d, const std::string& key, const std::string& name,
+                     const std::vector<std::string>& fractures) {
+  if (std::find(fractures.begin(), fractures.end(), name) == fractures.end())
+    d.fail(key, "key '" + key + "': '" + name + "' is not a fracture of the case" +
+                    suggestionText(name, fractures) + " (fractures: " + joinWords(fractures) + ")");
 }
 
 void fieldOnFractures(const FrictionField& field, const EffectContext& c,

@@ -77,6 +77,11 @@ void fieldOnFractures(const FrictionField& field, const EffectContext& context,
                       const std::function<bool(std::size_t)>& takes, const std::string& what,
                       Eigen::VectorXd& at, std::vector<char>& on);
 
+/// Fails at `key` of d unless `name` is one of `fractures` (the case's fractures): "key
+/// 'fracture': 'x' is not a fracture of the case; did you mean …? (fractures: …)".
+void requireFracture(const Dictionary& d, const std::string& key, const std::string& name,
+                     const std::vector<std::string>& fractures);
+
 class Effect {
  public:
   virtual ~Effect() = default;

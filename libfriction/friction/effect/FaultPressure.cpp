@@ -74,13 +74,8 @@ class FaultPressure : public Effect {
       default:
         fractures_ = fractures;  // every fracture of the case
     }
-    for (const std::string& f : fractures_) {
-      const std::string key = d.found("fracture") ? "fracture" : "fractures";
-      if (std::find(fractures.begin(), fractures.end(), f) == fractures.end())
-        d.fail(key, "key '" + key + "': '" + f + "' is not a fracture of the case" +
-                        suggestionText(f, fractures) + " (fractures: " + joinWords(fractures) +
-                        ")");
-    }
+    for (const std::string& f : fractures_)
+      requireFracture(d, d.found("fracture") ? "fracture" : "fractures", f, fractures);
     // p₀ may be any sign: a case may give pressures as changes from a state of its own.
     initial_ = d.found("initial") ? FrictionField::read(d, "initial", Bounds{}, caseDir, dim)
                                   : FrictionField(0.0);
