@@ -71,7 +71,38 @@ std::string QuasiDynamic::prepare(StepHost& host) {
   // The tractions come from S: the condensed Newton's operator, formed once per run.
   std::string built = host.prepareSolver();
   const RateStateFault fault = host.rateStateFault();
-  const Eigen::Index n = fault.positions.cols(), k = fault.k, kn = k * n;
+  const Eigen::Index n = fault.positions.cols(), k = fault.k;
+  const InterfaceOperator& S = host.faultOperator();
+  // The moved nodes, and S on them where some node is not moved.
+  solved_.clear();
+  solvedIndex_.assign(static_cast<std::size_t>(n), -1);
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (fault.componentMask.segment(k * i, k).any() && (*fault.imposed)[i] == 0) {
+      solvedIndex_[static_cast<std::size_t>(i)] = static_cast<Eigen::Index>(solved_.size());
+      solved_.push_back(i);
+    }
+  const Eigen::Index ns = static_cast<Eigen::Index>(solved_.size());
+  reduced_ = ns < n;
+  Ssolved_.resize(0, 0);
+  if (reduced_) {
+    Ssolved_.resize((k + 1) * ns, k * ns);
+    for (Eigen::Index b = 0; b < ns; ++b)
+      for (Eigen::Index cb = 0; cb < k; ++cb) {
+        const Eigen::Index col = k * solved_[static_cast<std::size_t>(b)] + cb;
+        for (Eigen::Index a = 0; a < ns; ++a) {
+          const Eigen::Index i = solved_[static_cast<std::size_t>(a)];
+          for (Eigen::Index ca = 0; ca < k; ++ca)
+            Ssolved_(k * a + ca, k * b + cb) = S.Stt(k * i + ca, col);
+          Ssolved_(k * ns + a, k * b + cb) = S.Snt(i, col);
+        }
+      }
+    std::ostringstream s;
+    s << (built.empty() ? std::string() : built + "; ") << "S of the right-hand side on the " << ns
+      << " nodes that rate-and-state moves, of " << n << " (" << n - ns
+      << " creeping or held: their slip is given, their load one product per interval)";
+    built = s.str();
+  }
+  const Eigen::Index kn = k * ns;  // the right-hand side's S_tt: kn × kn
   if (choice_ == OperatorChoice::automatic) {
     hierarchical_ = kn >= autoHierarchicalFrom;
     if (!hierarchical_)
@@ -81,20 +112,25 @@ std::string QuasiDynamic::prepare(StepHost& host) {
              " rows)";
   }
   if (!hierarchical_) return built;
-  // Compressed once per run: rows [τ (k·n); σ_n (n)] and columns (k·n) belong to the nodes.
-  const InterfaceOperator& S = host.faultOperator();
-  std::vector<Eigen::Index> rowPoint(static_cast<std::size_t>(kn + n)),
+  // Compressed once per run: rows [τ (k·ns); σ_n (ns)] and columns (k·ns) belong to the moved
+  // nodes (all of them unless reduced_).
+  std::vector<Eigen::Index> rowPoint(static_cast<std::size_t>(kn + ns)),
       colPoint(static_cast<std::size_t>(kn));
-  for (Eigen::Index r = 0; r < kn; ++r) rowPoint[static_cast<std::size_t>(r)] = r / k;
-  for (Eigen::Index i = 0; i < n; ++i) rowPoint[static_cast<std::size_t>(kn + i)] = i;
-  for (Eigen::Index c = 0; c < kn; ++c) colPoint[static_cast<std::size_t>(c)] = c / k;
+  const auto node = [&](Eigen::Index a) {
+    return reduced_ ? solved_[static_cast<std::size_t>(a)] : a;
+  };
+  for (Eigen::Index r = 0; r < kn; ++r) rowPoint[static_cast<std::size_t>(r)] = node(r / k);
+  for (Eigen::Index a = 0; a < ns; ++a) rowPoint[static_cast<std::size_t>(kn + a)] = node(a);
+  for (Eigen::Index c = 0; c < kn; ++c) colPoint[static_cast<std::size_t>(c)] = node(c / k);
   const auto source = [&](const std::vector<Eigen::Index>& rows,
                           const std::vector<Eigen::Index>& cols, Eigen::MatrixXd& out) {
     for (std::size_t a = 0; a < rows.size(); ++a) {
       const Eigen::Index r = rows[a];
       for (std::size_t b = 0; b < cols.size(); ++b)
         out(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
-            r < kn ? S.Stt(r, cols[b]) : S.Snt(r - kn, cols[b]);
+            reduced_ ? Ssolved_(r, cols[b])
+            : r < kn ? S.Stt(r, cols[b])
+                     : S.Snt(r - kn, cols[b]);
     }
   };
   H_ =
@@ -116,20 +152,25 @@ std::string QuasiDynamic::prepare(StepHost& host) {
   // What a product costs either way, measured here in one run (alternating, the best of
   // several: this machine is shared), and how far apart the two are on a slip of every node.
   Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(kn, -1.0, 1.0).array().sin();
-  x = x.cwiseProduct(fault.componentMask);
+  for (Eigen::Index c = 0; c < kn; ++c) x[c] *= fault.componentMask[k * node(c / k) + c % k];
   Eigen::VectorXd yH, yT, yN;
   double denseBest = 1e300, hBest = 1e300;
   for (int rep = 0; rep < 5; ++rep) {
     const auto c0 = std::chrono::steady_clock::now();
-    yT.noalias() = S.Stt * x;
-    yN.noalias() = S.Snt * x;
+    if (reduced_) {
+      yT.noalias() = Ssolved_.topRows(kn) * x;
+      yN.noalias() = Ssolved_.bottomRows(ns) * x;
+    } else {
+      yT.noalias() = S.Stt * x;
+      yN.noalias() = S.Snt * x;
+    }
     const auto c1 = std::chrono::steady_clock::now();
     H_->multiply(x, yH);
     const auto c2 = std::chrono::steady_clock::now();
     denseBest = std::min(denseBest, std::chrono::duration<double>(c1 - c0).count());
     hBest = std::min(hBest, std::chrono::duration<double>(c2 - c1).count());
   }
-  Eigen::VectorXd yD(kn + n);
+  Eigen::VectorXd yD(kn + ns);
   yD << yT, yN;
   std::ostringstream s;
   s << (built.empty() ? std::string() : built + "; ") << "S_tt and S_nt of the right-hand side "
@@ -137,11 +178,33 @@ std::string QuasiDynamic::prepare(StepHost& host) {
             ? "(faultOperator auto: S_tt " + std::to_string(kn) + " rows, from " +
                   std::to_string(autoHierarchicalFrom) + ") "
             : std::string())
-    << H_->stats().describe(static_cast<long>(kn + n), static_cast<long>(kn)) << "; a product "
+    << H_->stats().describe(static_cast<long>(kn + ns), static_cast<long>(kn)) << "; a product "
     << std::setprecision(3) << 1e6 * hBest << " us against the dense S's " << 1e6 * denseBest
     << " us (" << denseBest / std::max(hBest, 1e-12) << "x), relative difference "
     << (yD.norm() > 0 ? (yH - yD).norm() / yD.norm() : 0.0);
+  Ssolved_.resize(0, 0);  // the H-matrix holds it now
   return s.str();
+}
+
+Eigen::VectorXd QuasiDynamic::creepResponse(const InterfaceOperator& S,
+                                            const RateStateFault& f) const {
+  const Eigen::Index n = f.positions.cols(), k = f.k;
+  const Eigen::Index ns = static_cast<Eigen::Index>(solved_.size());
+  Eigen::VectorXd w = Eigen::VectorXd::Zero((k + 1) * ns);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    if (solvedIndex_[static_cast<std::size_t>(j)] >= 0) continue;
+    for (Eigen::Index c = 0; c < k; ++c) {
+      const Eigen::Index col = k * j + c;
+      const double v = (*f.imposed)[j] != 0 ? (*f.imposedRate)[col] * f.componentMask[col] : 0.0;
+      if (v == 0) continue;
+      for (Eigen::Index a = 0; a < ns; ++a) {
+        const Eigen::Index i = solved_[static_cast<std::size_t>(a)];
+        for (Eigen::Index ca = 0; ca < k; ++ca) w[k * a + ca] += S.Stt(k * i + ca, col) * v;
+        w[k * ns + a] += S.Snt(i, col) * v;
+      }
+    }
+  }
+  return w;
 }
 
 void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*previous*/) {
@@ -159,10 +222,33 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
   const Eigen::VectorXd& mask = fault.componentMask;
   std::vector<RateState> laws = *fault.laws;
   const double span = tB - tA;
-  // The tractions caused by a slip increment ds: S_tt ds and S_nt ds, dense or compressed.
-  const auto elasticIncrement = [&](const Eigen::VectorXd& ds, Eigen::VectorXd& dtau,
+  // Reduced to the moved nodes: the creeping nodes' load grows at the rate creep, and a moved
+  // node's slip increment is read from and its tractions written to the whole vectors.
+  const Eigen::Index ns = static_cast<Eigen::Index>(solved_.size());
+  const Eigen::VectorXd creep = reduced_ ? creepResponse(S, fault) : Eigen::VectorXd();
+  // The tractions caused by a slip increment ds at time t: S_tt ds and S_nt ds, dense or
+  // compressed; reduced, on the moved nodes' rows only (0 elsewhere), with the creeping
+  // nodes' increment (t − tA)·rate (the rate is constant, so that is exactly what the
+  // Runge–Kutta stages integrate to).
+  const auto elasticIncrement = [&](const Eigen::VectorXd& ds, double t, Eigen::VectorXd& dtau,
                                     Eigen::VectorXd& dsigma) {
-    if (H_) {
+    if (reduced_) {
+      Eigen::VectorXd x(k * ns), y;
+      for (Eigen::Index a = 0; a < ns; ++a)
+        x.segment(k * a, k) = ds.segment(k * solved_[static_cast<std::size_t>(a)], k);
+      if (H_)
+        H_->multiply(x, y);
+      else
+        y.noalias() = Ssolved_ * x;
+      y += (t - tA) * creep;
+      dtau.setZero(kn);
+      dsigma.setZero(n);
+      for (Eigen::Index a = 0; a < ns; ++a) {
+        const Eigen::Index i = solved_[static_cast<std::size_t>(a)];
+        dtau.segment(k * i, k) = y.segment(k * a, k);
+        dsigma[i] = y[k * ns + a];
+      }
+    } else if (H_) {
       Eigen::VectorXd y;
       H_->multiply(ds, y);
       dtau = y.head(kn);
@@ -180,7 +266,7 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     const double theta = span > 0 ? (t - tA) / span : 1.0;
     const Eigen::VectorXd ds = (s - sA).cwiseProduct(mask);
     Eigen::VectorXd tau, sigma;
-    elasticIncrement(ds, tau, sigma);
+    elasticIncrement(ds, t, tau, sigma);
     tau += tauA + theta * (tauB - tauA);
     sigma += sigmaA + theta * (sigmaB - sigmaA);
     const Eigen::VectorXd p = loadsA.pressure + theta * (loadsB.pressure - loadsA.pressure);
@@ -250,19 +336,22 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     smp.slip = &s;
     smp.psi = &psi;
     smp.rate = &V;
-    // Compressed: the whole product once, on the first node asked for (the tractions the
-    // integration used, not the dense S's, which differ by the compression's error).
+    // Compressed or reduced: the whole product once, on the first moved node asked for (the
+    // tractions the integration used: compressed, they differ from the dense S's by the
+    // compression's error). Other nodes, and every node with the whole dense S: rows of S.
     Eigen::VectorXd dtau, dsigma;
     smp.traction = [&](Eigen::Index i, Eigen::VectorXd& tau, double& sigmaEff) {
-      if (H_ && dtau.size() == 0) elasticIncrement(ds, dtau, dsigma);
+      const bool product =
+          (H_ || reduced_) && (!reduced_ || solvedIndex_[static_cast<std::size_t>(i)] >= 0);
+      if (product && dtau.size() == 0) elasticIncrement(ds, t, dtau, dsigma);
       tau.resize(k);
       for (int c = 0; c < k; ++c) {
         const Eigen::Index row = k * i + c;
-        tau[c] =
-            tauA[row] + theta * (tauB[row] - tauA[row]) + (H_ ? dtau[row] : S.Stt.row(row).dot(ds));
+        tau[c] = tauA[row] + theta * (tauB[row] - tauA[row]) +
+                 (product ? dtau[row] : S.Stt.row(row).dot(ds));
       }
       sigmaEff = sigmaA[i] + theta * (sigmaB[i] - sigmaA[i]) +
-                 (H_ ? dsigma[i] : S.Snt.row(i).dot(ds)) + loadsA.pressure[i] +
+                 (product ? dsigma[i] : S.Snt.row(i).dot(ds)) + loadsA.pressure[i] +
                  theta * (loadsB.pressure[i] - loadsA.pressure[i]);
     };
     host.rateSample(smp);
@@ -286,7 +375,7 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
   const auto clock0 = std::chrono::steady_clock::now();
   const IntegrationReport report = rk.integrate(tA, tB, y, observer);
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();
-  faultUnknowns_ = kn;
+  faultUnknowns_ = k * ns;
   accepted_ += report.work.acceptedSteps;
   rejected_ += report.work.rejectedSteps;
   evaluations_ += report.work.evaluations;

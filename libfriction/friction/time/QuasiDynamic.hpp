@@ -72,6 +72,19 @@ class QuasiDynamic : public TimeIntegrator {
   bool hierarchical_ = false;  ///< decided in prepare() for auto
   HierarchicalSettings hSettings_;
   std::unique_ptr<HierarchicalMatrix> H_;
+  /// The nodes the integration moves (prepare()): free, and not creeping. A creeping node's
+  /// slip over an interval is its imposed rate times the time, so its columns of S enter the
+  /// right-hand side as one vector per interval (creepResponse) and its rows are never read
+  /// there. Where some node is not moved (`reduced_`), the right-hand side multiplies by
+  /// S_solved = [S_tt; S_nt] on those rows and columns only (dense, or the H-matrix made from
+  /// it): BP5 at 2 km moves 1 071 of 1 522 nodes, half the product.
+  bool reduced_ = false;
+  std::vector<Eigen::Index> solved_;       ///< the moved nodes, ascending
+  std::vector<Eigen::Index> solvedIndex_;  ///< per node: its index in solved_, or −1
+  Eigen::MatrixXd Ssolved_;  ///< (k+1)·ns × k·ns (empty when H_ holds it compressed)
+  /// [S_tt; S_nt] on the moved nodes' rows times the creeping nodes' imposed rates: the
+  /// tractions' rate of change from creep [Pa/s], for the interval's rates (advance()).
+  Eigen::VectorXd creepResponse(const InterfaceOperator& S, const RateStateFault& f) const;
 };
 
 }  // namespace friction
