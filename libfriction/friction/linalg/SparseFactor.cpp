@@ -127,22 +127,30 @@ Eigen::VectorXd cholmodPivots(const cholmod_factor& L, Eigen::Index rows,
   return out;
 }
 
-// A compressed column-major sparse matrix as CHOLMOD sees it, lower triangle read.
-cholmod_sparse viewLower(const CholmodMatrix& A) {
+// A square compressed column-major matrix as CHOLMOD sees it, lower triangle read: values x
+// (REAL), or its pattern alone (x null).
+cholmod_sparse lowerView(std::size_t n, std::size_t nnz, CholmodIndex* p, CholmodIndex* i,
+                         double* x, bool sorted) {
   cholmod_sparse c{};
-  c.nrow = static_cast<std::size_t>(A.rows());
-  c.ncol = static_cast<std::size_t>(A.cols());
-  c.nzmax = static_cast<std::size_t>(A.nonZeros());
-  c.p = const_cast<CholmodIndex*>(A.outerIndexPtr());
-  c.i = const_cast<CholmodIndex*>(A.innerIndexPtr());
-  c.x = const_cast<double*>(A.valuePtr());
+  c.nrow = c.ncol = n;
+  c.nzmax = nnz;
+  c.p = p;
+  c.i = i;
+  c.x = x;
   c.stype = -1;
   c.itype = CHOLMOD_LONG;
-  c.xtype = CHOLMOD_REAL;
+  c.xtype = x ? CHOLMOD_REAL : CHOLMOD_PATTERN;
   c.dtype = CHOLMOD_DOUBLE;
-  c.sorted = 1;
+  c.sorted = sorted ? 1 : 0;
   c.packed = 1;
   return c;
+}
+
+cholmod_sparse viewLower(const CholmodMatrix& A) {
+  return lowerView(static_cast<std::size_t>(A.cols()), static_cast<std::size_t>(A.nonZeros()),
+                   const_cast<CholmodIndex*>(A.outerIndexPtr()),
+                   const_cast<CholmodIndex*>(A.innerIndexPtr()), const_cast<double*>(A.valuePtr()),
+                   true);
 }
 
 // The lower triangle of A with CHOLMOD's indices, written in compressed form directly (the
@@ -237,18 +245,7 @@ ColumnGroups indistinguishableColumns(const Eigen::SparseMatrix<double>& A) {
 struct GroupGraph {
   std::vector<CholmodIndex> p, i;
   cholmod_sparse view() {
-    cholmod_sparse c{};
-    c.nrow = c.ncol = p.size() - 1;
-    c.nzmax = i.size();
-    c.p = p.data();
-    c.i = i.data();
-    c.stype = -1;
-    c.itype = CHOLMOD_LONG;
-    c.xtype = CHOLMOD_PATTERN;
-    c.dtype = CHOLMOD_DOUBLE;
-    c.sorted = 0;
-    c.packed = 1;
-    return c;
+    return lowerView(p.size() - 1, i.size(), p.data(), i.data(), nullptr, false);
   }
 };
 
