@@ -105,7 +105,7 @@ row() {  # row LOG LABEL WALL: one line of the table, from the log of one run
   tsec=$(sed -n 's/^Factorisations .*back-substitutions \([0-9]*\) (\([0-9.e+-]*\) s).*/\1 (\2 s)/p' "$log")
   printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$2" \
     "$nodes" "$( ((nodes > 0)) && echo "$jumps")" \
-    "$(sed -n 's/^Factor: \([^,]*\) ordering, \([0-9.e+]*\) entries (\([0-9.]*\) GB.*, \([0-9.e+]*\) flops.*/\2 (\3 GB), \4 flops/p' <<<"$factor")" \
+    "$(sed -n 's/^Factor: .* \([0-9.e+]*\) entries (\([0-9.]*\) GB of values), \([0-9.e+]*\) flops.*/\1 (\2 GB), \3 flops/p' <<<"$factor")" \
     "$(num 'ordering and analysis')" "$(num numeric)" "$(num 'the complement')" \
     "$(sed -n 's/^Time = .*(+\([0-9]*\) building S.*/\1/p' <<<"$step")" \
     "$(sed -n 's/^Time = .*  iterations \([0-9]*\) .*/\1/p' <<<"$step")" \

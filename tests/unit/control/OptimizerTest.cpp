@@ -134,3 +134,85 @@ TEST_CASE("semismoothNewton reads interfaceOperator, and refuses it for the kryl
   CHECK_THROWS_WITH(read("type semismoothNewton; interfaceOperator factorization;"),
                     Catch::Contains("factorisation") && Catch::Contains("blockSolves"));
 }
+
+TEST_CASE(
+    "semismoothNewton variant auto: krylov from the dimension's threshold, unless S is needed",
+    "[control][optimizer]") {
+  // The default variant is auto: condensed until the case's facts are known (so that unit uses
+  // and small cases run as before), then krylov for fractures of at least krylovFromNodes(d)
+  // control nodes that need no dense S. The log line names the choice, the node count and the
+  // threshold, and what needs S when that overrides the size.
+  auto read = [](const std::string& text) {
+    Dictionary d = Dictionary::parse(text, "frictionSolution");
+    auto opt = Optimizer::New(d);
+    d.checkAllRead();
+    return opt;
+  };
+  auto variantOf = [](const Optimizer& o) {
+    const auto* newton = dynamic_cast<const SemismoothNewton*>(&o);
+    REQUIRE(newton != nullptr);
+    return newton->variant();
+  };
+  using V = SemismoothNewton::Variant;
+  for (const int dim : {2, 3}) {
+    CAPTURE(dim);
+    const Eigen::Index t = SemismoothNewton::krylovFromNodes(dim);
+    REQUIRE(t > 1);
+    for (const char* text : {"type semismoothNewton;", "type semismoothNewton; variant auto;"}) {
+      CAPTURE(text);
+      auto below = read(text), at = read(text), opening = read(text);
+      // Before the choice: condensed, S from the factorisation.
+      CHECK(variantOf(*at) == V::condensed);
+      CHECK(at->wantsInterfaceOperator());
+      CHECK(at->handlesOpening());
+      CHECK(at->handlesWeakening());
+      const std::string lineBelow = below->chooseFor({t - 1, dim, ""});
+      CHECK(variantOf(*below) == V::condensed);
+      CHECK(below->wantsInterfaceOperator());
+      CHECK_THAT(lineBelow, Catch::StartsWith("Newton variant: condensed (variant auto: " +
+                                              std::to_string(t - 1) + " fracture control nodes < " +
+                                              std::to_string(t) + ", the " + std::to_string(dim) +
+                                              "D threshold"));
+      const std::string lineAt = at->chooseFor({t, dim, ""});
+      CHECK(variantOf(*at) == V::krylov);
+      CHECK_FALSE(at->wantsInterfaceOperator());
+      CHECK_FALSE(at->handlesOpening());
+      CHECK_THAT(lineAt,
+                 Catch::StartsWith("Newton variant: krylov (variant auto: " + std::to_string(t) +
+                                   " fracture control nodes >= " + std::to_string(t)));
+      // Chosen once: another call changes nothing and says nothing.
+      CHECK(at->chooseFor({1, dim, ""}).empty());
+      CHECK(variantOf(*at) == V::krylov);
+      for (const char* why : {"fractures that open (contact unilateral)", "law slipWeakening",
+                              "timeIntegration quasiDynamic"}) {
+        auto o = read(text);
+        const std::string line = o->chooseFor({10 * t, dim, why});
+        CHECK(variantOf(*o) == V::condensed);
+        CHECK(o->wantsInterfaceOperator());
+        CHECK_THAT(line, Catch::StartsWith("Newton variant: condensed") &&
+                             Catch::Contains(std::string("but ") + why + " needs the dense S"));
+      }
+    }
+    // A variant given, or the condensed variant's own key: nothing left to choose.
+    for (const char* text :
+         {"type semismoothNewton; variant condensed;",
+          "type semismoothNewton; interfaceOperator blockSolves;",
+          "type semismoothNewton; variant auto; interfaceOperator dualSolves;"}) {
+      auto o = read(text);
+      CHECK(o->chooseFor({10 * t, dim, ""}).empty());
+      CHECK(variantOf(*o) == V::condensed);
+    }
+    auto k = read("type semismoothNewton; variant krylov;");
+    CHECK(k->chooseFor({1, dim, "law slipWeakening"}).empty());
+    CHECK(variantOf(*k) == V::krylov);
+    CHECK(read("type lbfgs;")->chooseFor({10 * t, dim, ""}).empty());
+  }
+  // The krylov variant's keys with auto: refused, naming the key and the way out.
+  for (const char* key : {"preconditioner probing;", "probingDistance 2;"})
+    CHECK_THROWS_WITH(
+        read(std::string("type semismoothNewton; ") + key),
+        Catch::Contains("variant krylov only") && Catch::Contains("set 'variant krylov;'"));
+  CHECK_THROWS_WITH(
+      read("type semismoothNewton; variant automatic;"),
+      Catch::Contains("auto") && Catch::Contains("condensed") && Catch::Contains("krylov"));
+}
