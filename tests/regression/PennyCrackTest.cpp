@@ -106,13 +106,23 @@ TEST_CASE(
     "it and where S is needed",
     "[regression][3d][penny][optimizer]") {
   // The disc at h = 0.045a in a coarse cube (growth 2 per metre up to a): 1 893 fault nodes,
-  // above SemismoothNewton::krylovFromNodes(3), in ~16 000 dofs. The default variant (auto)
+  // above SemismoothNewton::krylovFromNodes(3, dofs), in ~16 000 dofs. The default variant (auto)
   // takes krylov, says so in the log with the node count and the threshold, factors the plain
   // K (no jump unknowns last) and gives the condensed variant's slip. The committed mesh (273
   // nodes) stays condensed, and so does the fine fault when it may open (the krylov variant
   // refuses openings): the log says why. (Weakening and quasiDynamic: the unit test of
   // chooseFor; FrictionCase hands them over as it hands over the opening.)
-  const std::string threshold = std::to_string(friction::SemismoothNewton::krylovFromNodes(3));
+  const auto dofsIn = [](const std::string& log) {
+    std::smatch m;
+    REQUIRE(std::regex_search(log, m, std::regex("(\\d+) dofs \\(P1\\)")));
+    return std::stol(m[1]);
+  };
+  // "T, the 3D threshold for krylov at D dofs", of the run whose log is given
+  const auto threshold = [&](const std::string& log) {
+    const long dofs = dofsIn(log);
+    return std::to_string(friction::SemismoothNewton::krylovFromNodes(3, dofs)) +
+           ", the 3D threshold for krylov at " + std::to_string(dofs) + " dofs";
+  };
   const auto nodesIn = [](const std::string& log) {
     std::smatch m;
     REQUIRE(std::regex_search(log, m, std::regex("(\\d+) fracture control nodes\n")));
@@ -124,7 +134,7 @@ TEST_CASE(
     INFO(small.log());
     CHECK_THAT(small.log(), Catch::Contains("Newton variant: condensed (variant auto: 273 fracture "
                                             "control nodes < " +
-                                            threshold + ", the 3D threshold for krylov)\n"));
+                                            threshold(small.log()) + ")\n"));
     CHECK_THAT(small.log(), Catch::Contains("jump unknowns last"));
   }
   Case k("pennyCrack", "penny-auto-krylov");
@@ -134,10 +144,9 @@ TEST_CASE(
   const std::string log = k.log();
   INFO(log);
   const long nodes = nodesIn(log);
-  REQUIRE(nodes >= friction::SemismoothNewton::krylovFromNodes(3));
+  REQUIRE(nodes >= friction::SemismoothNewton::krylovFromNodes(3, dofsIn(log)));
   CHECK_THAT(log, Catch::Contains("Newton variant: krylov (variant auto: " + std::to_string(nodes) +
-                                  " fracture control nodes >= " + threshold +
-                                  ", the 3D threshold for krylov)\n"));
+                                  " fracture control nodes >= " + threshold(log) + ")\n"));
   CHECK_THAT(log, Catch::Contains("GMRES products per Newton iteration"));
   CHECK_THAT(log, !Catch::Contains("jump unknowns last"));
 
@@ -168,8 +177,8 @@ TEST_CASE(
   INFO(o.log());
   CHECK_THAT(o.log(),
              Catch::Contains("Newton variant: condensed (variant auto: " + std::to_string(nodes) +
-                             " fracture control nodes >= " + threshold +
-                             ", the 3D threshold for krylov; but fractures that open "
+                             " fracture control nodes >= " + threshold(o.log()) +
+                             "; but fractures that open "
                              "(contact unilateral) needs the dense S of condensed)\n"));
   CHECK_THAT(o.log(), Catch::Contains("jump unknowns last"));
 }

@@ -515,6 +515,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     CaseFacts facts;
     facts.fractureNodes = system_->size();
     facts.dimension = split_.mesh.dim;
+    facts.dofs = system_->unsplitSpace().numDofs();
     if (opening_)
       facts.needsDenseS = "fractures that open (contact unilateral)";
     else if (weakening_)

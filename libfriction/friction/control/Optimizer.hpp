@@ -66,6 +66,7 @@ struct OptimizerReport {
 struct CaseFacts {
   Eigen::Index fractureNodes = 0;  ///< control nodes of all fractures (SlipResponse::size())
   int dimension = 2;               ///< of the mesh
+  Eigen::Index dofs = 0;           ///< displacement unknowns of the (unsplit) mesh
   /// Why the case needs the dense S (fractures that open, weakening friction, quasiDynamic
   /// time integration), for the log; empty when it does not.
   std::string needsDenseS;
@@ -211,14 +212,15 @@ enum class KrylovPreconditioning { none, blockDiagonal, probing };
 /// (or sampled) diagonal of S_tt.
 ///
 /// Variant `auto` (the key's default; `automatic` here) is condensed until chooseFor() picks
-/// by the case: krylov where the fractures have at least krylovFromNodes(dimension) control
-/// nodes and nothing needs the dense S, condensed otherwise.
+/// by the case: krylov where the fractures have at least krylovFromNodes(dimension, dofs)
+/// control nodes and nothing needs the dense S, condensed otherwise.
 class SemismoothNewton : public Optimizer {
  public:
   enum class Variant { condensed, krylov, automatic };
   /// The fewest fracture control nodes from which variant auto takes krylov, in a
-  /// `dimension`-D mesh (measured: Optimizer.cpp, README "Newton's variant by fault size").
-  static Eigen::Index krylovFromNodes(int dimension);
+  /// `dimension`-D mesh of `dofs` unknowns (measured: Optimizer.cpp, README "Newton's variant
+  /// by fault size").
+  static Eigen::Index krylovFromNodes(int dimension, Eigen::Index dofs);
   SemismoothNewton(int maxBacktracks, Variant variant = Variant::condensed,
                    InterfaceMethod interfaceMethod = InterfaceMethod::factorisation,
                    KrylovPreconditioning preconditioner = KrylovPreconditioning::none,
