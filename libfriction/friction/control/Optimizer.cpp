@@ -521,7 +521,7 @@ std::string SemismoothNewton::chooseFor(const CaseFacts& facts) {
        << "D threshold for krylov";
   if (facts.dimension == 3) line << " at " << facts.dofs << " dofs";
   if (large && !facts.needsDenseS.empty())
-    line << "; but " << facts.needsDenseS << " needs the dense S of condensed";
+    line << "; condensed all the same: the dense S is needed for " << facts.needsDenseS;
   line << ")";
   return line.str();
 }

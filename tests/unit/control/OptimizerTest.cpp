@@ -204,8 +204,9 @@ TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unle
         CHECK(variantOf(*o) == V::condensed);
         CHECK(o->wantsInterfaceOperator());
         CHECK_THAT(line, Catch::StartsWith("Newton variant: condensed") &&
-                             Catch::EndsWith(std::string("; but ") + why +
-                                             " needs the dense S of condensed)"));
+                             Catch::EndsWith(std::string("; condensed all the same: the dense S is "
+                                                         "needed for ") +
+                                             why + ")"));
       }
     }
     // A variant given, or the condensed variant's own key: nothing left to choose.
