@@ -12,6 +12,7 @@
 #include <regex>
 
 #include "CaseRunner.hpp"
+#include "friction/control/Optimizer.hpp"
 
 using namespace friction::regression;
 
@@ -98,4 +99,86 @@ TEST_CASE("penny crack, P1 at h = a/32 (long: 90 s, 5 GB)", "[.][pennyLong]") {
   const double e32 = pennyValue(solvePenny(c, "0.03125"), "relL2Error");
   // Measured 0.0805 (order 0.70 from a/16).
   CHECK(e32 <= 0.09);
+}
+
+TEST_CASE(
+    "penny crack, variant auto: krylov on a fault above the 3D threshold, condensed below "
+    "it and where S is needed",
+    "[regression][3d][penny][optimizer]") {
+  // The disc at h = 0.045a in a coarse cube (growth 2 per metre up to a): 1 893 fault nodes,
+  // above SemismoothNewton::krylovFromNodes(3, dofs), in ~16 000 dofs. The default variant (auto)
+  // takes krylov, says so in the log with the node count and the threshold, factors the plain
+  // K (no jump unknowns last) and gives the condensed variant's slip. The committed mesh (273
+  // nodes) stays condensed, and so does the fine fault when it may open (the krylov variant
+  // refuses openings): the log says why. (Weakening and quasiDynamic: the unit test of
+  // chooseFor; FrictionCase hands them over as it hands over the opening.)
+  const auto dofsIn = [](const std::string& log) {
+    std::smatch m;
+    REQUIRE(std::regex_search(log, m, std::regex("(\\d+) dofs \\(P1\\)")));
+    return std::stol(m[1]);
+  };
+  // "T, the 3D threshold for krylov at D dofs", of the run whose log is given
+  const auto threshold = [&](const std::string& log) {
+    const long dofs = dofsIn(log);
+    return std::to_string(friction::SemismoothNewton::krylovFromNodes(3, dofs)) +
+           ", the 3D threshold for krylov at " + std::to_string(dofs) + " dofs";
+  };
+  const auto nodesIn = [](const std::string& log) {
+    std::smatch m;
+    REQUIRE(std::regex_search(log, m, std::regex("(\\d+) fracture control nodes\n")));
+    return std::stol(m[1]);
+  };
+  {
+    Case small("pennyCrack", "penny-auto-small");
+    REQUIRE(small.solve() == 0);
+    INFO(small.log());
+    CHECK_THAT(small.log(), Catch::Contains("Newton variant: condensed (variant auto: 273 fracture "
+                                            "control nodes < " +
+                                            threshold(small.log()) + ")\n"));
+    CHECK_THAT(small.log(), Catch::Contains("jump unknowns last"));
+  }
+  Case k("pennyCrack", "penny-auto-krylov");
+  k.remesh("-h 0.045 -hFar 1 -slope 2");
+  const fs::path msh = fs::path("constant") / "mesh" / "pennyCrack.msh";
+  REQUIRE(k.solve() == 0);
+  const std::string log = k.log();
+  INFO(log);
+  const long nodes = nodesIn(log);
+  REQUIRE(nodes >= friction::SemismoothNewton::krylovFromNodes(3, dofsIn(log)));
+  CHECK_THAT(log, Catch::Contains("Newton variant: krylov (variant auto: " + std::to_string(nodes) +
+                                  " fracture control nodes >= " + threshold(log) + ")\n"));
+  CHECK_THAT(log, Catch::Contains("GMRES products per Newton iteration"));
+  CHECK_THAT(log, !Catch::Contains("jump unknowns last"));
+
+  Case c("pennyCrack", "penny-auto-condensed");
+  fs::copy_file(k.dir() / msh, c.dir() / msh, fs::copy_options::overwrite_existing);
+  c.edit("system/frictionSolution", "type +semismoothNewton;",
+         "type semismoothNewton; variant condensed;");
+  REQUIRE(c.solve() == 0);
+  CHECK_THAT(c.log(), !Catch::Contains("Newton variant:"));  // given, not chosen
+  CHECK_THAT(c.log(), Catch::Contains("jump unknowns last"));
+  const Table a = c.namedTable("1", "fault"), b = k.namedTable("1", "fault");
+  REQUIRE(a.rows.size() == b.rows.size());
+  double scale = 0, differ = 0;
+  for (std::size_t i = 0; i < a.rows.size(); ++i) {
+    scale = std::max(scale, a.at(i, "slipMagnitude"));
+    for (const char* col : {"slipX", "slipY", "slipZ"})
+      differ = std::max(differ, std::abs(a.at(i, col) - b.at(i, col)));
+  }
+  REQUIRE(scale > 0);
+  // Both stop at ‖D‖ ≤ 1e-10 ‖Σ‖: the slips agree to that times S's conditioning.
+  CHECK(differ <= 1e-7 * scale);
+
+  Case o("pennyCrack", "penny-auto-opening");
+  fs::copy_file(k.dir() / msh, o.dir() / msh, fs::copy_options::overwrite_existing);
+  o.edit("constant/fractureProperties", "frictionCoefficient 0.3;",
+         "frictionCoefficient 0.3;\n    contact unilateral;");
+  REQUIRE(o.solve() == 0);
+  INFO(o.log());
+  CHECK_THAT(o.log(),
+             Catch::Contains("Newton variant: condensed (variant auto: " + std::to_string(nodes) +
+                             " fracture control nodes >= " + threshold(o.log()) +
+                             "; condensed all the same: the dense S is needed for "
+                             "fractures that open (contact unilateral))\n"));
+  CHECK_THAT(o.log(), Catch::Contains("jump unknowns last"));
 }

@@ -509,6 +509,21 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
         findFloatingParts();
       },
       exitStatusOf);
+  // What the case leaves to its size (Newton's variant auto), before the factorisation, which
+  // it decides: from facts of the case alone, alike on every rank and on a restart.
+  if (system_->size() > 0) {  // no fracture: no control loop, nothing to choose
+    CaseFacts facts;
+    facts.fractureNodes = system_->size();
+    facts.dimension = split_.mesh.dim;
+    facts.dofs = system_->unsplitSpace().numDofs();
+    if (opening_)
+      facts.needsDenseS = "fractures that open (contact unilateral)";
+    else if (weakening_)
+      facts.needsDenseS = "law slipWeakening";
+    else if (rateState_)
+      facts.needsDenseS = "timeIntegration " + timeIntegrator_->name();
+    optimizerChoice_ = optimizer_->chooseFor(facts);
+  }
   FactorStatus status = system_->factor(
       linearSolver_, optimizer_->wantsInterfaceOperator(),
       [&](const std::string& phase, double seconds) { logPhase(log, phase, seconds); }, ordering_);
@@ -883,6 +898,7 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
                            : f.schurFallbackReason()) +
                       "), " + formatNumber(f.schurSeconds()) + " s")
         << "\n";
+  if (!optimizerChoice_.empty()) log << optimizerChoice_ << "\n";
   printSettings(log);
   log << "\n";
 }

@@ -260,6 +260,8 @@ class FrictionCase : private StepHost {
   SurfaceAt surfaceAt_[2];
   void buildSurfaceResponse(std::ostream& log);
   bool weakening_ = false;
+  /// The log line of what the optimizer chose by the case (Optimizer::chooseFor), or "".
+  std::string optimizerChoice_;
   WeakeningSettings weakeningSettings_;
   Eigen::VectorXd slipPath_;
   ControlState last_;

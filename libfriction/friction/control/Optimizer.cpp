@@ -70,13 +70,23 @@ const OptimizerEntry optimizerTable[] = {
      }},
     {"semismoothNewton",
      [](const Dictionary& d) -> std::unique_ptr<Optimizer> {
-       const bool krylov =
-           d.getChoiceOr("variant", {"condensed", "krylov"}, "condensed") == "krylov";
-       // How the condensed variant forms S; the Krylov variant never forms it.
+       const std::string variant =
+           d.getChoiceOr("variant", {"auto", "condensed", "krylov"}, "auto");
+       const bool krylov = variant == "krylov";
+       // How the condensed variant forms S; the Krylov variant never forms it. Given with
+       // variant auto, it asks for the condensed variant (as before auto was the default).
        if (krylov && d.found("interfaceOperator"))
          throw InputError(d.location("interfaceOperator"),
                           "'interfaceOperator' applies to variant condensed only: the krylov "
                           "variant does not form S");
+       const bool automatic = variant == "auto" && !d.found("interfaceOperator");
+       for (const char* key : {"preconditioner", "probingDistance"})
+         if (automatic && d.found(key))
+           throw InputError(d.location(key),
+                            std::string("'") + key +
+                                "' applies to variant krylov only: set 'variant krylov;' (the "
+                                "default, variant auto, chooses by the fracture's size and may "
+                                "choose condensed)");
        const std::string how =
            krylov ? "factorisation"
                   : d.getChoiceOr("interfaceOperator",
@@ -88,15 +98,19 @@ const OptimizerEntry optimizerTable[] = {
                                                  "' applies to variant krylov only: the "
                                                  "condensed variant solves with the dense S");
        const std::string pre =
-           krylov ? d.getChoiceOr("preconditioner", {"none", "blockDiagonal", "probing"}, "probing")
-                  : "none";
+           krylov      ? d.getChoiceOr("preconditioner", {"none", "blockDiagonal", "probing"},
+                                       "probing")
+           : automatic ? "probing"  // what auto runs if it chooses krylov
+                       : "none";
        if (pre != "probing" && d.found("probingDistance"))
          throw InputError(d.location("probingDistance"),
                           "'probingDistance' applies to preconditioner probing only");
        const int distance = static_cast<int>(d.getIntOr("probingDistance", 1, {1, 20}));
        return std::make_unique<SemismoothNewton>(
            static_cast<int>(d.getIntOr("maxBacktracks", 30, {1, 200})),
-           krylov ? SemismoothNewton::Variant::krylov : SemismoothNewton::Variant::condensed,
+           krylov      ? SemismoothNewton::Variant::krylov
+           : automatic ? SemismoothNewton::Variant::automatic
+                       : SemismoothNewton::Variant::condensed,
            how == "blockSolves"  ? InterfaceMethod::blockSolves
            : how == "dualSolves" ? InterfaceMethod::dualSolves
                                  : InterfaceMethod::factorisation,
@@ -466,6 +480,50 @@ OptimizerReport& SemismoothNewton::finish(ControlProblem& p, const ControlState&
              (p.hasOpening() ? "stick, slip, open and closed)" : "stick and slip)");
   beta = s.beta;
   return r;
+}
+
+// Variant auto's thresholds, from the wall time of whole runs against the same mesh's linear
+// solve (README "Newton's variant by fault size"; P1, Newton to 1e-10, this 2-core machine).
+// What decides is which extra work is larger: condensed's dense S (the border's fill, the
+// complement, Newton's LU on it) grows like (k·n)³, krylov's ~50–90 back-substitutions (GMRES
+// products, trial points, the probing block) like the factor, ~dofs^(4/3) in 3D.
+//  * 3D, the penny crack: even at 1 002 nodes in 24 003 dofs (3.6 s against 3.9 s,
+//    interfaceBenchmark.sh); krylov 4x faster at 2 387 nodes in 46 446 dofs (6.1 s against
+//    24.1 s) and 2.6x at 4 178 nodes in 312 180 dofs (99 s against 256 s, pennyBenchmark.sh);
+//    condensed faster at 2 387 nodes in 678 102 dofs (263 s, 1.07x the linear solve, against
+//    ~80 single back-substitutions of 1.3–2.7 s each). Even where n ∝ dofs^(4/9), through the
+//    1 002-node point: n ≥ 11.3 dofs^(4/9) (3 130 nodes at 312 180 dofs, 4 410 at 678 102),
+//    and never below 1 000 nodes, where the dense S costs a fraction of a second.
+//  * 2D, the inclined crack (interfaceBenchmark.sh; one family of meshes, the dofs growing
+//    with the crack): condensed faster at 2 049 nodes (8.1 s against 16.8 s), krylov at 5 001
+//    (31 s against 59 s); condensed's extra work grows like n^2.2 there, krylov's stays ~10 s:
+//    even near 2 700 nodes.
+constexpr Eigen::Index krylovFromNodes2D = 3000;
+constexpr double krylovNodeScale3D = 11.3;  // n ≥ scale · dofs^(4/9) in 3D
+constexpr Eigen::Index krylovFromNodesMin3D = 1000;
+
+Eigen::Index SemismoothNewton::krylovFromNodes(int dimension, Eigen::Index dofs) {
+  if (dimension != 3) return krylovFromNodes2D;
+  const double n = krylovNodeScale3D * std::pow(static_cast<double>(dofs), 4.0 / 9.0);
+  return std::max(krylovFromNodesMin3D, static_cast<Eigen::Index>(std::ceil(n)));
+}
+
+std::string SemismoothNewton::chooseFor(const CaseFacts& facts) {
+  if (!automatic_) return "";
+  automatic_ = false;  // chosen once: a second call changes nothing
+  const Eigen::Index threshold = krylovFromNodes(facts.dimension, facts.dofs);
+  const bool large = facts.fractureNodes >= threshold;
+  variant_ = large && facts.needsDenseS.empty() ? Variant::krylov : Variant::condensed;
+  std::ostringstream line;
+  line << "Newton variant: " << (variant_ == Variant::krylov ? "krylov" : "condensed")
+       << " (variant auto: " << facts.fractureNodes << " fracture control nodes "
+       << (large ? ">= " : "< ") << threshold << ", the " << facts.dimension
+       << "D threshold for krylov";
+  if (facts.dimension == 3) line << " at " << facts.dofs << " dofs";
+  if (large && !facts.needsDenseS.empty())
+    line << "; condensed all the same: the dense S is needed for " << facts.needsDenseS;
+  line << ")";
+  return line.str();
 }
 
 std::string SemismoothNewton::prepare(SlipResponse& resp, bool withOpening) {

@@ -60,6 +60,18 @@ struct OptimizerReport {
   long stiffnessComponents = 0;
 };
 
+/// What an optimizer may choose by before the factorisation (SemismoothNewton's variant auto):
+/// facts of the case alone — never timings — so that a restart and every rank of a parallel
+/// run choose alike.
+struct CaseFacts {
+  Eigen::Index fractureNodes = 0;  ///< control nodes of all fractures (SlipResponse::size())
+  int dimension = 2;               ///< of the mesh
+  Eigen::Index dofs = 0;           ///< displacement unknowns of the (unsplit) mesh
+  /// Why the case needs the dense S (fractures that open, weakening friction, quasiDynamic
+  /// time integration), for the log; empty when it does not.
+  std::string needsDenseS;
+};
+
 /// Settings every optimizer shares (keys of the case's 'solver' dictionary).
 struct StopRule {
   enum class On { residual, step };
@@ -86,6 +98,10 @@ class Optimizer {
   /// Friction that weakens with slip (slipWeakening): only an optimizer that can tell a lost
   /// equilibrium from slow convergence (OptimizerReport::tangentStiffness) takes it.
   virtual bool handlesWeakening() const { return false; }
+  /// Make the choices left to the case (SemismoothNewton's variant auto) from its facts; call
+  /// once, before the factorisation (wantsInterfaceOperator() depends on it). Returns one line
+  /// for the log saying what was chosen and why, or "" when nothing was left to choose.
+  virtual std::string chooseFor(const CaseFacts& /*facts*/) { return ""; }
   /// The interface operator S the optimizer holds (formed by prepare()), or nullptr.
   virtual const InterfaceOperator* heldOperator() const { return nullptr; }
 
@@ -194,19 +210,31 @@ enum class KrylovPreconditioning { none, blockDiagonal, probing };
 /// Jacobian of S probed once per run (KrylovPreconditioner.hpp); in 3D it iterates with
 /// Newton's own γ as the condensed variant does, the interface stiffness read from the probed
 /// (or sampled) diagonal of S_tt.
+///
+/// Variant `auto` (the key's default; `automatic` here) is condensed until chooseFor() picks
+/// by the case: krylov where the fractures have at least krylovFromNodes(dimension, dofs)
+/// control nodes and nothing needs the dense S, condensed otherwise.
 class SemismoothNewton : public Optimizer {
  public:
-  enum class Variant { condensed, krylov };
+  enum class Variant { condensed, krylov, automatic };
+  /// The fewest fracture control nodes from which variant auto takes krylov, in a
+  /// `dimension`-D mesh of `dofs` unknowns (measured: Optimizer.cpp, README "Newton's variant
+  /// by fault size").
+  static Eigen::Index krylovFromNodes(int dimension, Eigen::Index dofs);
   SemismoothNewton(int maxBacktracks, Variant variant = Variant::condensed,
                    InterfaceMethod interfaceMethod = InterfaceMethod::factorisation,
                    KrylovPreconditioning preconditioner = KrylovPreconditioning::none,
                    int probingDistance = 1)
       : maxBacktracks_(maxBacktracks),
-        variant_(variant),
+        variant_(variant == Variant::automatic ? Variant::condensed : variant),
+        automatic_(variant == Variant::automatic),
         interfaceMethod_(interfaceMethod),
         preconditioner_(preconditioner),
         probingDistance_(probingDistance) {}
   std::string prepare(SlipResponse& response, bool withOpening) override;
+  std::string chooseFor(const CaseFacts& facts) override;
+  /// The variant minimize() runs (condensed while auto has not chosen).
+  Variant variant() const { return variant_; }
   const InterfaceOperator* heldOperator() const override {
     return variant_ == Variant::condensed && cachedFor_ ? &S_ : nullptr;
   }
@@ -234,7 +262,8 @@ class SemismoothNewton : public Optimizer {
                           OptimizerReport& r, Eigen::VectorXd& beta);
 
   int maxBacktracks_;
-  Variant variant_;
+  Variant variant_;  // condensed or krylov: what runs
+  bool automatic_;   // variant auto: chooseFor() may still set variant_
   InterfaceMethod interfaceMethod_;
   int activeSetChanges_ = 0;
   InterfaceOperator S_;  // cached for the run

@@ -18,6 +18,20 @@ const char* toString(InterfaceMethod method) {
   return "unknown";
 }
 
+void SlipResponse::dualBlock(const Eigen::MatrixXd& qt, const Eigen::MatrixXd& qn,
+                             Eigen::MatrixXd& tauDual, Eigen::MatrixXd* sigmaNDual) {
+  const Eigen::Index m = qt.cols();
+  tauDual.resize(blockSize() * size(), m);
+  if (sigmaNDual) sigmaNDual->resize(size(), m);
+  Eigen::VectorXd t, sn;
+  for (Eigen::Index c = 0; c < m; ++c) {
+    throwIfStopNow();
+    dual(qt.col(c), qn.col(c), t, sigmaNDual ? &sn : nullptr);
+    tauDual.col(c) = t;
+    if (sigmaNDual) sigmaNDual->col(c) = sn;
+  }
+}
+
 InterfaceOperator SlipResponse::interfaceOperator(InterfaceMethod /*method*/, bool withOpening) {
   const Eigen::Index n = size(), k = blockSize();
   const Eigen::VectorXd& mask = freeMask();

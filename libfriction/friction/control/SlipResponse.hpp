@@ -70,6 +70,14 @@ class SlipResponse {
   /// given.
   virtual void dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn, Eigen::VectorXd& tauDual,
                     Eigen::VectorXd* sigmaNDual = nullptr) = 0;
+  /// Dual solves for m right-hand sides at once: column c of qt (k·n × m) and qn (n × m) gives
+  /// column c of tauDual (k·n × m) and, if asked, of sigmaNDual (n × m), as dual() does, up to
+  /// round-off. Counts m back-substitutions. This default makes m calls of dual(); the finite
+  /// element implementation solves them as one block (SparseFactor's multi-column solve), which
+  /// CHOLMOD's supernodal solve runs with matrix–matrix kernels: much cheaper per column.
+  virtual void dualBlock(const Eigen::MatrixXd& qt, const Eigen::MatrixXd& qn,
+                         Eigen::MatrixXd& tauDual, Eigen::MatrixXd* sigmaNDual = nullptr);
+
   /// The adjoint of β ↦ (τ, σ_n) in the M inner product of weights(): M⁻¹ (S_ttᵀ M qt +
   /// S_ntᵀ M qn) (qt: k·n, qn: n), zero at held nodes — what the exact gradient needs. Where
   /// M·S is symmetric (tractions recovered with the lumped M) it is the dual solve's τ, the

@@ -9,6 +9,7 @@
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/Parallel.hpp"
+#include "friction/core/StopRequest.hpp"
 #include "friction/fe/Simplex.hpp"
 #include "friction/fracture/SignConventions.hpp"
 #include "friction/mesh/MeshTopology.hpp"
@@ -1072,8 +1073,8 @@ double FractureSystem::project(const Eigen::VectorXd& sigma, Index node,
   return p;
 }
 
-void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
-                          Eigen::VectorXd& tauDual, Eigen::VectorXd* sigmaNDual) {
+Eigen::VectorXd FractureSystem::dualJump(const Eigen::Ref<const Eigen::VectorXd>& qt,
+                                         const Eigen::Ref<const Eigen::VectorXd>& qn) const {
   const Index n = size(), k = blockSize(), d = dim_;
   FRICTION_ASSERT(qt.size() == k * n && qn.size() == n, "k tangential + 1 normal per node");
   Eigen::VectorXd j(d * n);
@@ -1086,6 +1087,54 @@ void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
       j[d * i + a] = mask_[i] * (ja + qn[i] * v.normal[a]);
     }
   }
+  return j;
+}
+
+void FractureSystem::dualBlock(const Eigen::MatrixXd& qt, const Eigen::MatrixXd& qn,
+                               Eigen::MatrixXd& tauDual, Eigen::MatrixXd* sigmaNDual) {
+  FRICTION_ASSERT(factor_ && factor_->ok(), "factor() before solving");
+  const Index n = size(), k = blockSize(), d = dim_, m = qt.cols();
+  FRICTION_ASSERT(qn.cols() == m, "as many normal as tangential right-hand sides");
+  tauDual.resize(k * n, m);
+  if (sigmaNDual) sigmaNDual->resize(n, m);
+  // As solve(j, false, ·) column by column, but one back-substitution for the block: the
+  // right-hand sides' and the expansions' own work is O(unknowns) per column.
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dirichlet_->numFixed());
+  const Index block = 64;
+  for (Index c0 = 0; c0 < m; c0 += block) {
+    throwIfStopNow();
+    const Index nc = std::min(block, m - c0);
+    Eigen::MatrixXd J(d * n, nc), rhs;
+    for (Index c = 0; c < nc; ++c) {
+      J.col(c) = dualJump(qt.col(c0 + c), qn.col(c0 + c));
+      const Eigen::VectorXd r = reduced_->rhs(Eigen::VectorXd(-(B_ * J.col(c))), zero);
+      if (c == 0) rhs.resize(r.size(), nc);
+      rhs.col(c) = r;
+    }
+    const Eigen::MatrixXd X = factor_->solve(rhs);
+    Eigen::MatrixXd sigma(d * n, nc);
+    for (Index c = 0; c < nc; ++c) {
+      x_ = reduced_->expand(Eigen::VectorXd(X.col(c)), zero);
+      sigma.col(c) = Tx_ * x_ + Tj_ * J.col(c);
+    }
+    lastJump_ = J.col(nc - 1);  // as after the last of nc dual() calls
+    if (consistent_) applyRecovery(sigma, false);
+    for (Index c = 0; c < nc; ++c) {
+      const Eigen::VectorXd s = sigma.col(c);
+      for (Index i = 0; i < n; ++i) {
+        for (int r = 0; r < k; ++r)
+          tauDual(k * i + r, c0 + c) = project(s, i, nodes_[i].tangent[r]);
+        if (nodes_[i].heldComponent >= 0) tauDual(k * i + nodes_[i].heldComponent, c0 + c) = 0;
+        if (sigmaNDual) (*sigmaNDual)(i, c0 + c) = project(s, i, nodes_[i].normal);
+      }
+    }
+  }
+}
+
+void FractureSystem::dual(const Eigen::VectorXd& qt, const Eigen::VectorXd& qn,
+                          Eigen::VectorXd& tauDual, Eigen::VectorXd* sigmaNDual) {
+  const Index n = size(), k = blockSize();
+  const Eigen::VectorXd j = dualJump(qt, qn);
   Eigen::VectorXd sigma;
   solve(j, false, sigma);
   tauDual.resize(k * n);

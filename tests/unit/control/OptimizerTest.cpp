@@ -134,3 +134,101 @@ TEST_CASE("semismoothNewton reads interfaceOperator, and refuses it for the kryl
   CHECK_THROWS_WITH(read("type semismoothNewton; interfaceOperator factorization;"),
                     Catch::Contains("factorisation") && Catch::Contains("blockSolves"));
 }
+
+TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unless S is needed",
+          "[control][optimizer]") {
+  // The default variant is auto: condensed until the case's facts are known (so that unit uses
+  // and small cases run as before), then krylov for fractures of at least krylovFromNodes(d,
+  // dofs) control nodes that need no dense S. The log line names the choice, the node count and
+  // the threshold, and what needs S when that overrides the size.
+  auto read = [](const std::string& text) {
+    Dictionary d = Dictionary::parse(text, "frictionSolution");
+    auto opt = Optimizer::New(d);
+    d.checkAllRead();
+    return opt;
+  };
+  auto variantOf = [](const Optimizer& o) {
+    const auto* newton = dynamic_cast<const SemismoothNewton*>(&o);
+    REQUIRE(newton != nullptr);
+    return newton->variant();
+  };
+  using V = SemismoothNewton::Variant;
+  // The measurements the thresholds rest on (README "Newton's variant by fault size"): the
+  // variant found faster on each side of the threshold. 3D: krylov at 4 178 nodes in 312 180
+  // dofs, 2 387 in 46 446 and 10 299 in 316 251; condensed at 2 387 in 678 102 and at 273 (the
+  // committed penny, 9 660). 2D: condensed at 2 049 nodes, krylov at 5 001.
+  CHECK(SemismoothNewton::krylovFromNodes(3, 312180) <= 4178);
+  CHECK(SemismoothNewton::krylovFromNodes(3, 46446) <= 2387);
+  CHECK(SemismoothNewton::krylovFromNodes(3, 316251) <= 10299);
+  CHECK(SemismoothNewton::krylovFromNodes(3, 678102) > 2387);
+  CHECK(SemismoothNewton::krylovFromNodes(3, 9660) > 273);
+  CHECK(SemismoothNewton::krylovFromNodes(2, 300950) > 2049);
+  CHECK(SemismoothNewton::krylovFromNodes(2, 701946) <= 5001);
+  // A larger body makes each back-substitution dearer: the threshold grows with the dofs.
+  CHECK(SemismoothNewton::krylovFromNodes(3, 10'000'000) >
+        SemismoothNewton::krylovFromNodes(3, 1'000'000));
+  for (const auto& [dim, dofs] :
+       {std::pair<int, Eigen::Index>{2, 300950}, {3, 9660}, {3, 312180}, {3, 678102}}) {
+    CAPTURE(dim, dofs);
+    const Eigen::Index t = SemismoothNewton::krylovFromNodes(dim, dofs);
+    REQUIRE(t > 1);
+    const std::string at3D = dim == 3 ? " at " + std::to_string(dofs) + " dofs" : "";
+    for (const char* text : {"type semismoothNewton;", "type semismoothNewton; variant auto;"}) {
+      CAPTURE(text);
+      auto below = read(text), at = read(text);
+      // Before the choice: condensed, S from the factorisation.
+      CHECK(variantOf(*at) == V::condensed);
+      CHECK(at->wantsInterfaceOperator());
+      CHECK(at->handlesOpening());
+      CHECK(at->handlesWeakening());
+      const std::string lineBelow = below->chooseFor({t - 1, dim, dofs, ""});
+      CHECK(variantOf(*below) == V::condensed);
+      CHECK(below->wantsInterfaceOperator());
+      CHECK(lineBelow == "Newton variant: condensed (variant auto: " + std::to_string(t - 1) +
+                             " fracture control nodes < " + std::to_string(t) + ", the " +
+                             std::to_string(dim) + "D threshold for krylov" + at3D + ")");
+      const std::string lineAt = at->chooseFor({t, dim, dofs, ""});
+      CHECK(variantOf(*at) == V::krylov);
+      CHECK_FALSE(at->wantsInterfaceOperator());
+      CHECK_FALSE(at->handlesOpening());
+      CHECK(lineAt == "Newton variant: krylov (variant auto: " + std::to_string(t) +
+                          " fracture control nodes >= " + std::to_string(t) + ", the " +
+                          std::to_string(dim) + "D threshold for krylov" + at3D + ")");
+      // Chosen once: another call changes nothing and says nothing.
+      CHECK(at->chooseFor({1, dim, dofs, ""}).empty());
+      CHECK(variantOf(*at) == V::krylov);
+      for (const char* why : {"fractures that open (contact unilateral)", "law slipWeakening",
+                              "timeIntegration quasiDynamic"}) {
+        auto o = read(text);
+        const std::string line = o->chooseFor({10 * t, dim, dofs, why});
+        CHECK(variantOf(*o) == V::condensed);
+        CHECK(o->wantsInterfaceOperator());
+        CHECK_THAT(line, Catch::StartsWith("Newton variant: condensed") &&
+                             Catch::EndsWith(std::string("; condensed all the same: the dense S is "
+                                                         "needed for ") +
+                                             why + ")"));
+      }
+    }
+    // A variant given, or the condensed variant's own key: nothing left to choose.
+    for (const char* text :
+         {"type semismoothNewton; variant condensed;",
+          "type semismoothNewton; interfaceOperator blockSolves;",
+          "type semismoothNewton; variant auto; interfaceOperator dualSolves;"}) {
+      auto o = read(text);
+      CHECK(o->chooseFor({10 * t, dim, dofs, ""}).empty());
+      CHECK(variantOf(*o) == V::condensed);
+    }
+    auto k = read("type semismoothNewton; variant krylov;");
+    CHECK(k->chooseFor({1, dim, dofs, "law slipWeakening"}).empty());
+    CHECK(variantOf(*k) == V::krylov);
+    CHECK(read("type lbfgs;")->chooseFor({10 * t, dim, dofs, ""}).empty());
+  }
+  // The krylov variant's keys with auto: refused, naming the key and the way out.
+  for (const char* key : {"preconditioner probing;", "probingDistance 2;"})
+    CHECK_THROWS_WITH(
+        read(std::string("type semismoothNewton; ") + key),
+        Catch::Contains("variant krylov only") && Catch::Contains("set 'variant krylov;'"));
+  CHECK_THROWS_WITH(
+      read("type semismoothNewton; variant automatic;"),
+      Catch::Contains("auto") && Catch::Contains("condensed") && Catch::Contains("krylov"));
+}
