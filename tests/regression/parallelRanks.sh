@@ -14,7 +14,9 @@
 #         P2: the consistent traction recovery), sneddonCrack (a crack that opens: contact
 #         unilateral), faultNetworkBox (3D: fault surfaces crossing and abutting, the
 #         intersection curves' sectors; 4 steps), faultNetworkBoxP2 (the same in P2: the
-#         curves' mid-edge nodes too), refusals, outputErrors, rigidBody
+#         curves' mid-edge nodes too), pennyKrylov (the penny crack with Newton's krylov
+#         variant: its back-substitutions and the probes' block of dual solves on the ranks),
+#         refusals, outputErrors, rigidBody
 set -u
 bin=$1 src=$2 work=$3 scenario=$4
 fail() { echo "FAIL [parallel.$scenario]: $*" >&2; exit 1; }
@@ -49,6 +51,7 @@ case $scenario in
   faultInCubeP2) base=tests/regression/cases/faultInCube ;;
   faultNetworkBox | faultNetworkBoxP2) base=tests/regression/cases/faultNetworkBox ;;
   fractureNetwork | strikeSlipFault | sneddonCrack) base=$scenario ;;
+  pennyKrylov) base=pennyCrack ;;
   refusals)
     prepare refuse paperBenchmark
     out=$(mpirun -np 2 "$bin/frictionSolver" -parallel -case "$work/refuse/case" 2>&1)
@@ -207,6 +210,10 @@ for run in "${runs[@]}"; do
   prepare "$run" "$base"
   dir=$work/$run/case
   [[ $scenario == *P2 ]] && sed -i 's/^elementOrder .*/elementOrder    2;/' "$dir/system/frictionSolution"
+  if [[ $scenario == *Krylov ]]; then
+    sed -i 's/^\( *type  *semismoothNewton;\)/\1 variant krylov;/' "$dir/system/frictionSolution"
+    grep -q "variant krylov;" "$dir/system/frictionSolution" || fail "$run: variant krylov not set"
+  fi
   case $run in
     serial) setSolver "$dir" cholmod
       cmd=("$bin/frictionSolver" -case "$dir") ;;
@@ -230,8 +237,13 @@ for run in "${runs[@]}"; do
       [[ $(grep -c "^End" "$log") == 1 ]] || fail "$run: the log has $(grep -c '^End' "$log") End lines"
       ;;
   esac
-  grep -q "Interface operator: .* from the factorisation" "$log" ||
-    fail "$run: the interface operator did not come from the factorisation"
+  if [[ $scenario == *Krylov ]]; then
+    # No S: GMRES on products of back-substitutions, preconditioned by S probed by dual solves.
+    grep -q "GMRES products per Newton iteration" "$log" || fail "$run: the step did not run GMRES"
+  else
+    grep -q "Interface operator: .* from the factorisation" "$log" ||
+      fail "$run: the interface operator did not come from the factorisation"
+  fi
 done
 
 # Every parallel run wrote what the serial run wrote: the same files (logs aside).
