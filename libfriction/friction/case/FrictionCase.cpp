@@ -407,9 +407,13 @@ void FrictionCase::readMumpsMemory(const Dictionary& sol) {
   if (!fs::is_directory(dir, ec))
     sol.fail(key, "key '" + key + "': the out-of-core folder '" + dir.string() +
                       "' is not an existing folder");
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    sol.fail(key, "key '" + key + "': the out-of-core folder '" + dir.string() +
-                      "' is not writable (" + std::strerror(errno) + ")");
+  // Writable is what matters, and only making a folder tells (access() says yes to root on a
+  // read-only mount): a folder of ours, made and removed at once.
+  std::string probe = (dir / "mumpsOutOfCore.XXXXXX").string();
+  if (!::mkdtemp(probe.data()))
+    sol.fail(key, "key '" + key + "': cannot write in the out-of-core folder '" + dir.string() +
+                      "' (" + std::strerror(errno) + ")");
+  ::rmdir(probe.c_str());
   // MUMPS keeps the folder's name in 255 characters; ours adds "/mumpsOutOfCore.XXXXXX".
   if (dir.string().size() > 200)
     sol.fail(key, "key '" + key +
