@@ -933,13 +933,16 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
           << "): " << a.entries << " entries of the full-rank " << a.fullRankEntries << " ("
           << 100.0 * a.entries / a.fullRankEntries << " %), " << a.lowRankFlops << " flops of "
           << a.flops << "; its back-substitutions err by about the tolerance (README \"Running in "
-          << "parallel\")\n";
+          << "parallel\"); MUMPS estimated " << a.estimatedLowRank / 1e9
+          << " GB of memory with it, " << a.estimatedInCore / 1e9 << " GB in core full rank\n";
       log << blr.str();
     }
     if (!a.outOfCoreDir.empty()) {
       std::ostringstream ooc;
       ooc << std::setprecision(3) << "Out-of-core factor: " << a.outOfCoreBytes / 1e9
-          << " GB written to " << a.outOfCoreDir << " (deleted at the end of the run)\n";
+          << " GB written to " << a.outOfCoreDir
+          << " (deleted at the end of the run); MUMPS estimated " << a.estimatedOutOfCore / 1e9
+          << " GB of memory out of core, " << a.estimatedInCore / 1e9 << " GB in core\n";
       log << ooc.str();
     }
   }

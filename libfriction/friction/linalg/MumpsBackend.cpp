@@ -387,6 +387,10 @@ class MumpsBackend : public SparseFactor::Backend {
     // INFOG(21), INFOG(22): memory the factorisation used [MB], the largest rank's and all.
     analysis_.rankMemoryMax = 1e6 * id_.INFOG(21);
     analysis_.memoryTotal = 1e6 * id_.INFOG(22);
+    analysis_.estimatedInCore = 1e6 * id_.INFOG(17);
+    analysis_.estimatedOutOfCore = 1e6 * id_.INFOG(27);
+    if (memory_.lowRank > 0)
+      analysis_.estimatedLowRank = 1e6 * (oocFolder_.empty() ? id_.INFOG(37) : id_.INFOG(39));
     if (memory_.lowRank > 0) {
       // INFOG(35): the entries the low-rank factor keeps; INFOG(29) those of the full-rank one.
       analysis_.lowRank = memory_.lowRank;

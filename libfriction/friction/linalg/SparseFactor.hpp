@@ -111,6 +111,12 @@ struct FactorAnalysis {
   double lowRankFlops = 0;
   std::string outOfCoreDir;
   double outOfCoreBytes = 0;
+  /// What MUMPS's analysis estimated the factorisation would take in all ranks [bytes] (0:
+  /// unknown): in core (INFOG(17)), out of core (INFOG(27)), and with the low-rank factor in
+  /// core or out of core (INFOG(37) or INFOG(39); MUMPS assumes 60 % of the entries kept).
+  double estimatedInCore = 0;
+  double estimatedOutOfCore = 0;
+  double estimatedLowRank = 0;
   /// Why the backend failed, where it says (mumps: out of memory, the out-of-core folder).
   std::string problem;
 };
