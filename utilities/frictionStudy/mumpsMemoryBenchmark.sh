@@ -15,7 +15,8 @@
 #   unknown mesh of README "Speed in 3D" (needs ~20 GB in core and an hour or more).
 #   VARIANTS (environment): the runs, in order, among full, ooc, blr<ε>, blr<ε>ooc, cholmod;
 #   default "full ooc blr1e-10 blr1e-8 blr1e-6 blr1e-10ooc blr1e-8ooc blr1e-6ooc". The first
-#   full run is the reference of the errors and ratios (without one, errors are not printed).
+#   full or ooc run (the same factor, in memory or on disk: the same slip to the last digit) is
+#   the reference of the errors and ratios (without one, errors are not printed).
 #   LIMIT (environment): seconds after which a run is stopped (default 6000).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -118,7 +119,7 @@ for v in $variants; do
   iters=$(field "$log" 's/^Time = [^ ]*  iterations \([0-9]*\).*/\1/p')
   wall[$v]=$t
   err="- -"
-  if [[ -z $ref && $v == full ]]; then
+  if [[ -z $ref && ($v == full || $v == ooc) ]]; then
     ref=$v
     err="(ref) (ref)"
   elif [[ -n $ref ]]; then
@@ -132,7 +133,7 @@ for v in $variants; do
 done
 if [[ -n $ref ]]; then
   echo
-  echo "ratios to the full-rank in-core run (peak memory, wall):"
+  echo "ratios to the $ref run (peak memory, wall):"
   for v in $variants; do
     [[ -n ${peak[$v]:-} && $v != "$ref" ]] || continue
     awk -v v="$v" -v p="${peak[$v]}" -v P="${peak[$ref]}" -v w="${wall[$v]}" -v W="${wall[$ref]}" \
