@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -17,6 +19,7 @@
 #include <set>
 #include <sstream>
 
+#include <unistd.h>
 #include <Eigen/Geometry>
 
 #include "friction/case/RunCase.hpp"
@@ -293,6 +296,7 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
                          "' has its own ordering (simplicialLDLT: AMD, mumps: METIS); 'ordering " +
                          toString(ordering_) +
                          "' needs 'linearSolver cholmod' (or use 'ordering auto')");
+  readMumpsMemory(sol);
   // Several ranks share the factorisation: only the mumps solver can.
   if (parallel::size() > 1 && linearSolver_ != "mumps")
     throw InputError(sol.found("linearSolver") ? sol.location("linearSolver") : sol.location(),
@@ -370,6 +374,54 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
   sol.checkAllRead();
 }
 
+// MUMPS's smaller factors (README "Running in parallel"): a block low-rank factor (`lowRank`,
+// its dropping tolerance) and an out-of-core one (`outOfCore yes`, in `outOfCoreDir`, the case
+// folder by default). The other solvers have neither: a case that asks is told so, not ignored.
+// The folder is checked here, before any work: a run must not fail on it after the assembly.
+void FrictionCase::readMumpsMemory(const Dictionary& sol) {
+  for (const char* key : {"lowRank", "outOfCore", "outOfCoreDir"})
+    if (sol.found(key) && linearSolver_ != "mumps")
+      throw InputError(sol.location(key), std::string("key '") + key + "': linear solver '" +
+                                              linearSolver_ +
+                                              "' has no low-rank or out-of-core factor; it needs "
+                                              "'linearSolver mumps'");
+  if (sol.found("lowRank")) {
+    mumpsMemory_.lowRank = sol.getScalar("lowRank", Bounds{0.0, 1.0, true, true});
+  }
+  const bool outOfCore = sol.getBoolOr("outOfCore", false);
+  if (!outOfCore) {
+    if (sol.found("outOfCoreDir"))
+      sol.fail("outOfCoreDir",
+               "key 'outOfCoreDir' is the folder of an out-of-core factor: it "
+               "needs 'outOfCore yes;'");
+    return;
+  }
+  fs::path dir = caseDir_;
+  if (sol.found("outOfCoreDir")) {
+    const fs::path given = sol.getFileName("outOfCoreDir");
+    dir = given.is_absolute() ? given : fs::path(caseDir_) / given;
+  }
+  std::error_code ec;
+  dir = fs::absolute(dir, ec).lexically_normal();
+  const std::string key = sol.found("outOfCoreDir") ? "outOfCoreDir" : "outOfCore";
+  if (!fs::is_directory(dir, ec))
+    sol.fail(key, "key '" + key + "': the out-of-core folder '" + dir.string() +
+                      "' is not an existing folder");
+  // Writable is what matters, and only making a folder tells (access() says yes to root on a
+  // read-only mount): a folder of ours, made and removed at once.
+  std::string probe = (dir / "mumpsOutOfCore.XXXXXX").string();
+  if (!::mkdtemp(probe.data()))
+    sol.fail(key, "key '" + key + "': cannot write in the out-of-core folder '" + dir.string() +
+                      "' (" + std::strerror(errno) + ")");
+  ::rmdir(probe.c_str());
+  // MUMPS keeps the folder's name in 255 characters; ours adds "/mumpsOutOfCore.XXXXXX".
+  if (dir.string().size() > 200)
+    sol.fail(key, "key '" + key +
+                      "': the out-of-core folder's path is longer than 200 "
+                      "characters, which MUMPS cannot take: give a shorter one");
+  mumpsMemory_.outOfCoreDir = dir.string();
+}
+
 void FrictionCase::printSettings(std::ostream& log) const {
   const std::string kind = split_.mesh.dim == 3        ? ", 3D"
                            : materials_->planeStress() ? ", plane stress"
@@ -395,6 +447,8 @@ void FrictionCase::printSettings(std::ostream& log) const {
   }
   log << "Elements: P" << order_ << ", linear solver " << linearSolver_;
   if (linearSolver_ == "cholmod") log << ", ordering " << toString(ordering_);
+  if (mumpsMemory_.lowRank > 0) log << ", low-rank factor (BLR) at " << mumpsMemory_.lowRank;
+  if (!mumpsMemory_.outOfCoreDir.empty()) log << ", out of core in " << mumpsMemory_.outOfCoreDir;
   log << "\n";
   if (fractures_.empty()) log << "Fractures: none (a plain elastic solve, no control loop)\n";
   for (const auto& f : fractures_) {
@@ -526,7 +580,8 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   }
   FactorStatus status = system_->factor(
       linearSolver_, optimizer_->wantsInterfaceOperator(),
-      [&](const std::string& phase, double seconds) { logPhase(log, phase, seconds); }, ordering_);
+      [&](const std::string& phase, double seconds) { logPhase(log, phase, seconds); }, ordering_,
+      mumpsMemory_);
   // A part that nothing holds, or a direction no patch fixes: K is singular, whatever its
   // pivots say. The backends' pivot checks see it on one rank, but MUMPS on several does not
   // (measured on a free 3D body, cases/pennyCrack with every patch free: INFOG(28) null pivots
@@ -885,6 +940,26 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
       line << "; " << a.ranks << (a.ranks == 1 ? " rank, " : " ranks, ") << a.rankMemoryMax / 1e9
            << " GB on the largest rank, " << a.memoryTotal / 1e9 << " GB in all";
     log << line.str() << "\n";
+    // MUMPS's smaller factors: what they kept and wrote (its INFOG(29), INFOG(35), RINFOG(14),
+    // RINFOG(16)).
+    if (a.lowRank > 0 && a.fullRankEntries > 0) {
+      std::ostringstream blr;
+      blr << std::setprecision(3) << "Low-rank factor (BLR, dropping tolerance " << a.lowRank
+          << "): " << a.entries << " entries of the full-rank " << a.fullRankEntries << " ("
+          << 100.0 * a.entries / a.fullRankEntries << " %), " << a.lowRankFlops << " flops of "
+          << a.flops << "; its back-substitutions err by about the tolerance (README \"Running in "
+          << "parallel\"); MUMPS estimated " << a.estimatedLowRank / 1e9
+          << " GB of memory with it, " << a.estimatedInCore / 1e9 << " GB in core full rank\n";
+      log << blr.str();
+    }
+    if (!a.outOfCoreDir.empty()) {
+      std::ostringstream ooc;
+      ooc << std::setprecision(3) << "Out-of-core factor: " << a.outOfCoreBytes / 1e9
+          << " GB written to " << a.outOfCoreDir
+          << " (deleted at the end of the run); MUMPS estimated " << a.estimatedOutOfCore / 1e9
+          << " GB of memory out of core, " << a.estimatedInCore / 1e9 << " GB in core\n";
+      log << ooc.str();
+    }
   }
   // Condensed Newton's S: a by-product of the factorisation, or blocks of solves where the
   // backend cannot deliver it.
@@ -1040,6 +1115,11 @@ std::string FrictionCase::factorFailureDiagnosis() const {
   std::ostringstream s;
   s << std::setprecision(4) << "the stiffness matrix could not be factored ("
     << toString(factorStatus_) << "): ";
+  // 0. The backend said why (mumps: memory, the out-of-core folder).
+  if (factorStatus_ == FactorStatus::failed && !f.analysis().problem.empty()) {
+    s << f.backend() << ": " << f.analysis().problem;
+    return s.str();
+  }
   // 1. Scaling: entries beyond double precision (the case's units).
   if (!std::isfinite(f.maxAbsEntry()) || f.maxAbsEntry() > 1e250) {
     s << "its entries overflow double precision (largest |K_ij| " << f.maxAbsEntry()

@@ -43,6 +43,7 @@
 
 namespace friction {
 
+class Dictionary;
 class FaultSeries;
 
 /// A connected part of the split mesh (cells joined through shared split-mesh nodes, so the
@@ -174,6 +175,8 @@ class FrictionCase : private StepHost {
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.
   void judgeStep(StepResult& r) const;
   void findFloatingParts();
+  // The keys lowRank, outOfCore and outOfCoreDir of system/frictionSolution.
+  void readMumpsMemory(const Dictionary& sol);
   /// Log, once per run each, a note where the answer is most likely a case typed wrong: every
   /// node of a fracture open, a displacement beyond the body's size.
   void sanityNotes(std::ostream& log);
@@ -214,6 +217,8 @@ class FrictionCase : private StepHost {
   int order_ = 1;
   std::string linearSolver_ = "cholmod";
   Ordering ordering_ = Ordering::automatic;  ///< the key `ordering` (cholmod only)
+  /// The keys `lowRank`, `outOfCore`, `outOfCoreDir` (mumps only).
+  MumpsMemory mumpsMemory_;
   double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
   bool gammaAbsolute_ = false, warmStart_ = false;
   /// Where gamma and gammaNormal were given (absolute values are checked against E/h once h is

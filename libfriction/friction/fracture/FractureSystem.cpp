@@ -686,7 +686,8 @@ int FractureSystem::numPartlyHeldOnDirichlet() const {
 }
 
 FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfaceOperator,
-                                    const PhaseReport& phases, Ordering ordering) {
+                                    const PhaseReport& phases, Ordering ordering,
+                                    const MumpsMemory& memory) {
   Stopwatch clock;
   const auto report = [&](const std::string& phase) {
     const double seconds = clock.lap();
@@ -816,6 +817,7 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
 
   factor_ = std::make_unique<SparseFactor>(backend);
   factor_->setOrdering(ordering, dim_);
+  if (memory.any()) factor_->setMumpsMemory(memory);
   // Several ranks sharing a backend that takes summands: each rank assembles its own cells (a
   // contiguous block of the mesh's numbering) and the backend adds the ranks' parts; the
   // products with K (the Dirichlet lifting, the equilibrium check) add them too.

@@ -90,9 +90,11 @@ class FractureSystem : public SlipResponse {
   /// with the jumps last, and the Schur complement on the jumps is M·S.
   /// `phases` is told each part of the work as it ends (assemblies, the factorisation's
   /// phases), for the log. `ordering`: the fill-reducing ordering (SparseFactor::setOrdering;
-  /// automatic decides by the mesh's dimension and the size).
+  /// automatic decides by the mesh's dimension and the size). `memory`: mumps's low-rank or
+  /// out-of-core factor (SparseFactor::setMumpsMemory; none by default).
   FactorStatus factor(const std::string& backend = "cholmod", bool withInterfaceOperator = false,
-                      const PhaseReport& phases = {}, Ordering ordering = Ordering::automatic);
+                      const PhaseReport& phases = {}, Ordering ordering = Ordering::automatic,
+                      const MumpsMemory& memory = {});
   const SparseFactor& factorization() const { return *factor_; }
 
   /// This step's data: the load vector on the SPLIT space (tractions, body force) [N], and

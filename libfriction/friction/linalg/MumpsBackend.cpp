@@ -14,13 +14,23 @@
 // ICNTL(26) = 0, which solves the interior problem A x = b with the same factor. (PETSc's
 // interface to MUMPS refuses Schur complements on more than one rank, which is why this calls
 // MUMPS directly.)
+//
+// A smaller factor (MumpsMemory, system/frictionSolution keys lowRank and outOfCore): MUMPS's
+// block low-rank factorisation (ICNTL(35) = 2, the factors kept low-rank for the solves too,
+// CNTL(7) the dropping tolerance) and its out-of-core factorisation (ICNTL(22) = 1: the
+// factor's full-rank blocks written to files, in a folder of our own made for the run inside
+// the given one and removed, empty, after MUMPS has deleted its files). The Schur complement
+// works with both: MUMPS keeps the Schur block itself full-rank and dense (measured on
+// cases/pennyCrack, README "Running in parallel").
 // Compiled only in builds with FRICTION_WITH_MUMPS (other builds skip the file).
 #ifdef FRICTION_WITH_MUMPS
 #include <dmumps_c.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -76,14 +86,20 @@ class MumpsBackend : public SparseFactor::Backend {
   }
   ~MumpsBackend() override {
     if (live_ && parallel::running()) {
-      id_.job = -2;
+      id_.job = -2;  // frees the factor and deletes its out-of-core files
       dmumps_c(&id_);
     }
+    // Our folder, empty now: rmdir removes nothing else (it fails on a folder with files).
+    if (!oocFolder_.empty()) ::rmdir(oocFolder_.c_str());
   }
   MumpsBackend(const MumpsBackend&) = delete;
   MumpsBackend& operator=(const MumpsBackend&) = delete;
 
   void setPivotTolerance(double tolerance) override { tolerance_ = tolerance; }
+  bool setMumpsMemory(const MumpsMemory& memory) override {
+    memory_ = memory;
+    return true;
+  }
   bool takesSummands() const override { return true; }
   void setSummedInput(bool summed) override { summed_ = summed; }
 
@@ -167,8 +183,16 @@ class MumpsBackend : public SparseFactor::Backend {
     }
   }
 
+  // The factorisation; what went wrong, if anything, in analysis().problem.
   FactorStatus run(const SparseMatrix& A, const SparseMatrix* B, const SparseMatrix* C,
                    Eigen::MatrixXd* schur) {
+    const FactorStatus status = runPhases(A, B, C, schur);
+    analysis_.problem = problem_;
+    return status;
+  }
+
+  FactorStatus runPhases(const SparseMatrix& A, const SparseMatrix* B, const SparseMatrix* C,
+                         Eigen::MatrixXd* schur) {
     problem_.clear();
     analysis_ = {};
     if (!live_) {
@@ -205,6 +229,7 @@ class MumpsBackend : public SparseFactor::Backend {
     int given = id_.ICNTL(7);
     parallel::broadcast(&given, 1);
     id_.ICNTL(7) = given;
+    if (!lowRankAndOutOfCore()) return FactorStatus::failed;
     id_.ICNTL(24) = 1;         // detect null pivots: a singular matrix is a status, not a factor
     id_.CNTL(3) = tolerance_;  // null below tolerance · max |A_ij| (relative, CNTL(3) > 0)
     id_.n = n_ + m;
@@ -269,6 +294,38 @@ class MumpsBackend : public SparseFactor::Backend {
     return status;
   }
 
+  // MumpsMemory's controls, set before the analysis (MUMPS prepares the low-rank clustering
+  // there). Out of core: a folder of this run's own inside the given one, made at the first
+  // factorisation (one per rank: each writes its own files). False, with problem_ set, if the
+  // folder cannot be made.
+  bool lowRankAndOutOfCore() {
+    id_.ICNTL(35) = memory_.lowRank > 0 ? 2 : 0;  // 2: low-rank factors for the solves too
+    id_.CNTL(7) = memory_.lowRank;
+    id_.ICNTL(22) = memory_.outOfCoreDir.empty() ? 0 : 1;
+    if (memory_.outOfCoreDir.empty()) return true;
+    int failed = 0;
+    if (oocFolder_.empty()) {
+      std::string name = memory_.outOfCoreDir + "/mumpsOutOfCore.XXXXXX";
+      if (name.size() >= sizeof(id_.ooc_tmpdir) || !::mkdtemp(name.data())) {
+        problem_ = "cannot make a folder for the out-of-core factor in '" + memory_.outOfCoreDir +
+                   "': " +
+                   (name.size() >= sizeof(id_.ooc_tmpdir) ? std::string("path too long for MUMPS")
+                                                          : std::strerror(errno));
+        failed = 1;
+      } else {
+        oocFolder_ = name;
+      }
+    }
+    // Every rank goes on to the analysis, or none does (it is collective).
+    if (parallel::maxOverRanks(failed) > 0) {
+      if (problem_.empty()) problem_ = "another rank could not make its out-of-core folder";
+      return false;
+    }
+    std::snprintf(id_.ooc_tmpdir, sizeof(id_.ooc_tmpdir), "%s", oocFolder_.c_str());
+    std::snprintf(id_.ooc_prefix, sizeof(id_.ooc_prefix), "%s", "factor");
+    return true;
+  }
+
   // The pattern of the sum of the ranks' A (lower triangle, values 1) on rank 0; empty on the
   // others. Collective.
   static SparseMatrix gatherPattern(const SparseMatrix& A) {
@@ -305,8 +362,11 @@ class MumpsBackend : public SparseFactor::Backend {
     if (e == -10) return FactorStatus::notPositiveDefinite;  // numerically singular
     if (e < 0) {
       problem_ = e == -13 ? "out of memory (INFOG(1) = -13)"
-                          : "error INFOG(1) = " + std::to_string(e) +
-                                ", INFOG(2) = " + std::to_string(id_.INFOG(2));
+                 : e <= -90 && e >= -99 && !oocFolder_.empty()
+                     ? "the out-of-core factor could not be written to " + oocFolder_ +
+                           " (disk full or not writable? INFOG(1) = " + std::to_string(e) + ")"
+                     : "error INFOG(1) = " + std::to_string(e) +
+                           ", INFOG(2) = " + std::to_string(id_.INFOG(2));
       return FactorStatus::failed;
     }
     if (id_.job == 1) return FactorStatus::ok;
@@ -327,6 +387,22 @@ class MumpsBackend : public SparseFactor::Backend {
     // INFOG(21), INFOG(22): memory the factorisation used [MB], the largest rank's and all.
     analysis_.rankMemoryMax = 1e6 * id_.INFOG(21);
     analysis_.memoryTotal = 1e6 * id_.INFOG(22);
+    analysis_.estimatedInCore = 1e6 * id_.INFOG(17);
+    analysis_.estimatedOutOfCore = 1e6 * id_.INFOG(27);
+    if (memory_.lowRank > 0)
+      analysis_.estimatedLowRank = 1e6 * (oocFolder_.empty() ? id_.INFOG(37) : id_.INFOG(39));
+    if (memory_.lowRank > 0) {
+      // INFOG(35): the entries the low-rank factor keeps; INFOG(29) those of the full-rank one.
+      analysis_.lowRank = memory_.lowRank;
+      analysis_.fullRankEntries = entries;
+      analysis_.entries = id_.INFOG(35) >= 0 ? id_.INFOG(35) : -1e6 * id_.INFOG(35);
+      analysis_.bytes = 8.0 * analysis_.entries;
+      analysis_.lowRankFlops = id_.RINFOG(14);
+    }
+    if (!oocFolder_.empty()) {
+      analysis_.outOfCoreDir = oocFolder_;
+      analysis_.outOfCoreBytes = 1e6 * id_.RINFOG(16);  // [MB] written by all ranks
+    }
   }
 
   // Every rank calls it with the same B; rank 0's solution reaches all of them.
@@ -363,6 +439,8 @@ class MumpsBackend : public SparseFactor::Backend {
   std::vector<double> values_, schurValues_;
   std::string problem_;
   FactorAnalysis analysis_;
+  MumpsMemory memory_;
+  std::string oocFolder_;  // this run's folder of out-of-core files (empty: in core)
 };
 
 }  // namespace

@@ -912,6 +912,12 @@ bool SparseFactor::takesOrdering() const { return impl_->takesOrdering(); }
 
 bool SparseFactor::takesSummands() const { return impl_->takesSummands(); }
 
+void SparseFactor::setMumpsMemory(const MumpsMemory& memory) {
+  const bool taken = impl_->setMumpsMemory(memory);
+  FRICTION_ASSERT(taken || !memory.any(), "a low-rank or out-of-core factor needs mumps");
+  (void)taken;
+}
+
 void SparseFactor::setSummedOverRanks(bool summed) {
   FRICTION_ASSERT(!summed || takesSummands(), "this backend needs the whole matrix");
   summed_ = summed;

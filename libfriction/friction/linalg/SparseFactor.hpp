@@ -58,6 +58,20 @@ Ordering orderingNamed(const std::string& name);
 /// nesdis against each other at run time.
 Ordering automaticOrdering(int dimension, Eigen::Index unknowns);
 
+/// The mumps backend's ways to a factor smaller than the full-rank one in memory
+/// (system/frictionSolution keys `lowRank`, `outOfCore`, `outOfCoreDir`; README "Running in
+/// parallel").
+struct MumpsMemory {
+  /// Block low-rank factor (MUMPS's BLR, ICNTL(35) = 2) with this dropping tolerance (CNTL(7):
+  /// blocks of the fronts are truncated where the pivots of their rank-revealing QR fall below
+  /// it, in MUMPS's scaled matrix, whose entries are at most 1). 0: the full-rank factor.
+  double lowRank = 0;
+  /// Out-of-core factor (ICNTL(22) = 1): MUMPS writes the factor's full-rank blocks to files in
+  /// this folder (OOC_TMPDIR) and deletes them when the factor is freed. Empty: in core.
+  std::string outOfCoreDir;
+  bool any() const { return lowRank > 0 || !outOfCoreDir.empty(); }
+};
+
 /// What the last analysis of a sparse Cholesky factorisation chose and will cost (for the log:
 /// at 10⁶ unknowns in 3D the factor, not the control loop, sets the time and the memory).
 struct FactorAnalysis {
@@ -87,6 +101,24 @@ struct FactorAnalysis {
   int ranks = 1;
   double rankMemoryMax = 0;
   double memoryTotal = 0;
+  // mumps with MumpsMemory: the dropping tolerance of a low-rank factor (0: full rank), the
+  // entries the full-rank factor would have had (then `entries` is what the low-rank one
+  // keeps, MUMPS's INFOG(35) against INFOG(29)), the flops it spent (RINFOG(14); `flops` stays
+  // the full-rank count), and, out of core, the folder and the bytes of factor written there
+  // (RINFOG(16)).
+  double lowRank = 0;
+  double fullRankEntries = 0;
+  double lowRankFlops = 0;
+  std::string outOfCoreDir;
+  double outOfCoreBytes = 0;
+  /// What MUMPS's analysis estimated the factorisation would take in all ranks [bytes] (0:
+  /// unknown): in core (INFOG(17)), out of core (INFOG(27)), and with the low-rank factor in
+  /// core or out of core (INFOG(37) or INFOG(39); MUMPS assumes 60 % of the entries kept).
+  double estimatedInCore = 0;
+  double estimatedOutOfCore = 0;
+  double estimatedLowRank = 0;
+  /// Why the backend failed, where it says (mumps: out of memory, the out-of-core folder).
+  std::string problem;
 };
 
 class SparseFactor {
@@ -177,6 +209,10 @@ class SparseFactor {
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
   /// X = A⁻¹ B, one back-substitution per column.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B);
+
+  /// MUMPS's low-rank or out-of-core factor for the next factorisations (mumps only: asserted;
+  /// the case refuses the keys for the other solvers).
+  void setMumpsMemory(const MumpsMemory& memory);
 
   /// Whether the backend takes each rank's summand of the matrix (its own cells' entries; the
   /// distributed engine, README "Running in parallel"): mumps.

@@ -44,6 +44,8 @@ class SparseFactor::Backend {
   /// next analyses, never Ordering::automatic (SparseFactor resolves it), and what chose it
   /// (FactorAnalysis::orderingChoice).
   virtual bool takesOrdering() const { return false; }
+  /// mumps: a low-rank or out-of-core factor (SparseFactor::setMumpsMemory); false: not taken.
+  virtual bool setMumpsMemory(const MumpsMemory& /*memory*/) { return false; }
   virtual void setOrdering(Ordering /*ordering*/, const std::string& /*choice*/) {}
   /// The ordering and size of the last analysis, as far as the backend knows them.
   virtual FactorAnalysis analysis() const { return {}; }
