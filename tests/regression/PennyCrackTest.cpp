@@ -38,14 +38,16 @@ std::string solvePenny(Case& c, const std::string& h, int order = 1) {
   INFO(c.log());
   REQUIRE(rc == 0);
   // Pointwise checks away from the tip line, where the √ of the rim does not dominate:
-  //  * the law |τ| = μ_f|σ_n| at every slipping node with r < 0.8a to 1e-10 (the solver's
-  //    tolerance 1e-10 on ‖D‖/‖Σ‖; measured ≤ 4e-10 up to r < 0.9a);
+  //  * the law |τ| = μ_f|σ_n| at every slipping node with r < 0.8a to 1e-9: the solver stops
+  //    at ‖D‖_M ≤ 1e-10 ‖Σ‖_M, a weighted mean over the fault, and its Newton solves no more
+  //    accurately than that needs; the largest node's relative deviation is 10–15× that
+  //    residual (measured: 1.2e-10 at ‖D‖/‖Σ‖ = 7.9e-12, h = a/16, krylov);
   //  * the slip direction parallel to the resolved remote shear within 0.5° at r < 0.5a
   //    (measured 0.33°, 0.14°, 0.045° at h = a/8, a/16, a/32) and exactly opposite to the
   //    node's τ (the law);
   //  * σ_n unchanged by the slip (the analytic answer) within 2 % at r < 0.5a (measured
   //    ≤ 1.4 %: mesh noise of the recovered traction).
-  const std::string law = pennyError(c, "-inner 0.8 --maxLaw 1e-10");
+  const std::string law = pennyError(c, "-inner 0.8 --maxLaw 1e-9");
   CHECK_THAT(law, Catch::Contains("states                   stick 0 slip"));
   CHECK(pennyValue(law, "innerSlipNodes") > 50);
   const std::string inner = pennyError(c, "-inner 0.5 --maxAngle 0.5");

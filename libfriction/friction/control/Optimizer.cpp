@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <iomanip>
 #include <limits>
@@ -10,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 
 #include "friction/control/KrylovPreconditioner.hpp"
 #include "friction/core/Assert.hpp"
@@ -373,31 +375,85 @@ namespace {
 // With a right preconditioner M (x = M u, GMRES on A M u = b) the residual it judges is still
 // b − A x. Stops at ‖b − A x‖ ≤ tol ‖b‖ or after maxProducts products with A; `products`
 // returns how many it made.
-Eigen::VectorXd gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& A0,
-                      const Eigen::VectorXd& b, double tol, int maxProducts, int& products,
-                      const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& M = nullptr,
-                      int restart = 60) {
-  const auto A = [&](const Eigen::VectorXd& u) { return A0(M ? M(u) : u); };
+//
+// A recycled space U (columns) with its products AU = A U known costs no product: GMRES then
+// minimises over span U as well (GCRO with a fixed space, de Sturler 1999): AU = Q R, each
+// cycle starts from x + U R⁻¹ Qᵀ r and runs Arnoldi on (I − Q Qᵀ) A M. Columns of AU that
+// depend on the others (pivots below 1e-7 of the largest) are left out.
+//
+// The products' arguments z_j = M v_j are kept (flexible GMRES), so that
+// x = Σ_j weights[j] z_j + U recycledWeights over the vectors given to A0, in the order they
+// were given: a caller that keeps what else each product yields (S z_j) has it for x without
+// another product. A restart's residual product gets weight 0.
+struct GmresAnswer {
+  Eigen::VectorXd x;
+  std::vector<double> weights;
+  Eigen::VectorXd recycledWeights;
+};
+
+GmresAnswer gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& A0,
+                  const Eigen::VectorXd& b, double tol, int maxProducts, int& products,
+                  const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& M = nullptr,
+                  const Eigen::MatrixXd& U = Eigen::MatrixXd(),
+                  const Eigen::MatrixXd& AU = Eigen::MatrixXd(), int restart = 60) {
   const Eigen::Index n = b.size();
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  GmresAnswer out{Eigen::VectorXd::Zero(n), {}, Eigen::VectorXd::Zero(U.cols())};
+  Eigen::VectorXd& x = out.x;
   const double bnorm = b.norm();
   products = 0;
-  if (bnorm == 0) return x;
+  if (bnorm == 0) return out;
+  const auto A = [&](const Eigen::VectorXd& z) {
+    ++products;
+    out.weights.push_back(0.0);
+    return A0(z);
+  };
+  // The recycled space's orthonormal basis Q of A U, its R and which columns of U it keeps.
+  Eigen::MatrixXd Q(n, 0), R(0, 0);
+  std::vector<Eigen::Index> kept;
+  if (U.cols() > 0) {
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(AU.rows(), AU.cols());
+    qr.setThreshold(1e-7);
+    qr.compute(AU);
+    const Eigen::Index r = qr.rank();
+    Q = qr.householderQ() * Eigen::MatrixXd::Identity(n, r);
+    R = qr.matrixR().topLeftCorner(r, r).triangularView<Eigen::Upper>();
+    for (Eigen::Index j = 0; j < r; ++j) kept.push_back(qr.colsPermutation().indices()[j]);
+  }
+  // x += U R⁻¹ c: the recycled part of a cycle's answer.
+  const auto addRecycled = [&](const Eigen::VectorXd& c) {
+    const Eigen::VectorXd w = R.triangularView<Eigen::Upper>().solve(c);
+    for (std::size_t j = 0; j < kept.size(); ++j) {
+      x += w[j] * U.col(kept[j]);
+      out.recycledWeights[kept[j]] += w[j];
+    }
+  };
+  bool first = true;
   while (products < maxProducts) {
-    const Eigen::VectorXd r0 = b - (products ? A(x) : Eigen::VectorXd::Zero(n));
-    if (products) ++products;
-    const Eigen::VectorXd r = products ? r0 : b;
+    Eigen::VectorXd r = first ? b : Eigen::VectorXd(b - A(x));
+    first = false;
+    if (Q.cols() > 0) {  // the best answer in span U first: r ⊥ A U after it
+      const Eigen::VectorXd c = Q.transpose() * r;
+      addRecycled(c);
+      r -= Q * c;
+    }
     const double beta0 = r.norm();
     if (beta0 <= tol * bnorm) break;
     const int m = std::min<int>(restart, static_cast<int>(n));
-    Eigen::MatrixXd V(n, m + 1), H = Eigen::MatrixXd::Zero(m + 1, m);
+    Eigen::MatrixXd V(n, m + 1), Z(n, m), H = Eigen::MatrixXd::Zero(m + 1, m);
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(Q.cols(), m);  // Qᵀ A z_j
+    std::vector<std::size_t> at(m);                          // which product each column of Z is
     Eigen::VectorXd g = Eigen::VectorXd::Zero(m + 1), cs(m), sn(m);
     V.col(0) = r / beta0;
     g[0] = beta0;
     int k = 0;
     for (; k < m && products < maxProducts; ++k) {
-      Eigen::VectorXd w = A(V.col(k));
-      ++products;
+      Z.col(k) = M ? M(V.col(k)) : Eigen::VectorXd(V.col(k));
+      at[k] = out.weights.size();
+      Eigen::VectorXd w = A(Z.col(k));
+      for (Eigen::Index i = 0; i < Q.cols(); ++i) {  // (I − Q Qᵀ) A z_j
+        B(i, k) = w.dot(Q.col(i));
+        w -= B(i, k) * Q.col(i);
+      }
       for (int i = 0; i <= k; ++i) {  // modified Gram–Schmidt
         H(i, k) = w.dot(V.col(i));
         w -= H(i, k) * V.col(i);
@@ -422,10 +478,12 @@ Eigen::VectorXd gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&
       }
     }
     const Eigen::VectorXd y = H.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
-    x += V.leftCols(k) * y;
+    x += Z.leftCols(k) * y;
+    for (int j = 0; j < k; ++j) out.weights[at[j]] += y[j];
+    if (Q.cols() > 0) addRecycled(-B.leftCols(k) * y);  // keeps b − A x ⊥ A U
     if (std::abs(g[k]) <= tol * bnorm) break;
   }
-  return M ? M(x) : x;
+  return out;
 }
 
 // Puts the case's γ back however minimize() leaves (Newton may iterate with its own).
@@ -444,15 +502,14 @@ std::string newtonGammaNote(double gammaNewton, double gammaCase) {
 
 }  // namespace
 
-bool SemismoothNewton::lineSearch(
-    ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
-    const std::function<ControlState(const Eigen::VectorXd&)>& stateAt, double& lastStep,
-    std::vector<int>& states) {
+bool SemismoothNewton::lineSearch(ControlProblem& p, ControlState& s,
+                                  const std::function<ControlState(double)>& trialAt,
+                                  double& lastStep, std::vector<int>& states) {
   // Backtracking on the merit ½‖D‖²_M; counts active-set changes for the cycling report.
   const double merit = 0.5 * p.dot(s.D, s.D);
   double t = 1;
   for (int b = 0; b < maxBacktracks_; ++b, t *= 0.5) {
-    ControlState trial = stateAt(s.beta + t * dir);
+    ControlState trial = trialAt(t);
     if (0.5 * p.dot(trial.D, trial.D) <= (1 - 1e-4 * t) * merit) {
       lastStep = p.norm(trial.beta - s.beta);
       // A node's stick/slip/open state, and with openings whether its faces touch.
@@ -723,7 +780,8 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
                 "the Newton system on the non-stick nodes is singular";
       break;
     }
-    const bool accepted = lineSearch(p, s, dir, stateAt, lastStep, states);
+    const bool accepted = lineSearch(
+        p, s, [&](double t) { return stateAt(s.beta + t * dir); }, lastStep, states);
     r.iterations = it;
     r.history.push_back(record(p, s, it, accepted ? lastStep : 0));
     if (!accepted) {
@@ -785,6 +843,24 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   std::vector<int> states;
   std::vector<int> products;  // GMRES products per Newton iteration, for the log
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  // S v: one dual solve gives S_tt v (k·n) and S_nt v (n).
+  struct Image {
+    Eigen::VectorXd t, sn;
+  };
+  const auto image = [&](const Eigen::VectorXd& v) {
+    throwIfStopNow();  // a second SIGINT/SIGTERM abandons the step between two solves
+    Image Sv;
+    resp.dual(v, zero, Sv.t, &Sv.sn);
+    return Sv;
+  };
+  // This step's GMRES products so far: vector (k·n) and S of it, the newest last. Later
+  // Newton iterations reuse them without a solve (S is one matrix for the whole step).
+  struct Kept {
+    Eigen::VectorXd z;
+    Image Sz;
+  };
+  std::deque<Kept> recycled;
+  constexpr std::size_t maxRecycled = 60;
   for (int it = 1; it <= stop_.maxIterations; ++it) {
     if (converged(p, s, lastStep)) {
       if (p.gamma() == gammaCase) {
@@ -798,13 +874,10 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
         break;
       }
     }
-    // G v on the free nodes: one dual solve gives S_tt v and S_nt v. Row r of node i:
-    // ((I − P'_N) S_tt v)_r + μ P'_ρ,r (S_nt v)_i + γ (P'_N v)_r, summed in the order of the
-    // scalar expression.
-    auto applyG = [&](const Eigen::VectorXd& v) {
-      throwIfStopNow();
-      Eigen::VectorXd t, sn;
-      resp.dual(v, zero, t, &sn);
+    // G v on the free nodes from S v = (S_tt v, S_nt v), which one dual solve gives. Row r of
+    // node i: ((I − P'_N) S_tt v)_r + μ P'_ρ,r (S_nt v)_i + γ (P'_N v)_r, summed in the order
+    // of the scalar expression.
+    auto applyG = [&](const Eigen::VectorXd& v, const Image& Sv) {
       Eigen::VectorXd out(size);
       for (Eigen::Index i = 0; i < n; ++i) {
         const NodeComplementarity& c = s.node[i];
@@ -813,13 +886,13 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
             out[k * i + row] = 0.0;
             continue;
           }
-          double a = ((row == 0 ? 1.0 : 0.0) - c.dPdN(row, 0)) * t[k * i];
+          double a = ((row == 0 ? 1.0 : 0.0) - c.dPdN(row, 0)) * Sv.t[k * i];
           double g = p.gamma() * c.dPdN(row, 0) * v[k * i];
           for (Eigen::Index j = 1; j < k; ++j) {
-            a += ((row == j ? 1.0 : 0.0) - c.dPdN(row, j)) * t[k * i + j];
+            a += ((row == j ? 1.0 : 0.0) - c.dPdN(row, j)) * Sv.t[k * i + j];
             g += p.gamma() * c.dPdN(row, j) * v[k * i + j];
           }
-          out[k * i + row] = a + p.mu()[i] * c.dPdRho[row] * sn[i] + g;
+          out[k * i + row] = a + p.mu()[i] * c.dPdRho[row] * Sv.sn[i] + g;
         }
       }
       return out;
@@ -836,17 +909,44 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
           active.push_back(k * i + c);
       }
     }
+    // S dir, summed from the dual solves made for it: the line search's trial states then
+    // need no solve (S is linear: τ(β + t dir) = τ(β) + t S dir).
+    Image Sdir{Eigen::VectorXd::Zero(size), Eigen::VectorXd::Zero(n)};
     const Eigen::Index m = static_cast<Eigen::Index>(active.size());
     int made = 0;
+    Eigen::VectorXd rhsFull = -s.D;
+    if (dir.squaredNorm() > 0) {
+      Sdir = image(dir);
+      rhsFull -= applyG(dir, Sdir);
+    }
     if (m > 0) {
-      Eigen::VectorXd rhsFull = -s.D;
-      if (dir.squaredNorm() > 0) rhsFull -= applyG(dir);
       Eigen::VectorXd rhs(m);
       for (Eigen::Index a = 0; a < m; ++a) rhs[a] = rhsFull[active[a]];
+      // This step's earlier products whose vectors live on these active components: GMRES
+      // gets them as a recycled space, their G-products from S already known.
+      std::vector<char> isActive(size, 0);
+      for (const Eigen::Index c : active) isActive[c] = 1;
+      std::vector<const Kept*> usable;
+      for (const Kept& kp : recycled) {
+        bool inside = true;
+        for (Eigen::Index c = 0; c < size && inside; ++c) inside = isActive[c] || kp.z[c] == 0;
+        if (inside) usable.push_back(&kp);
+      }
+      const Eigen::Index p0 = static_cast<Eigen::Index>(usable.size());
+      Eigen::MatrixXd U(m, p0), AU(m, p0);
+      for (Eigen::Index j = 0; j < p0; ++j) {
+        const Eigen::VectorXd Gu = applyG(usable[j]->z, usable[j]->Sz);
+        for (Eigen::Index a = 0; a < m; ++a) {
+          U(a, j) = usable[j]->z[active[a]];
+          AU(a, j) = Gu[active[a]];
+        }
+      }
+      std::vector<Kept> calls;  // each product's vector and S of it, in GMRES's order
       auto applyActive = [&](const Eigen::VectorXd& vA) {
         Eigen::VectorXd v = Eigen::VectorXd::Zero(size);
         for (Eigen::Index a = 0; a < m; ++a) v[active[a]] = vA[a];
-        const Eigen::VectorXd Gv = applyG(v);
+        calls.push_back({v, image(v)});
+        const Eigen::VectorXd Gv = applyG(v, calls.back().Sz);
         Eigen::VectorXd out(m);
         for (Eigen::Index a = 0; a < m; ++a) out[a] = Gv[active[a]];
         return out;
@@ -854,16 +954,36 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
       std::function<Eigen::VectorXd(const Eigen::VectorXd&)> precondition;
       if (krylovPreconditioner_ && krylovPreconditioner_->factor(p, s, active))
         precondition = [this](const Eigen::VectorXd& v) { return krylovPreconditioner_->apply(v); };
-      // Inexact Newton: solve as accurately as the current residual warrants.
-      const double eta = std::max(1e-10, std::min(1e-3, p.relativeResidual(s)));
-      const Eigen::VectorXd delta =
+      // Inexact Newton: solve as accurately as the current residual warrants (η ≤ ‖D‖/‖Σ‖,
+      // at most 1e-3), and no more accurately than the stop rule needs: the step leaves about
+      // η‖D‖, so with the residual rule η = 0.1 · tolerance / (‖D‖/‖Σ‖) stops at the next
+      // iterate with a margin of 10 (the last iteration's products fall by about half).
+      const double rel = p.relativeResidual(s);
+      double eta = std::max(1e-10, std::min(1e-3, rel));
+      if (stop_.on == StopRule::On::residual && rel > 0)
+        eta = std::max(eta, std::min(0.1, 0.1 * stop_.tolerance / rel));
+      const GmresAnswer delta =
           gmres(applyActive, rhs, eta, static_cast<int>(std::min<Eigen::Index>(4 * m, 2000)), made,
-                precondition);
-      for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta[a];
+                precondition, U, AU);
+      for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta.x[a];
+      for (std::size_t j = 0; j < calls.size(); ++j) {
+        if (delta.weights[j] == 0) continue;
+        Sdir.t += delta.weights[j] * calls[j].Sz.t;
+        Sdir.sn += delta.weights[j] * calls[j].Sz.sn;
+      }
+      for (Eigen::Index j = 0; j < p0; ++j) {
+        if (delta.recycledWeights[j] == 0) continue;
+        Sdir.t += delta.recycledWeights[j] * usable[j]->Sz.t;
+        Sdir.sn += delta.recycledWeights[j] * usable[j]->Sz.sn;
+      }
+      for (Kept& kp : calls) recycled.push_back(std::move(kp));
+      while (recycled.size() > maxRecycled) recycled.pop_front();
     }
     products.push_back(made);
-    const auto evaluate = [&](const Eigen::VectorXd& b) { return p.evaluate(b); };
-    const bool accepted = lineSearch(p, s, dir, evaluate, lastStep, states);
+    const auto trialAt = [&](double t) {
+      return p.stateFrom(s.beta + t * dir, s.tau + t * Sdir.t, s.sigmaN + t * Sdir.sn);
+    };
+    const bool accepted = lineSearch(p, s, trialAt, lastStep, states);
     r.iterations = it;
     r.history.push_back(record(p, s, it, accepted ? lastStep : 0));
     if (!accepted) {

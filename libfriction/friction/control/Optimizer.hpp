@@ -255,9 +255,10 @@ class SemismoothNewton : public Optimizer {
   OptimizerReport minimizeKrylov(ControlProblem& problem, Eigen::VectorXd& beta);
   /// OptimizerReport::tangentStiffness of the answer s (condensed: S_ is at hand).
   void tangentStiffness(ControlProblem& p, const ControlState& s, OptimizerReport& r) const;
-  bool lineSearch(ControlProblem& p, ControlState& s, const Eigen::VectorXd& dir,
-                  const std::function<ControlState(const Eigen::VectorXd&)>& stateAt,
-                  double& lastStep, std::vector<int>& states);
+  /// Backtracking from s along the trial states trialAt(t), t = 1, 1/2, …
+  bool lineSearch(ControlProblem& p, ControlState& s,
+                  const std::function<ControlState(double)>& trialAt, double& lastStep,
+                  std::vector<int>& states);
   OptimizerReport& finish(ControlProblem& p, const ControlState& s, double lastStep,
                           OptimizerReport& r, Eigen::VectorXd& beta);
 
