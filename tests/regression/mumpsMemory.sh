@@ -17,9 +17,14 @@
 #               written where, and afterwards nothing of the run is left but its outputs: the
 #               user's file stays. On 2 ranks (mpirun) with lowRank 1e-10 too: each rank's
 #               files and folder removed.
+#   outOfCoreAuto  outOfCore auto (the default): in core on this small case, the log saying so
+#               with MUMPS's estimate against the memory available; with outOfCoreAbove 1e6 (1 MB,
+#               below MUMPS's estimate) out of core, the log saying why and what was written, the
+#               same tables to 1e-9 and nothing left behind.
 #   badValues   a tolerance out of (0, 1), an out-of-core folder that does not exist, is a file
-#               or cannot be written, outOfCoreDir without outOfCore: exit 1, the file, line and
-#               key named, nothing written in the case.
+#               or cannot be written, outOfCoreDir with outOfCore no, outOfCoreAbove with
+#               outOfCore yes or ≤ 0, outOfCore neither yes, no nor auto: exit 1, the file, line
+#               and key named, nothing written in the case.
 set -u
 bin=$1 src=$2 work=$3 scenario=$4
 fail() { echo "FAIL [mumpsMemory.$scenario]: $*" >&2; exit 1; }
@@ -100,6 +105,23 @@ case $scenario in
       [[ -z $left ]] || fail "ooc2: left behind on 2 ranks: $left"
     fi
     ;;
+  outOfCoreAuto)
+    reference
+    grep -qE "^Factor: outOfCore auto: in core, MUMPS's in-core estimate [0-9.e+-]+ GB <= [0-9.e+-]+ GB available$" \
+      "$work/full.log" || fail "full: no in-core verdict of outOfCore auto: $(grep -a "^Factor" "$work/full.log")"
+    grep -q "^Out-of-core factor" "$work/full.log" && fail "full: went out of core"
+    variant oocAuto "outOfCoreAbove 1e6;"
+    before=$(listing oocAuto)
+    solve oocAuto
+    grep -qE "^Factor: outOfCore auto: out of core, MUMPS's in-core estimate [0-9.e+-]+ GB > 0.001 GB \(outOfCoreAbove\)$" \
+      "$work/oocAuto.log" || fail "oocAuto: no out-of-core verdict: $(grep -a "^Factor" "$work/oocAuto.log")"
+    grep -qE "^Out-of-core factor: [0-9.e+-]+ GB written to $work/oocAuto/mumpsOutOfCore\.[A-Za-z0-9]{6}" \
+      "$work/oocAuto.log" || fail "oocAuto: no Out-of-core line: $(grep -a "^Out" "$work/oocAuto.log")"
+    grep -q "^Out-of-core factor: 0 GB" "$work/oocAuto.log" && fail "oocAuto: nothing written to disk"
+    python3 "$compare" "$work/full" "$work/oocAuto" || fail "oocAuto: tables differ"
+    left=$(comm -13 <(echo "$before") <(listing oocAuto) | grep -v '^\./1\(/\|$\)\|^\./postProcessing\(/\|$\)')
+    [[ -z $left ]] || fail "oocAuto: left behind: $left"
+    ;;
   badValues)
     n=0
     # bad NAME 'KEYS' LINE_TEXT EXPECTED...: exit 1, file:line and the texts, the case unchanged
@@ -122,7 +144,10 @@ case $scenario in
     bad zero "lowRank 0;" "lowRank" "(0, 1)"
     bad missingDir "outOfCore yes; outOfCoreDir \"nowhere\";" "key 'outOfCoreDir'" "/nowhere' is not an existing folder"
     bad fileAsDir "outOfCore yes; outOfCoreDir \"system/controlDict\";" "key 'outOfCoreDir'" "is not an existing folder"
-    bad dirWithoutOutOfCore "outOfCoreDir \"/tmp\";" "key 'outOfCoreDir'" "needs 'outOfCore yes;'"
+    bad dirWithoutOutOfCore "outOfCore no; outOfCoreDir \"/tmp\";" "key 'outOfCoreDir'" "needs 'outOfCore yes;' or 'outOfCore auto;'"
+    bad aboveWithYes "outOfCore yes; outOfCoreAbove 1e9;" "key 'outOfCoreAbove'" "needs 'outOfCore auto;'"
+    bad aboveNegative "outOfCoreAbove -1;" "outOfCoreAbove"
+    bad outOfCoreWord "outOfCore maybe;" "outOfCore"
     # A folder that cannot be written: /sys refuses even root (EPERM or EROFS).
     if ! mkdir /sys/mumpsMemoryProbe 2>/dev/null; then
       bad unwritable "outOfCore yes; outOfCoreDir \"/sys\";" "key 'outOfCoreDir'" "cannot write in the out-of-core folder '/sys'"

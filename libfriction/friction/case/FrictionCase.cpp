@@ -376,10 +376,12 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
 
 // MUMPS's smaller factors (README "Running in parallel"): a block low-rank factor (`lowRank`,
 // its dropping tolerance) and an out-of-core one (`outOfCore yes`, in `outOfCoreDir`, the case
-// folder by default). The other solvers have neither: a case that asks is told so, not ignored.
-// The folder is checked here, before any work: a run must not fail on it after the assembly.
+// folder by default; `auto`, the default, where MUMPS's in-core estimate exceeds the memory
+// available or `outOfCoreAbove`). The other solvers have neither: a case that asks is told so,
+// not ignored. The folder is checked here, before any work: a run must not fail on it after
+// the assembly.
 void FrictionCase::readMumpsMemory(const Dictionary& sol) {
-  for (const char* key : {"lowRank", "outOfCore", "outOfCoreDir"})
+  for (const char* key : {"lowRank", "outOfCore", "outOfCoreDir", "outOfCoreAbove"})
     if (sol.found(key) && linearSolver_ != "mumps")
       throw InputError(sol.location(key), std::string("key '") + key + "': linear solver '" +
                                               linearSolver_ +
@@ -388,12 +390,25 @@ void FrictionCase::readMumpsMemory(const Dictionary& sol) {
   if (sol.found("lowRank")) {
     mumpsMemory_.lowRank = sol.getScalar("lowRank", Bounds{0.0, 1.0, true, true});
   }
-  const bool outOfCore = sol.getBoolOr("outOfCore", false);
+  if (linearSolver_ != "mumps") return;
+  const std::string word = sol.getWordOr("outOfCore", "auto");
+  if (word != "auto" && word != "yes" && word != "no" && word != "true" && word != "false" &&
+      word != "on" && word != "off")
+    sol.fail("outOfCore", "key 'outOfCore': '" + word + "' is none of auto, yes, no");
+  const bool automatic = word == "auto";
+  const bool outOfCore = automatic || sol.getBool("outOfCore");
+  if (sol.found("outOfCoreAbove") && !automatic)
+    sol.fail("outOfCoreAbove",
+             "key 'outOfCoreAbove' is the in-core estimate above which 'outOfCore auto' goes "
+             "out of core: it needs 'outOfCore auto;' (the default)");
+  mumpsMemory_.outOfCoreAuto = automatic;
+  if (automatic)
+    mumpsMemory_.outOfCoreAbove = sol.getScalarOr("outOfCoreAbove", 0.0, Bounds::positive());
   if (!outOfCore) {
     if (sol.found("outOfCoreDir"))
       sol.fail("outOfCoreDir",
                "key 'outOfCoreDir' is the folder of an out-of-core factor: it "
-               "needs 'outOfCore yes;'");
+               "needs 'outOfCore yes;' or 'outOfCore auto;'");
     return;
   }
   fs::path dir = caseDir_;
@@ -404,6 +419,22 @@ void FrictionCase::readMumpsMemory(const Dictionary& sol) {
   std::error_code ec;
   dir = fs::absolute(dir, ec).lexically_normal();
   const std::string key = sol.found("outOfCoreDir") ? "outOfCoreDir" : "outOfCore";
+  // `auto` by default in the case folder: a folder it cannot use (read-only, a path too long
+  // for MUMPS) keeps the factor in core, and the settings line says so. Asked for by a key, the
+  // folder must do.
+  if (automatic && !sol.found("outOfCoreDir")) {
+    std::string probe = (dir / "mumpsOutOfCore.XXXXXX").string();
+    const bool writable = dir.string().size() <= 200 && ::mkdtemp(probe.data()) != nullptr;
+    if (writable) {
+      ::rmdir(probe.c_str());
+      mumpsMemory_.outOfCoreDir = dir.string();
+    } else {
+      outOfCoreNote_ =
+          ", in core (outOfCore auto: the case folder cannot take an out-of-core "
+          "factor; outOfCoreDir names another)";
+    }
+    return;
+  }
   if (!fs::is_directory(dir, ec))
     sol.fail(key, "key '" + key + "': the out-of-core folder '" + dir.string() +
                       "' is not an existing folder");
@@ -448,7 +479,11 @@ void FrictionCase::printSettings(std::ostream& log) const {
   log << "Elements: P" << order_ << ", linear solver " << linearSolver_;
   if (linearSolver_ == "cholmod") log << ", ordering " << toString(ordering_);
   if (mumpsMemory_.lowRank > 0) log << ", low-rank factor (BLR) at " << mumpsMemory_.lowRank;
-  if (!mumpsMemory_.outOfCoreDir.empty()) log << ", out of core in " << mumpsMemory_.outOfCoreDir;
+  log << outOfCoreNote_;
+  if (!mumpsMemory_.outOfCoreDir.empty())
+    log << (mumpsMemory_.outOfCoreAuto ? ", out of core if its estimate says so (outOfCore auto)"
+                                       : ", out of core")
+        << " in " << mumpsMemory_.outOfCoreDir;
   log << "\n";
   if (fractures_.empty()) log << "Fractures: none (a plain elastic solve, no control loop)\n";
   for (const auto& f : fractures_) {
@@ -952,6 +987,7 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
           << " GB of memory with it, " << a.estimatedInCore / 1e9 << " GB in core full rank\n";
       log << blr.str();
     }
+    if (!a.outOfCoreChoice.empty()) log << "Factor: " << a.outOfCoreChoice << "\n";
     if (!a.outOfCoreDir.empty()) {
       std::ostringstream ooc;
       ooc << std::setprecision(3) << "Out-of-core factor: " << a.outOfCoreBytes / 1e9

@@ -219,6 +219,7 @@ class FrictionCase : private StepHost {
   Ordering ordering_ = Ordering::automatic;  ///< the key `ordering` (cholmod only)
   /// The keys `lowRank`, `outOfCore`, `outOfCoreDir` (mumps only).
   MumpsMemory mumpsMemory_;
+  std::string outOfCoreNote_;  // why outOfCore auto cannot leave the core, for the log
   double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
   bool gammaAbsolute_ = false, warmStart_ = false;
   /// Where gamma and gammaNormal were given (absolute values are checked against E/h once h is

@@ -31,6 +31,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -260,6 +264,7 @@ class MumpsBackend : public SparseFactor::Backend {
     analysis_.analysisSeconds = wallClock() - clock;
     if (id_.INFOG(1) < 0) return verdict();
     reportPhase("ordering and analysis (MUMPS)", analysis_.analysisSeconds);
+    if (!chooseOutOfCore()) return FactorStatus::failed;
     clock = wallClock();
     id_.ICNTL(14) = 30;
     for (int attempt = 0; attempt < 4; ++attempt) {
@@ -301,8 +306,43 @@ class MumpsBackend : public SparseFactor::Backend {
   bool lowRankAndOutOfCore() {
     id_.ICNTL(35) = memory_.lowRank > 0 ? 2 : 0;  // 2: low-rank factors for the solves too
     id_.CNTL(7) = memory_.lowRank;
-    id_.ICNTL(22) = memory_.outOfCoreDir.empty() ? 0 : 1;
-    if (memory_.outOfCoreDir.empty()) return true;
+    const bool now = !memory_.outOfCoreDir.empty() && !memory_.outOfCoreAuto;
+    id_.ICNTL(22) = now ? 1 : 0;
+    return !now || outOfCoreFolder();
+  }
+
+  // outOfCore auto, after the analysis: out of core where MUMPS's in-core estimate exceeds the
+  // limit (MumpsMemory). MUMPS reads ICNTL(22) and the folder at the factorisation. Every rank
+  // takes rank 0's verdict. False, with problem_ set, if the folder cannot be made.
+  bool chooseOutOfCore() {
+    if (!memory_.outOfCoreAuto || memory_.outOfCoreDir.empty()) return true;
+    // INFOG(17), INFOG(37): the in-core estimates [MB] summed over the ranks.
+    const double estimate = 1e6 * (memory_.lowRank > 0 ? id_.INFOG(37) : id_.INFOG(17));
+    double limit = memory_.outOfCoreAbove > 0 ? memory_.outOfCoreAbove : availableMemory();
+    parallel::broadcast(&limit, 1);
+    const bool outOfCore = estimate > limit;
+    std::ostringstream why;
+    why << std::setprecision(3) << "outOfCore auto: " << (outOfCore ? "out of core" : "in core")
+        << ", MUMPS's in-core estimate " << estimate / 1e9 << " GB " << (outOfCore ? "> " : "<= ")
+        << limit / 1e9 << " GB"
+        << (memory_.outOfCoreAbove > 0 ? " (outOfCoreAbove)" : " available");
+    analysis_.outOfCoreChoice = why.str();
+    id_.ICNTL(22) = outOfCore ? 1 : 0;
+    return !outOfCore || outOfCoreFolder();
+  }
+
+  // The memory this machine has for a new allocation [bytes]: MemAvailable of /proc/meminfo
+  // (infinite where it cannot be read: no automatic out of core then).
+  static double availableMemory() {
+    std::ifstream in("/proc/meminfo");
+    std::string key, unit;
+    double kb = 0;
+    while (in >> key >> kb >> unit)
+      if (key == "MemAvailable:") return 1024.0 * kb;
+    return std::numeric_limits<double>::infinity();
+  }
+
+  bool outOfCoreFolder() {
     int failed = 0;
     if (oocFolder_.empty()) {
       std::string name = memory_.outOfCoreDir + "/mumpsOutOfCore.XXXXXX";

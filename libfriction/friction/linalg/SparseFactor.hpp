@@ -69,6 +69,12 @@ struct MumpsMemory {
   /// Out-of-core factor (ICNTL(22) = 1): MUMPS writes the factor's full-rank blocks to files in
   /// this folder (OOC_TMPDIR) and deletes them when the factor is freed. Empty: in core.
   std::string outOfCoreDir;
+  /// With outOfCoreDir: out of core only where MUMPS's estimate of the in-core factorisation
+  /// (after the analysis: INFOG(17), or INFOG(37) with lowRank; all ranks together) exceeds
+  /// outOfCoreAbove bytes, or, with outOfCoreAbove ≤ 0, the memory available when the
+  /// factorisation starts (MemAvailable in /proc/meminfo; rank 0's figure).
+  bool outOfCoreAuto = false;
+  double outOfCoreAbove = 0;
   bool any() const { return lowRank > 0 || !outOfCoreDir.empty(); }
 };
 
@@ -84,6 +90,8 @@ struct FactorAnalysis {
   /// displacement components, SparseFactor.cpp indistinguishableColumns); 0 when it ordered
   /// A's own graph (cholmodDefault) or is unknown.
   double orderedGroups = 0;
+  /// mumps, outOfCore auto: what it chose and why, for the log (empty: not asked).
+  std::string outOfCoreChoice;
   double entries = 0;  ///< nonzeros of the factor L (0: unknown)
   double bytes = 0;    ///< memory of L's values, padding of dense blocks included (0: unknown)
   double flops = 0;    ///< floating-point operations of the numeric factorisation (0: unknown)
