@@ -2,6 +2,7 @@
 // the known answers of docs/method.md §10, the analytic inclined crack, the paper benchmark.
 // References are analytic where one exists; each tolerance says why it is what it is.
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <regex>
 
 #include <algorithm>
@@ -873,8 +874,49 @@ TEST_CASE("a second SIGINT/SIGTERM stops within the step, writes nothing of it, 
   CHECK_THAT(log, Catch::Contains("stop requested"));
   CHECK_THAT(log, Catch::Contains(
                       "SIGTERM, then SIGINT: the step to time 1 was abandoned and not written"));
+  // Where a continuation starts: nothing was written, so from the start.
+  CHECK_THAT(log, Catch::Contains("continue with startFrom latestTime: from time 0, the last one "
+                                  "written\n"));
   CHECK_FALSE(fs::exists(c.dir() / "1"));
   CHECK_FALSE(hasPartialFolder(c.dir()));
+}
+
+TEST_CASE("a run stopped between writes says a continuation computes the unwritten steps again",
+          "[regression][signals]") {
+  // Steps of about 1 s (steepest descent, 4 000 iterations to an unreachable tolerance), none
+  // written before the end (writeInterval 100 of 20 steps): signalled twice in the fourth step
+  // or so, the run has computed steps it never wrote, and startFrom latestTime starts from 0.
+  Case c("paperBenchmark", "paperBenchmark-unwrittenSteps");
+  c.edit("system/frictionSolution", "type +semismoothNewton;", "type steepestDescent;");
+  c.edit("system/frictionSolution", "maxIterations +[0-9]+;", "maxIterations 4000;");
+  c.edit("system/frictionSolution", "tolerance +[^;]+;", "tolerance 1e-300;");
+  c.edit("system/controlDict", "endTime +1;", "endTime 20;");
+  c.edit("system/controlDict", "writeInterval +1;", "writeInterval 100;");
+  const fs::path bin = FRICTION_BIN_DIR;
+  REQUIRE(run("'" + (bin / "splitFractureNodes").string() + "' -case '" + c.dir().string() + "'",
+              c.dir() / "log.splitFractureNodes") == 0);
+  const std::string dir = c.dir().string();
+  const int rc =
+      run("'" + (bin / "frictionSolver").string() + "' -case '" + dir + "' > '" + dir +
+              "/log.frictionSolver' 2>&1 & pid=$!; sleep 3.5; kill -TERM $pid; sleep 0.3; "
+              "kill -INT $pid; for i in $(seq 50); do kill -0 $pid 2>/dev/null || break; "
+              "sleep 0.1; done; kill -0 $pid 2>/dev/null && { echo hung; kill -KILL $pid; }; "
+              "wait $pid",
+          c.dir() / "log.driver");
+  const std::string log = c.log(), driver = readText(c.dir() / "log.driver");
+  INFO(log << driver);
+  CHECK(rc == 5);
+  CHECK(driver.find("hung") == std::string::npos);
+  const std::regex said(
+      "continue with startFrom latestTime: from time 0, the last one written \\(the steps after "
+      "it, up to time ([0-9]+), were not written and are computed again\\)");
+  std::smatch m;
+  REQUIRE(std::regex_search(log, m, said));
+  CHECK(std::stoi(m[1].str()) >= 1);  // at least one step computed and not written
+  // Nothing of the run's steps on disk: no time folder but 0.
+  for (const auto& e : fs::directory_iterator(c.dir()))
+    CHECK_FALSE((e.is_directory() && std::isdigit(e.path().filename().string()[0]) &&
+                 e.path().filename() != "0"));
 }
 
 TEST_CASE("fracture tables: open only where sigma'_n >= 0, tips marked, residual column",

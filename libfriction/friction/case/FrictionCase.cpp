@@ -1146,6 +1146,15 @@ void FrictionCase::findFloatingParts() {
       }
 }
 
+std::string FrictionCase::continuation() const {
+  std::string how = "continue with startFrom latestTime: from time " +
+                    time_->timeName(lastWritten_) + ", the last one written";
+  if (lastTime_ > lastWritten_)
+    how += " (the steps after it, up to time " + time_->timeName(lastTime_) +
+           ", were not written and are computed again)";
+  return how;
+}
+
 std::string FrictionCase::factorFailureDiagnosis() const {
   const SparseFactor& f = system_->factorization();
   std::ostringstream s;
@@ -1883,6 +1892,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
           trimOutputs([](const std::string&) { return false; }, true, log);
       },
       exitStatusOf);
+  lastWritten_ = lastTime_;  // the start (startTime, or the time a restart read)
   if (!time_->precisionNote().empty()) log << time_->precisionNote() << "\n\n";
   if (time_->steps() != TimeControl::Steps::uniform) log << "Time: " << time_->describe() << "\n\n";
   const std::string controlDict = (fs::path(caseDir_) / "system" / "controlDict").string();
@@ -2057,6 +2067,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
         },
         exitStatusOf);
     r.written = writeFolder;
+    if (writeFolder) lastWritten_ = r.time;
     log << "Time = " << time_->timeName(r.time)
         << (r.reused ? "  loads unchanged: previous solution reused" : "") << "  iterations "
         << r.report.iterations << "  backSubstitutions " << r.backSubstitutions

@@ -90,6 +90,9 @@ class FrictionCase : private StepHost {
   std::vector<StepResult> run(std::ostream& log);
   /// Why run() stopped before endTime ("" if it reached it): stopAt or a signal.
   const std::string& stoppedEarly() const { return stoppedEarly_; }
+  /// After a run stopped early: how to continue it, from which time (the last written), and
+  /// what is computed again.
+  std::string continuation() const;
 
   /// Why the factorisation failed, in the user's terms: overflow of the matrix entries (the
   /// case's units), parts of the mesh that nothing holds, or conditioning (the worst
@@ -169,7 +172,8 @@ class FrictionCase : private StepHost {
   /// Per control node: the cells of the split space that hold it, for tips and junction ends
   /// (tipStress); empty for the other nodes. Set by finishSetup().
   std::vector<std::vector<Index>> tipCells_;
-  double lastTime_ = 0;  ///< the time of the last step computed (fractureRows())
+  double lastTime_ = 0;     ///< the time of the last step computed (fractureRows())
+  double lastWritten_ = 0;  ///< the last time folder written (or the start's time)
   /// Judge the state to be written (last_, the primal solve just done): non-finite values
   /// make the step diverged; a residual above the tolerance makes a 'converged' step
   /// inaccurate; a slip larger than the body gets a diagnosis. Sets r's status and note.

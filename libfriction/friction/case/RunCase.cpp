@@ -181,8 +181,7 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
     }
     log << "\n";
     if (!c.stoppedEarly().empty()) {
-      log << "\nStopped early (" << c.stoppedEarly()
-          << "); continue with startFrom latestTime\n\nEnd\n";
+      log << "\nStopped early (" << c.stoppedEarly() << "); " << c.continuation() << "\n\nEnd\n";
       return c.stoppedEarly().rfind("SIG", 0) == 0 ? 5 : 0;
     }
     if (notConverged) {
