@@ -846,26 +846,37 @@ TEST_CASE("a part held only through a frictionless fracture: the slip explodes, 
   CHECK_THAT(log, Catch::Contains("only 'fracture' holds it"));
 }
 
-TEST_CASE("a second SIGINT/SIGTERM stops within the step, writes nothing of it, exit 5",
-          "[regression][signals]") {
-  // A step long enough to signal twice: steepest descent to an unreachable tolerance (about
-  // 10 s for 40000 iterations). The first SIGTERM would wait for the step's end.
-  Case c("paperBenchmark", "paperBenchmark-secondSignal");
+namespace {
+
+// The paper benchmark with steps that take long (steepest descent to an unreachable tolerance,
+// `iterations` of them per step: about 1 s per 4 000), run and sent SIGTERM after `first`
+// seconds and SIGINT `gap` seconds later; SIGKILL 5 s after that if it still runs ('hung' in
+// log.driver, as 'ended before the second signal' if it ended first). Returns its exit status.
+int signalTwice(Case& c, int iterations, double first, double gap) {
   c.edit("system/frictionSolution", "type +semismoothNewton;", "type steepestDescent;");
-  c.edit("system/frictionSolution", "maxIterations +[0-9]+;", "maxIterations 40000;");
+  c.edit("system/frictionSolution", "maxIterations +[0-9]+;",
+         "maxIterations " + std::to_string(iterations) + ";");
   c.edit("system/frictionSolution", "tolerance +[^;]+;", "tolerance 1e-300;");
   const fs::path bin = FRICTION_BIN_DIR;
   REQUIRE(run("'" + (bin / "splitFractureNodes").string() + "' -case '" + c.dir().string() + "'",
               c.dir() / "log.splitFractureNodes") == 0);
   const std::string dir = c.dir().string();
-  // Up to 3 s after the second signal, then SIGKILL (and 'hung' in the log).
-  const int rc =
-      run("'" + (bin / "frictionSolver").string() + "' -case '" + dir + "' > '" + dir +
-              "/log.frictionSolver' 2>&1 & pid=$!; sleep 1; kill -TERM $pid; sleep 0.5; "
-              "kill -0 $pid || echo 'ended before the second signal'; kill -INT $pid; "
-              "for i in $(seq 30); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done; "
-              "kill -0 $pid 2>/dev/null && { echo hung; kill -KILL $pid; }; wait $pid",
-          c.dir() / "log.driver");
+  std::ostringstream script;
+  script << "'" << (bin / "frictionSolver").string() << "' -case '" << dir << "' > '" << dir
+         << "/log.frictionSolver' 2>&1 & pid=$!; sleep " << first << "; kill -TERM $pid; sleep "
+         << gap << "; kill -0 $pid || echo 'ended before the second signal'; kill -INT $pid; "
+         << "for i in $(seq 50); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done; "
+         << "kill -0 $pid 2>/dev/null && { echo hung; kill -KILL $pid; }; wait $pid";
+  return run(script.str(), c.dir() / "log.driver");
+}
+
+}  // namespace
+
+TEST_CASE("a second SIGINT/SIGTERM stops within the step, writes nothing of it, exit 5",
+          "[regression][signals]") {
+  // A step long enough to signal twice (about 10 s): the first SIGTERM would wait for its end.
+  Case c("paperBenchmark", "paperBenchmark-secondSignal");
+  const int rc = signalTwice(c, 40000, 1, 0.5);
   const std::string log = c.log(), driver = readText(c.dir() / "log.driver");
   INFO(log << driver);
   CHECK(rc == 5);
@@ -883,30 +894,18 @@ TEST_CASE("a second SIGINT/SIGTERM stops within the step, writes nothing of it, 
 
 TEST_CASE("a run stopped between writes says a continuation computes the unwritten steps again",
           "[regression][signals]") {
-  // Steps of about 1 s (steepest descent, 4 000 iterations to an unreachable tolerance), none
-  // written before the end (writeInterval 100 of 20 steps): signalled twice in the fourth step
-  // or so, the run has computed steps it never wrote, and startFrom latestTime starts from 0.
+  // Steps of about 1 s, none written before the end (writeInterval 100 of 20 steps): signalled
+  // twice in the fourth step or so, the run has computed steps it never wrote, and startFrom
+  // latestTime starts from 0.
   Case c("paperBenchmark", "paperBenchmark-unwrittenSteps");
-  c.edit("system/frictionSolution", "type +semismoothNewton;", "type steepestDescent;");
-  c.edit("system/frictionSolution", "maxIterations +[0-9]+;", "maxIterations 4000;");
-  c.edit("system/frictionSolution", "tolerance +[^;]+;", "tolerance 1e-300;");
   c.edit("system/controlDict", "endTime +1;", "endTime 20;");
   c.edit("system/controlDict", "writeInterval +1;", "writeInterval 100;");
-  const fs::path bin = FRICTION_BIN_DIR;
-  REQUIRE(run("'" + (bin / "splitFractureNodes").string() + "' -case '" + c.dir().string() + "'",
-              c.dir() / "log.splitFractureNodes") == 0);
-  const std::string dir = c.dir().string();
-  const int rc =
-      run("'" + (bin / "frictionSolver").string() + "' -case '" + dir + "' > '" + dir +
-              "/log.frictionSolver' 2>&1 & pid=$!; sleep 3.5; kill -TERM $pid; sleep 0.3; "
-              "kill -INT $pid; for i in $(seq 50); do kill -0 $pid 2>/dev/null || break; "
-              "sleep 0.1; done; kill -0 $pid 2>/dev/null && { echo hung; kill -KILL $pid; }; "
-              "wait $pid",
-          c.dir() / "log.driver");
+  const int rc = signalTwice(c, 4000, 3.5, 0.3);
   const std::string log = c.log(), driver = readText(c.dir() / "log.driver");
   INFO(log << driver);
   CHECK(rc == 5);
   CHECK(driver.find("hung") == std::string::npos);
+  CHECK(driver.find("ended before") == std::string::npos);
   const std::regex said(
       "continue with startFrom latestTime: from time 0, the last one written \\(the steps after "
       "it, up to time ([0-9]+), were not written and are computed again\\)");

@@ -57,6 +57,18 @@ reference() {
 }
 # Files of the case folder other than its logs (what a run must not leave behind).
 listing() { (cd "$work/$1" && find . ! -name 'log.*' | sort); }
+# wroteInCaseAndCleaned NAME LISTING_BEFORE: the run wrote its factor in a folder of its own in
+# the case (the log's Out-of-core line, more than 0 GB), gave the full-rank run's tables to
+# 1e-9, and left nothing behind but its outputs.
+wroteInCaseAndCleaned() {
+  local name=$1 before=$2 left
+  grep -qE "^Out-of-core factor: [0-9.e+-]+ GB written to $work/$name/mumpsOutOfCore\.[A-Za-z0-9]{6} \(deleted at the end of the run\)" \
+    "$work/$name.log" || fail "$name: no Out-of-core line naming a folder in the case: $(grep -a "^Out" "$work/$name.log")"
+  grep -q "^Out-of-core factor: 0 GB" "$work/$name.log" && fail "$name: nothing written to disk"
+  python3 "$compare" "$work/full" "$work/$name" || fail "$name: tables differ"
+  left=$(comm -13 <(echo "$before") <(listing "$name") | grep -v '^\./1\(/\|$\)\|^\./postProcessing\(/\|$\)')
+  [[ -z $left ]] || fail "$name: left behind: $left"
+}
 
 case $scenario in
   lowRank)
@@ -81,12 +93,7 @@ case $scenario in
     variant ooc "outOfCore yes;"
     before=$(listing ooc)
     solve ooc
-    grep -qE "^Out-of-core factor: [0-9.e+-]+ GB written to $work/ooc/mumpsOutOfCore\.[A-Za-z0-9]{6} \(deleted at the end of the run\)" \
-      "$work/ooc.log" || fail "ooc: no Out-of-core line naming a folder in the case: $(grep -a "^Out" "$work/ooc.log")"
-    grep -q "^Out-of-core factor: 0 GB" "$work/ooc.log" && fail "ooc: nothing written to disk"
-    python3 "$compare" "$work/full" "$work/ooc" || fail "ooc: tables differ"
-    left=$(comm -13 <(echo "$before") <(listing ooc) | grep -v '^\./1\(/\|$\)\|^\./postProcessing\(/\|$\)')
-    [[ -z $left ]] || fail "ooc: left behind: $left"
+    wroteInCaseAndCleaned ooc "$before"
     # A folder given relative to the case, with a user's file in it: only that file remains.
     variant oocDir "outOfCore yes; outOfCoreDir \"scratch\";"
     mkdir "$work/oocDir/scratch" && echo keep >"$work/oocDir/scratch/keep.me"
@@ -115,12 +122,7 @@ case $scenario in
     solve oocAuto
     grep -qE "^Factor: outOfCore auto: out of core, MUMPS's in-core estimate [0-9.e+-]+ GB > 0.001 GB \(outOfCoreAbove\)$" \
       "$work/oocAuto.log" || fail "oocAuto: no out-of-core verdict: $(grep -a "^Factor" "$work/oocAuto.log")"
-    grep -qE "^Out-of-core factor: [0-9.e+-]+ GB written to $work/oocAuto/mumpsOutOfCore\.[A-Za-z0-9]{6}" \
-      "$work/oocAuto.log" || fail "oocAuto: no Out-of-core line: $(grep -a "^Out" "$work/oocAuto.log")"
-    grep -q "^Out-of-core factor: 0 GB" "$work/oocAuto.log" && fail "oocAuto: nothing written to disk"
-    python3 "$compare" "$work/full" "$work/oocAuto" || fail "oocAuto: tables differ"
-    left=$(comm -13 <(echo "$before") <(listing oocAuto) | grep -v '^\./1\(/\|$\)\|^\./postProcessing\(/\|$\)')
-    [[ -z $left ]] || fail "oocAuto: left behind: $left"
+    wroteInCaseAndCleaned oocAuto "$before"
     ;;
   badValues)
     n=0
