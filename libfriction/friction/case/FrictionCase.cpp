@@ -605,6 +605,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     facts.fractureNodes = system_->size();
     facts.dimension = split_.mesh.dim;
     facts.dofs = system_->unsplitSpace().numDofs();
+    facts.elementOrder = order_;
     if (opening_)
       facts.needsDenseS = "fractures that open (contact unilateral)";
     else if (weakening_)

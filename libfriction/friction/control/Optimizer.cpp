@@ -570,7 +570,14 @@ std::string SemismoothNewton::chooseFor(const CaseFacts& facts) {
   automatic_ = false;  // chosen once: a second call changes nothing
   const Eigen::Index threshold = krylovFromNodes(facts.dimension, facts.dofs);
   const bool large = facts.fractureNodes >= threshold;
-  variant_ = large && facts.needsDenseS.empty() ? Variant::krylov : Variant::condensed;
+  // P2 in 3D: the tractions come from the consistent mass of the fault's triangles
+  // (FractureSystem::buildRecovery), which spreads S beyond the probed neighbourhood, and the
+  // probing preconditioner no longer holds: on the 1 038-node P2 penny (75 657 dofs) GMRES took
+  // 1 400 products for 10⁻³ in the first Newton iteration, and the step ran > 10 min where
+  // condensed takes 2 s (README "Newton's variant by fault size").
+  const bool krylovFits = facts.dimension == 2 || facts.elementOrder == 1;
+  variant_ =
+      large && krylovFits && facts.needsDenseS.empty() ? Variant::krylov : Variant::condensed;
   std::ostringstream line;
   line << "Newton variant: " << (variant_ == Variant::krylov ? "krylov" : "condensed")
        << " (variant auto: " << facts.fractureNodes << " fracture control nodes "
@@ -579,6 +586,9 @@ std::string SemismoothNewton::chooseFor(const CaseFacts& facts) {
   if (facts.dimension == 3) line << " at " << facts.dofs << " dofs";
   if (large && !facts.needsDenseS.empty())
     line << "; condensed all the same: the dense S is needed for " << facts.needsDenseS;
+  else if (large && !krylovFits)
+    line << "; condensed all the same: krylov's probed preconditioner does not hold for P2 "
+            "faults in 3D";
   line << ")";
   return line.str();
 }

@@ -70,6 +70,7 @@ struct CaseFacts {
   /// Why the case needs the dense S (fractures that open, weakening friction, quasiDynamic
   /// time integration), for the log; empty when it does not.
   std::string needsDenseS;
+  int elementOrder = 1;  ///< 1 (P1) or 2 (P2)
 };
 
 /// Settings every optimizer shares (keys of the case's 'solver' dictionary).

@@ -240,6 +240,16 @@ TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unle
                                                          "needed for ") +
                                              why + ")"));
       }
+      // P2: krylov in 2D; in 3D condensed, its probed preconditioner does not hold there.
+      auto p2 = read(text);
+      const std::string lineP2 = p2->chooseFor({10 * t, dim, dofs, "", 2});
+      if (dim == 2) {
+        CHECK(variantOf(*p2) == V::krylov);
+      } else {
+        CHECK(variantOf(*p2) == V::condensed);
+        CHECK_THAT(lineP2, Catch::EndsWith("; condensed all the same: krylov's probed "
+                                           "preconditioner does not hold for P2 faults in 3D)"));
+      }
     }
     // A variant given, or the condensed variant's own key: nothing left to choose.
     for (const char* text :
