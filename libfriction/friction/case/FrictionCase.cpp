@@ -297,6 +297,15 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
                          toString(ordering_) +
                          "' needs 'linearSolver cholmod' (or use 'ordering auto')");
   readMumpsMemory(sol);
+  // The iterative solver's stopping rule: a relative residual ‖b − A x‖/‖b‖.
+  if (sol.found("iterativeTolerance") && linearSolver_ != "amg")
+    throw InputError(sol.location("iterativeTolerance"),
+                     "key 'iterativeTolerance' is where the solves of an iterative linear solver "
+                     "stop; linear solver '" +
+                         linearSolver_ + "' is direct: it needs 'linearSolver amg'");
+  if (linearSolver_ == "amg")
+    iterativeTolerance_ =
+        sol.getScalarOr("iterativeTolerance", 1e-10, Bounds{0.0, 1e-2, true, false});
   // Several ranks share the factorisation: only the mumps solver can.
   if (parallel::size() > 1 && linearSolver_ != "mumps")
     throw InputError(sol.found("linearSolver") ? sol.location("linearSolver") : sol.location(),
@@ -478,6 +487,7 @@ void FrictionCase::printSettings(std::ostream& log) const {
   }
   log << "Elements: P" << order_ << ", linear solver " << linearSolver_;
   if (linearSolver_ == "cholmod") log << ", ordering " << toString(ordering_);
+  if (linearSolver_ == "amg") log << ", iterativeTolerance " << iterativeTolerance_;
   if (mumpsMemory_.lowRank > 0) log << ", low-rank factor (BLR) at " << mumpsMemory_.lowRank;
   log << outOfCoreNote_;
   if (!mumpsMemory_.outOfCoreDir.empty())
@@ -573,6 +583,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       [&] {
         Stopwatch clock;
         system_ = std::make_unique<FractureSystem>(split_, order_, *materials_);
+        system_->setIterativeTolerance(iterativeTolerance_);
         logPhase(log,
                  "finite-element spaces and the fractures' frames (" +
                      std::to_string(system_->unsplitSpace().numDofs()) + " dofs, P" +
@@ -606,6 +617,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     facts.dimension = split_.mesh.dim;
     facts.dofs = system_->unsplitSpace().numDofs();
     facts.elementOrder = order_;
+    if (linearSolver_ == "amg") facts.iterativeSolver = linearSolver_;
     if (opening_)
       facts.needsDenseS = "fractures that open (contact unilateral)";
     else if (weakening_)
@@ -959,6 +971,10 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
         << " on rank 0); the factorisation adds them\n";
   log << "Factorisation: " << toString(status) << " (" << f.backend() << ", "
       << std::setprecision(3) << f.factorSeconds() << " s)\n";
+  // An iterative solver: what it set up and what its check solve measured.
+  if (!f.analysis().iterativeNote.empty()) log << f.analysis().iterativeNote << "\n";
+  if (!f.analysis().problem.empty() && f.iterative())
+    log << "Linear solver amg: " << f.analysis().problem << "\n";
   // What the factor costs: at 10⁶ unknowns in 3D it sets the run's time and memory.
   if (const FactorAnalysis& a = f.analysis(); a.entries > 0) {
     std::ostringstream line;
@@ -1008,7 +1024,7 @@ void FrictionCase::finishSetup(FactorStatus status, std::ostream& log) {
                       (f.schurFallbackReason().empty()
                            ? f.backend() + " cannot deliver it with the factorisation"
                            : f.schurFallbackReason()) +
-                      "), " + formatNumber(f.schurSeconds()) + " s")
+                      "), " + formatSeconds(f.schurSeconds()))
         << "\n";
   if (!optimizerChoice_.empty()) log << optimizerChoice_ << "\n";
   printSettings(log);
@@ -2225,6 +2241,19 @@ void FrictionCase::judgeStep(StepResult& r) const {
       << balanceTolerance << ": " << timeIntegrator_->balanceNote();
     addNote(s.str());
   } else if (r.report.status == OptimizerStatus::converged && rule.on == StopRule::On::residual &&
+             r.relResidual > balanceTolerance && sys.factorization().iterative()) {
+    // The solves' own residual bounds what the state written can reach.
+    r.report.status = OptimizerStatus::inaccurate;
+    std::ostringstream s;
+    s << std::setprecision(3) << "the iteration reached |D|/|Sigma| "
+      << (r.report.history.empty() ? 0.0 : r.report.history.back().relResidual)
+      << " but the state written has " << r.relResidual << " > tolerance " << rule.tolerance
+      << ": linear solver amg solves only to iterativeTolerance " << iterativeTolerance_
+      << " (its check solve's forward error "
+      << sys.factorization().analysis().iterativeForwardError
+      << "); tighten iterativeTolerance, or loosen the tolerance";
+    addNote(s.str());
+  } else if (r.report.status == OptimizerStatus::converged && rule.on == StopRule::On::residual &&
              r.relResidual > balanceTolerance) {
     r.report.status = OptimizerStatus::inaccurate;
     std::ostringstream s;
@@ -2238,6 +2267,18 @@ void FrictionCase::judgeStep(StepResult& r) const {
       // A P2 run is told nothing about elementOrder 2.
       << (order_ == 1 ? "use elementOrder 2, " : "") << "or remesh without slivers";
     addNote(s.str());
+  }
+  // 2a. An iterative linear solver whose solves stopped short of their tolerance in this step:
+  // what was solved with them is not as accurate as the stop rule says.
+  if (sys.factorization().iterative()) {
+    const long unconverged = sys.factorization().currentAnalysis().iterativeUnconverged;
+    if (unconverged > iterativeUnconvergedSeen_ && r.report.status == OptimizerStatus::converged) {
+      r.report.status = OptimizerStatus::inaccurate;
+      addNote(std::to_string(unconverged - iterativeUnconvergedSeen_) +
+              " solve(s) of linear solver amg stopped at the iteration limit short of "
+              "iterativeTolerance: loosen it, or use a direct linear solver");
+    }
+    iterativeUnconvergedSeen_ = unconverged;
   }
   // 2b. Friction that weakens: a converged state whose slipping patch has no positive tangent
   // stiffness is an unstable equilibrium, and an iteration that found none while weakening

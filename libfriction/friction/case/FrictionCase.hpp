@@ -223,6 +223,10 @@ class FrictionCase : private StepHost {
   Ordering ordering_ = Ordering::automatic;  ///< the key `ordering` (cholmod only)
   /// The keys `lowRank`, `outOfCore`, `outOfCoreDir` (mumps only).
   MumpsMemory mumpsMemory_;
+  double iterativeTolerance_ = 1e-10;  ///< linearSolver amg: CG's relative residual
+  /// linearSolver amg: the solves that stopped short of the tolerance, as of the last step
+  /// judged (judgeStep marks a step with more inaccurate).
+  mutable long iterativeUnconvergedSeen_ = 0;
   std::string outOfCoreNote_;  // why outOfCore auto cannot leave the core, for the log
   double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
   bool gammaAbsolute_ = false, warmStart_ = false;

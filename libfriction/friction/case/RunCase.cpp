@@ -180,6 +180,20 @@ int runCase(const std::string& caseDir, const RunCaseOptions& options, std::ostr
           << parallel::size();
     }
     log << "\n";
+    // An iterative solver: what its solves took and how close they came.
+    if (f.iterative()) {
+      const FactorAnalysis a = f.currentAnalysis();
+      log << "Linear solver amg: " << a.iterativeSolves << " solves (the check included), "
+          << a.iterativeIterations << " CG iterations ("
+          << (a.iterativeSolves > 0 ? a.iterativeIterations / a.iterativeSolves : 0)
+          << " per solve), the largest relative residual at a stop " << std::setprecision(3)
+          << a.iterativeWorstResidual << "; "
+          << (a.iterativeUnconverged == 0
+                  ? std::string("every solve reached its tolerance")
+                  : std::to_string(a.iterativeUnconverged) +
+                        " solve(s) stopped short of the tolerance at the iteration limit")
+          << "\n";
+    }
     if (!c.stoppedEarly().empty()) {
       log << "\nStopped early (" << c.stoppedEarly() << "); " << c.continuation() << "\n\nEnd\n";
       return c.stoppedEarly().rfind("SIG", 0) == 0 ? 5 : 0;

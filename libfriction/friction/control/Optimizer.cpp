@@ -577,7 +577,10 @@ std::string SemismoothNewton::chooseFor(const CaseFacts& facts) {
   if (!automatic_) return "";
   automatic_ = false;  // chosen once: a second call changes nothing
   const Eigen::Index threshold = krylovFromNodes(facts.dimension, facts.dofs);
-  const bool large = facts.fractureNodes >= threshold;
+  // An iterative linear solver has no factor to take S from: forming it costs one solve per
+  // jump unknown, krylov's products a few dozen, whatever the size.
+  const bool iterative = !facts.iterativeSolver.empty();
+  const bool large = iterative || facts.fractureNodes >= threshold;
   // P2 in 3D: the tractions come from the consistent mass of the fault's triangles
   // (FractureSystem::buildRecovery), which spreads S beyond the probed neighbourhood, and the
   // probing preconditioner no longer holds: on the 1 038-node P2 penny (75 657 dofs) GMRES took
@@ -589,9 +592,12 @@ std::string SemismoothNewton::chooseFor(const CaseFacts& facts) {
   std::ostringstream line;
   line << "Newton variant: " << (variant_ == Variant::krylov ? "krylov" : "condensed")
        << " (variant auto: " << facts.fractureNodes << " fracture control nodes "
-       << (large ? ">= " : "< ") << threshold << ", the " << facts.dimension
-       << "D threshold for krylov";
+       << (facts.fractureNodes >= threshold ? ">= " : "< ") << threshold << ", the "
+       << facts.dimension << "D threshold for krylov";
   if (facts.dimension == 3) line << " at " << facts.dofs << " dofs";
+  if (iterative && facts.fractureNodes < threshold && variant_ == Variant::krylov)
+    line << "; krylov all the same: linear solver " << facts.iterativeSolver
+         << " has no factor, so S would cost one solve per jump unknown";
   if (large && !facts.needsDenseS.empty())
     line << "; condensed all the same: the dense S is needed for " << facts.needsDenseS;
   else if (large && !krylovFits)

@@ -71,6 +71,9 @@ struct CaseFacts {
   /// time integration), for the log; empty when it does not.
   std::string needsDenseS;
   int elementOrder = 1;  ///< 1 (P1) or 2 (P2)
+  /// The linear solver when it is iterative (amg: no factor, every solve an iteration), for
+  /// the log; empty for a direct one. Krylov then needs far fewer solves than forming S.
+  std::string iterativeSolver;
 };
 
 /// Settings every optimizer shares (keys of the case's 'solver' dictionary).

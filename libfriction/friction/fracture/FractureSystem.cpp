@@ -842,6 +842,16 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
          " dofs) and the Dirichlet conditions taken out");
   factor_->setSummedOverRanks(own);
   factor_->setPhaseReport(phases);
+  if (factor_->iterative()) {
+    // The component of each free dof (interleaved: dof = dim · node + component), for a vector
+    // multigrid hierarchy.
+    std::vector<int> components;
+    components.reserve(static_cast<std::size_t>(reduced_->matrix().rows()));
+    for (Index d = 0; d < unsplitSpace_->numDofs(); ++d)
+      if (!dirichlet_->isFixed(d)) components.push_back(static_cast<int>(d % dim_));
+    factor_->setComponents(components, dim_);
+    factor_->setIterativeTolerance(iterativeTolerance_);
+  }
   if (withInterfaceOperator && !jumpDofs_.empty())
     return factor_->factorWithSchur(reduced_->matrix(), borderB_, borderC_);
   return factor_->factor(reduced_->matrix());

@@ -96,6 +96,9 @@ class FractureSystem : public SlipResponse {
                       const PhaseReport& phases = {}, Ordering ordering = Ordering::automatic,
                       const MumpsMemory& memory = {});
   const SparseFactor& factorization() const { return *factor_; }
+  /// The relative residual at which an iterative linear solver's solves stop (linearSolver
+  /// amg, key iterativeTolerance); before factor().
+  void setIterativeTolerance(double tolerance) { iterativeTolerance_ = tolerance; }
 
   /// This step's data: the load vector on the SPLIT space (tractions, body force) [N], and
   /// the accumulated slip s_n per control node [m] (k per node, SlipResponse.hpp). Dirichlet
@@ -232,6 +235,7 @@ class FractureSystem : public SlipResponse {
   std::unique_ptr<DirichletConditions> dirichlet_;
   std::unique_ptr<ReducedSystem> reduced_;
   std::unique_ptr<SparseFactor> factor_;
+  double iterativeTolerance_ = 1e-10;
   Index ownCells_ = 0;
 
   std::vector<ControlNode> nodes_;

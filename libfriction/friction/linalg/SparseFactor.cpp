@@ -763,6 +763,9 @@ const BackendEntry kBackends[] = {
 #ifdef FRICTION_WITH_MUMPS
     {"mumps", makeMumpsBackend},
 #endif
+#ifdef FRICTION_WITH_HYPRE
+    {"amg", makeAmgBackend},
+#endif
 };
 
 // One BLAS thread for a single right-hand side. A back-substitution with one vector is
@@ -876,10 +879,17 @@ void SparseFactor::requireInBuild(const std::string& backend, const SourceLocati
                      "-DFRICTION_MUMPS=ON and MUMPS and MPI installed (libmumps-dev, "
                      "mpi-default-dev); valid types are: " +
                          joinWords(backendNames()));
-#else
+#endif
+#ifndef FRICTION_WITH_HYPRE
+  if (backend == "amg")
+    throw InputError(where,
+                     "linear solver 'amg' is not in this build: configure with "
+                     "-DFRICTION_HYPRE=ON and hypre and MPI installed (libhypre-dev, "
+                     "mpi-default-dev); valid types are: " +
+                         joinWords(backendNames()));
+#endif
   (void)backend;
   (void)where;
-#endif
 }
 
 SparseFactor::SparseFactor(const std::string& backend, const SourceLocation& where)
@@ -898,6 +908,25 @@ SparseFactor::SparseFactor(SparseFactor&&) noexcept = default;
 SparseFactor& SparseFactor::operator=(SparseFactor&&) noexcept = default;
 
 FactorStatus SparseFactor::factor(const SparseMatrix& A) { return factorImpl(A, nullptr, nullptr); }
+
+void SparseFactor::setComponents(const std::vector<int>& components, int count) {
+  impl_->setComponents(components, count);
+}
+
+void SparseFactor::setIterativeTolerance(double tolerance) {
+  impl_->setIterativeTolerance(tolerance);
+}
+
+FactorAnalysis SparseFactor::currentAnalysis() const {
+  FactorAnalysis a = analysis_;
+  if (!iterative()) return a;
+  const FactorAnalysis now = impl_->analysis();
+  a.iterativeSolves = now.iterativeSolves;
+  a.iterativeIterations = now.iterativeIterations;
+  a.iterativeUnconverged = now.iterativeUnconverged;
+  a.iterativeWorstResidual = now.iterativeWorstResidual;
+  return a;
+}
 
 void SparseFactor::setPhaseReport(PhaseReport report) { phaseReport_ = std::move(report); }
 

@@ -7,6 +7,10 @@
 //                   of them, or CHOLMOD's own strategy). The default.
 //   simplicialLDLT  Eigen's SimplicialLDLT with AMD ordering: no external library; slower on
 //                   large 2D problems, kept as a fallback and a cross-check.
+//   amg             conjugate gradients preconditioned by hypre's BoomerAMG, set up once: no
+//                   factor, so memory linear in the unknowns; every solve is an iteration to a
+//                   relative residual (setIterativeTolerance). Only in builds with
+//                   FRICTION_HYPRE (README "The largest 3D models").
 //   mumps           MUMPS (multifrontal LDLᵀ, symmetric mode) shared by the ranks of an MPI run
 //                   (frictionSolver -parallel); with one rank, the same solver serially. Only
 //                   in builds with FRICTION_MUMPS (README "Running in parallel").
@@ -125,8 +129,19 @@ struct FactorAnalysis {
   double estimatedInCore = 0;
   double estimatedOutOfCore = 0;
   double estimatedLowRank = 0;
-  /// Why the backend failed, where it says (mumps: out of memory, the out-of-core folder).
+  /// Why the backend failed, where it says (mumps: out of memory, the out-of-core folder; amg:
+  /// CG's tolerance not reached, a singular matrix).
   std::string problem;
+  /// Iterative backends (amg): what was set up and what its check solve measured, for the log
+  /// (empty for direct backends); the check's forward error ‖x − r‖/‖r‖; and, so far in the
+  /// run, the solves, their CG iterations, those that stopped short of the tolerance and the
+  /// largest relative residual any solve ended with.
+  std::string iterativeNote;
+  double iterativeForwardError = 0;
+  long iterativeSolves = 0;
+  long iterativeIterations = 0;
+  long iterativeUnconverged = 0;
+  double iterativeWorstResidual = 0;
 };
 
 class SparseFactor {
@@ -217,6 +232,15 @@ class SparseFactor {
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
   /// X = A⁻¹ B, one back-substitution per column.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B);
+
+  /// The displacement component (0 … count − 1) of each row of the next matrices, and the
+  /// relative residual at which an iterative backend's solves stop (amg; ignored by the direct
+  /// ones). Whether the backend is iterative: iterative().
+  void setComponents(const std::vector<int>& components, int count);
+  void setIterativeTolerance(double tolerance);
+  bool iterative() const { return backend_ == "amg"; }
+  /// The analysis with the iterative backend's counts so far (solves, iterations).
+  FactorAnalysis currentAnalysis() const;
 
   /// MUMPS's low-rank or out-of-core factor for the next factorisations (mumps only: asserted;
   /// the case refuses the keys for the other solvers).

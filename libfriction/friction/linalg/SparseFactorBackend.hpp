@@ -47,6 +47,11 @@ class SparseFactor::Backend {
   /// mumps: a low-rank or out-of-core factor (SparseFactor::setMumpsMemory); false: not taken.
   virtual bool setMumpsMemory(const MumpsMemory& /*memory*/) { return false; }
   virtual void setOrdering(Ordering /*ordering*/, const std::string& /*choice*/) {}
+  /// Iterative backends (amg): the displacement component of each unknown (0 … count − 1),
+  /// for a vector multigrid hierarchy, and the relative residual its solves stop at. Direct
+  /// backends ignore both.
+  virtual void setComponents(const std::vector<int>& /*components*/, int /*count*/) {}
+  virtual void setIterativeTolerance(double /*tolerance*/) {}
   /// The ordering and size of the last analysis, as far as the backend knows them.
   virtual FactorAnalysis analysis() const { return {}; }
   /// Told each phase of a factorisation as it ends (SparseFactor::setPhaseReport); a backend
@@ -64,6 +69,11 @@ class SparseFactor::Backend {
 /// METIS's nested-dissection order of the symmetric A (its lower triangle's pattern), by
 /// CHOLMOD: order[k] is the row eliminated k-th. False if CHOLMOD could not order (or A is empty).
 bool metisOrdering(const SparseMatrix& A, std::vector<long>& order);
+
+#ifdef FRICTION_WITH_HYPRE
+/// hypre's BoomerAMG with conjugate gradients (linalg/AmgBackend.cpp): one rank.
+std::unique_ptr<SparseFactor::Backend> makeAmgBackend();
+#endif
 
 #ifdef FRICTION_WITH_MUMPS
 /// MUMPS (linalg/MumpsBackend.cpp): shared by the ranks of a run.

@@ -51,6 +51,21 @@ std::unique_ptr<Optimizer> make(const std::string& setting, int iterationLimit) 
 
 }  // namespace
 
+namespace {
+// The case's facts for SemismoothNewton::chooseFor.
+friction::CaseFacts facts(Eigen::Index nodes, int dim, Eigen::Index dofs, const std::string& why,
+                          int order = 1, const std::string& iterative = "") {
+  friction::CaseFacts f;
+  f.fractureNodes = nodes;
+  f.dimension = dim;
+  f.dofs = dofs;
+  f.needsDenseS = why;
+  f.elementOrder = order;
+  f.iterativeSolver = iterative;
+  return f;
+}
+}  // namespace
+
 TEST_CASE("the optimizer table lists the paper's methods and the project's own",
           "[control][optimizer]") {
   // The loops below run over this table: were it empty, they would pass without a test.
@@ -213,13 +228,13 @@ TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unle
       CHECK(at->wantsInterfaceOperator());
       CHECK(at->handlesOpening());
       CHECK(at->handlesWeakening());
-      const std::string lineBelow = below->chooseFor({t - 1, dim, dofs, ""});
+      const std::string lineBelow = below->chooseFor(facts(t - 1, dim, dofs, ""));
       CHECK(variantOf(*below) == V::condensed);
       CHECK(below->wantsInterfaceOperator());
       CHECK(lineBelow == "Newton variant: condensed (variant auto: " + std::to_string(t - 1) +
                              " fracture control nodes < " + std::to_string(t) + ", the " +
                              std::to_string(dim) + "D threshold for krylov" + at3D + ")");
-      const std::string lineAt = at->chooseFor({t, dim, dofs, ""});
+      const std::string lineAt = at->chooseFor(facts(t, dim, dofs, ""));
       CHECK(variantOf(*at) == V::krylov);
       CHECK_FALSE(at->wantsInterfaceOperator());
       CHECK_FALSE(at->handlesOpening());
@@ -227,12 +242,12 @@ TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unle
                           " fracture control nodes >= " + std::to_string(t) + ", the " +
                           std::to_string(dim) + "D threshold for krylov" + at3D + ")");
       // Chosen once: another call changes nothing and says nothing.
-      CHECK(at->chooseFor({1, dim, dofs, ""}).empty());
+      CHECK(at->chooseFor(facts(1, dim, dofs, "")).empty());
       CHECK(variantOf(*at) == V::krylov);
       for (const char* why : {"fractures that open (contact unilateral)", "law slipWeakening",
                               "timeIntegration quasiDynamic"}) {
         auto o = read(text);
-        const std::string line = o->chooseFor({10 * t, dim, dofs, why});
+        const std::string line = o->chooseFor(facts(10 * t, dim, dofs, why));
         CHECK(variantOf(*o) == V::condensed);
         CHECK(o->wantsInterfaceOperator());
         CHECK_THAT(line, Catch::StartsWith("Newton variant: condensed") &&
@@ -240,9 +255,22 @@ TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unle
                                                          "needed for ") +
                                              why + ")"));
       }
+      // An iterative linear solver (amg): krylov at any size, for it has no factor to take S
+      // from; condensed still where the dense S is needed.
+      auto it = read(text);
+      const std::string lineIt = it->chooseFor(facts(t - 1, dim, dofs, "", 1, "amg"));
+      CHECK(variantOf(*it) == V::krylov);
+      CHECK_THAT(lineIt,
+                 Catch::StartsWith("Newton variant: krylov") &&
+                     Catch::Contains("< " + std::to_string(t)) &&
+                     Catch::EndsWith("; krylov all the same: linear solver amg has no "
+                                     "factor, so S would cost one solve per jump unknown)"));
+      auto itOpen = read(text);
+      itOpen->chooseFor(facts(1, dim, dofs, "fractures that open (contact unilateral)", 1, "amg"));
+      CHECK(variantOf(*itOpen) == V::condensed);
       // P2: krylov in 2D; in 3D condensed, its probed preconditioner does not hold there.
       auto p2 = read(text);
-      const std::string lineP2 = p2->chooseFor({10 * t, dim, dofs, "", 2});
+      const std::string lineP2 = p2->chooseFor(facts(10 * t, dim, dofs, "", 2));
       if (dim == 2) {
         CHECK(variantOf(*p2) == V::krylov);
       } else {
@@ -257,13 +285,13 @@ TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unle
           "type semismoothNewton; interfaceOperator blockSolves;",
           "type semismoothNewton; variant auto; interfaceOperator dualSolves;"}) {
       auto o = read(text);
-      CHECK(o->chooseFor({10 * t, dim, dofs, ""}).empty());
+      CHECK(o->chooseFor(facts(10 * t, dim, dofs, "")).empty());
       CHECK(variantOf(*o) == V::condensed);
     }
     auto k = read("type semismoothNewton; variant krylov;");
-    CHECK(k->chooseFor({1, dim, dofs, "law slipWeakening"}).empty());
+    CHECK(k->chooseFor(facts(1, dim, dofs, "law slipWeakening")).empty());
     CHECK(variantOf(*k) == V::krylov);
-    CHECK(read("type lbfgs;")->chooseFor({10 * t, dim, dofs, ""}).empty());
+    CHECK(read("type lbfgs;")->chooseFor(facts(10 * t, dim, dofs, "")).empty());
   }
   // The krylov variant's keys with auto: refused, naming the key and the way out.
   for (const char* key : {"preconditioner probing;", "probingDistance 2;"})

@@ -34,7 +34,8 @@ Eigen::SparseMatrix<double> spdMatrix(Eigen::SparseMatrix<double>* full = nullpt
 /// The relative pivot test passed: minPivotRatio above the tolerance, or NaN for a backend
 /// that judges its pivots itself (mumps, which then reported ok).
 bool pivotsPass(const SparseFactor& factor) {
-  if (factor.backend() == "mumps") return factor.ok() && std::isnan(factor.minPivotRatio());
+  if (factor.backend() == "mumps" || factor.iterative())
+    return factor.ok() && std::isnan(factor.minPivotRatio());
   return factor.minPivotRatio() > factor.pivotTolerance();
 }
 
@@ -52,13 +53,24 @@ double distinctColumns(const Eigen::SparseMatrix<double>& A) {
   return static_cast<double>(patterns.size());
 }
 
+/// CG's relative residual for the iterative backend (amg) in these tests: tighter than the
+/// default 1e-10, so that the direct backends' checks apply with bounds scaled by it.
+constexpr double amgTolerance = 1e-12;
+
+/// A backend by name, the iterative one set to amgTolerance.
+SparseFactor backendNamed(const std::string& name) {
+  SparseFactor factor(name);
+  factor.setIterativeTolerance(amgTolerance);
+  return factor;
+}
+
 }  // namespace
 
 TEST_CASE("linalg SparseFactor backends solve an SPD system to round-off", "[linalg]") {
   const std::string backend = GENERATE(from_range(SparseFactor::backendNames()));
   CAPTURE(backend);
   const Eigen::SparseMatrix<double> A = spdMatrix();
-  SparseFactor factor(backend);
+  SparseFactor factor = backendNamed(backend);
   REQUIRE(factor.backend() == backend);
   REQUIRE_FALSE(factor.ok());
   REQUIRE(factor.numFactorizations() == 0);
@@ -82,10 +94,26 @@ TEST_CASE("linalg SparseFactor backends solve an SPD system to round-off", "[lin
   // is at most cond(A) ≈ 1e4 (h = 1/12, P2) times that: 1e-10 relative.
   const double normA = Eigen::MatrixXd(A).cwiseAbs().rowwise().sum().maxCoeff();
   const Eigen::VectorXd x = factor.solve(Eigen::VectorXd(B.col(0)));
-  REQUIRE((A * x - B.col(0)).cwiseAbs().maxCoeff() <= 1e-14 * normA * x.cwiseAbs().maxCoeff());
-  REQUIRE((x - X.col(0)).cwiseAbs().maxCoeff() <= 1e-10);
-  const Eigen::MatrixXd Y = factor.solve(B);
-  REQUIRE((Y - X).cwiseAbs().maxCoeff() <= 1e-10);
+  if (factor.iterative()) {
+    // CG stops at ‖A x − b‖ ≤ tol ‖b‖ (its recursively updated residual: the true one may
+    // drift by a few ulps of ‖A‖ ‖x‖ more, hence the factor 2); the forward error is then at
+    // most cond(A) ≈ 1e4 times that, ×10 for the max norm against the 2-norm.
+    REQUIRE((A * x - B.col(0)).norm() <= 2 * amgTolerance * B.col(0).norm());
+    REQUIRE((x - X.col(0)).cwiseAbs().maxCoeff() <= 1e5 * amgTolerance * X.col(0).norm());
+    const Eigen::MatrixXd Y = factor.solve(B);
+    for (Eigen::Index c = 0; c < 3; ++c)
+      REQUIRE((Y.col(c) - X.col(c)).cwiseAbs().maxCoeff() <= 1e5 * amgTolerance * X.col(c).norm());
+    // The check solve of the setup measured the same kind of error.
+    REQUIRE(factor.analysis().iterativeForwardError > 0);
+    REQUIRE(factor.analysis().iterativeForwardError <= 1e5 * amgTolerance);
+    REQUIRE(factor.currentAnalysis().iterativeSolves == 1 + 1 + 3);  // the check, 1, 3
+    REQUIRE(factor.currentAnalysis().iterativeUnconverged == 0);
+  } else {
+    REQUIRE((A * x - B.col(0)).cwiseAbs().maxCoeff() <= 1e-14 * normA * x.cwiseAbs().maxCoeff());
+    REQUIRE((x - X.col(0)).cwiseAbs().maxCoeff() <= 1e-10);
+    const Eigen::MatrixXd Y = factor.solve(B);
+    REQUIRE((Y - X).cwiseAbs().maxCoeff() <= 1e-10);
+  }
   REQUIRE(factor.numSolves() == 1 + 3);
   REQUIRE(factor.numFactorizations() == 1);
 }
@@ -104,7 +132,7 @@ TEST_CASE("linalg SparseFactor backends agree with each other", "[linalg]") {
 TEST_CASE("linalg SparseFactor reports singular and indefinite matrices as values", "[linalg]") {
   const std::string backend = GENERATE(from_range(SparseFactor::backendNames()));
   CAPTURE(backend);
-  SparseFactor factor(backend);
+  SparseFactor factor = backendNamed(backend);
   // The free-floating stiffness matrix has the three rigid modes in its null space.
   Eigen::SparseMatrix<double> K;
   spdMatrix(&K);
@@ -124,9 +152,19 @@ TEST_CASE("linalg SparseFactor reports singular and indefinite matrices as value
 }
 
 TEST_CASE("linalg SparseFactor rejects an unknown backend with the valid names", "[linalg]") {
-#ifdef FRICTION_WITH_MUMPS
+#if defined(FRICTION_WITH_MUMPS) && defined(FRICTION_WITH_HYPRE)
+  REQUIRE(SparseFactor::backendNames() ==
+          std::vector<std::string>{"cholmod", "simplicialLDLT", "mumps", "amg"});
+#elif defined(FRICTION_WITH_MUMPS)
   REQUIRE(SparseFactor::backendNames() ==
           std::vector<std::string>{"cholmod", "simplicialLDLT", "mumps"});
+  try {
+    SparseFactor factor("amg", SourceLocation{"system/frictionSolution", 3});
+    FAIL("no InputError");
+  } catch (const InputError& e) {
+    REQUIRE_THAT(e.message(),
+                 Catch::Contains("not in this build") && Catch::Contains("-DFRICTION_HYPRE=ON"));
+  }
 #else
   REQUIRE(SparseFactor::backendNames() == std::vector<std::string>{"cholmod", "simplicialLDLT"});
   // A build without MUMPS names what it lacks.
@@ -185,8 +223,14 @@ TEST_CASE("linalg SparseFactor forms the Schur complement C - B^T A^-1 B with th
   const Eigen::MatrixXd reference =
       Eigen::MatrixXd(C) - Eigen::MatrixXd(B).transpose() * Ad.llt().solve(Eigen::MatrixXd(B));
 
-  SparseFactor factor(backend);
+  SparseFactor factor = backendNamed(backend);
   REQUIRE(factor.factorWithSchur(A, B, C) == FactorStatus::ok);
+  // The bounds below are the direct backends' round-off. amg solves by CG to amgTolerance, so
+  // its A⁻¹ B errs by up to cond(A) ≈ 1e4 times that: its bounds are 1e5 · amgTolerance
+  // relative (×10 margin) where the direct ones' are 1e-10 and 1e-9.
+  const bool iterative = factor.iterative();
+  const double solveBound = iterative ? 1e5 * amgTolerance : 1e-10;
+  const double schurBound = iterative ? 1e5 * amgTolerance : 1e-9;
   REQUIRE(factor.ok());
   REQUIRE(factor.numFactorizations() == 1);
   const Eigen::MatrixXd& S = factor.schurComplement();
@@ -196,11 +240,11 @@ TEST_CASE("linalg SparseFactor forms the Schur complement C - B^T A^-1 B with th
   // relative is a wide margin that a wrong sign or a missing block would not meet.
   const double scale = reference.cwiseAbs().maxCoeff();
   REQUIRE(scale > 0);
-  CHECK((S - reference).cwiseAbs().maxCoeff() <= 1e-9 * scale);
+  CHECK((S - reference).cwiseAbs().maxCoeff() <= schurBound * scale);
   CHECK((S - S.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale);
   // cholmod and mumps deliver it from the bordered factorisation, with no back-substitution;
-  // simplicialLDLT spends one per border column.
-  if (backend != "simplicialLDLT")
+  // simplicialLDLT and amg spend one per border column.
+  if (backend != "simplicialLDLT" && !iterative)
     CHECK(factor.schurSolves() == 0);
   else
     CHECK(factor.schurSolves() == m);
@@ -211,16 +255,16 @@ TEST_CASE("linalg SparseFactor forms the Schur complement C - B^T A^-1 B with th
   Eigen::MatrixXd X(n, 2);
   for (Eigen::Index i = 0; i < n; ++i) X(i, 0) = std::sin(0.1 * i), X(i, 1) = (i % 5) - 2.0;
   const Eigen::MatrixXd Y = factor.solve(Eigen::MatrixXd(A * X));
-  CHECK((Y - X).cwiseAbs().maxCoeff() <= 1e-10);
+  CHECK((Y - X).cwiseAbs().maxCoeff() <= solveBound * (iterative ? X.norm() : 1.0));
   const Eigen::VectorXd y = factor.solve(Eigen::VectorXd(A * X.col(0)));
-  CHECK((y - X.col(0)).cwiseAbs().maxCoeff() <= 1e-10);
+  CHECK((y - X.col(0)).cwiseAbs().maxCoeff() <= solveBound * (iterative ? X.norm() : 1.0));
   CHECK(pivotsPass(factor));
 
   // The complement by blocks of solves, from the same factor, agrees.
   const long before = factor.numSolves();
   const Eigen::MatrixXd byBlocks = factor.schurBySolves(B, C);
   CHECK(factor.numSolves() - before == m);
-  CHECK((byBlocks - reference).cwiseAbs().maxCoeff() <= 1e-9 * scale);
+  CHECK((byBlocks - reference).cwiseAbs().maxCoeff() <= schurBound * scale);
 
   // A plain factor() afterwards forgets the complement.
   REQUIRE(factor.factor(A) == FactorStatus::ok);
@@ -241,11 +285,13 @@ TEST_CASE("linalg SparseFactor: a semi-definite complement is formed, a singular
   E.insert(n / 2, 1) = 1.0;
   const Eigen::SparseMatrix<double> B = A * E;
   const Eigen::SparseMatrix<double> C = E.transpose() * B;
-  SparseFactor factor(backend);
+  SparseFactor factor = backendNamed(backend);
   REQUIRE(factor.factorWithSchur(A, B, C) == FactorStatus::ok);
   const double scale = Eigen::MatrixXd(C).cwiseAbs().maxCoeff();
   REQUIRE(scale > 0);
-  CHECK(factor.schurComplement().cwiseAbs().maxCoeff() <= 1e-10 * scale);
+  // Round-off for a factor; amg's CG to amgTolerance errs by cond(A) ≈ 1e4 times it (×10).
+  CHECK(factor.schurComplement().cwiseAbs().maxCoeff() <=
+        (factor.iterative() ? 1e5 * amgTolerance : 1e-10) * scale);
 
   // A singular A is A's failure, reported as factor() reports it.
   Eigen::SparseMatrix<double> K;
