@@ -618,6 +618,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
     facts.dofs = system_->unsplitSpace().numDofs();
     facts.elementOrder = order_;
     if (linearSolver_ == "amg") facts.iterativeSolver = linearSolver_;
+    facts.maxPoissonRatio = materials_->maxPoissonRatio();
     if (opening_)
       facts.needsDenseS = "fractures that open (contact unilateral)";
     else if (weakening_)

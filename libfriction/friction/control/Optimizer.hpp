@@ -74,6 +74,8 @@ struct CaseFacts {
   /// The linear solver when it is iterative (amg: no factor, every solve an iteration), for
   /// the log; empty for a direct one. Krylov then needs far fewer solves than forming S.
   std::string iterativeSolver;
+  /// The largest Poisson ratio of the rock: krylov's probed preconditioner weakens as ν → ½.
+  double maxPoissonRatio = 0;
 };
 
 /// Settings every optimizer shares (keys of the case's 'solver' dictionary).

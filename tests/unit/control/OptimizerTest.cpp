@@ -265,6 +265,17 @@ TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unle
                      Catch::Contains("< " + std::to_string(t)) &&
                      Catch::EndsWith("; krylov all the same: linear solver amg has no "
                                      "factor, so S would cost one solve per jump unknown)"));
+      // Nearly incompressible rock: krylov all the same, with a note on its preconditioner.
+      auto soft = read(text);
+      CaseFacts nu = facts(t, dim, dofs, "");
+      nu.maxPoissonRatio = 0.49;
+      const std::string lineNu = soft->chooseFor(nu);
+      CHECK(variantOf(*soft) == V::krylov);
+      CHECK_THAT(lineNu, Catch::EndsWith("; note: at nu 0.49 krylov's probed preconditioner is "
+                                         "weak (thousands of GMRES products per Newton iteration "
+                                         "measured at nu 0.49); variant condensed is robust there "
+                                         "where its dense S fits)"));
+      CHECK(lineAt.find("note:") == std::string::npos);
       auto itOpen = read(text);
       itOpen->chooseFor(facts(1, dim, dofs, "fractures that open (contact unilateral)", 1, "amg"));
       CHECK(variantOf(*itOpen) == V::condensed);
