@@ -306,8 +306,8 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
   if (linearSolver_ == "amg")
     iterativeTolerance_ =
         sol.getScalarOr("iterativeTolerance", 1e-10, Bounds{0.0, 1e-2, true, false});
-  // Several ranks share the factorisation: only the mumps solver can.
-  if (parallel::size() > 1 && linearSolver_ != "mumps")
+  // Several ranks share the factorisation (mumps) or the multigrid hierarchy (amg).
+  if (parallel::size() > 1 && linearSolver_ != "mumps" && linearSolver_ != "amg")
     throw InputError(sol.found("linearSolver") ? sol.location("linearSolver") : sol.location(),
                      "this run has " + std::to_string(parallel::size()) +
                          " ranks (frictionSolver -parallel) but linear solver '" + linearSolver_ +

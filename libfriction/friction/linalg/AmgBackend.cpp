@@ -7,8 +7,8 @@
 // hierarchy and CG's vectors grow as n: bodies of several million unknowns fit. What it costs:
 // every solve is an iteration (tens of V-cycles) instead of a back-substitution, and its answer
 // is exact only to the tolerance. It holds no factor, so S cannot come from a factorisation:
-// the optimizer's krylov variant, which asks only for solves, is the one that fits it (the
-// case refuses the others with this solver).
+// the optimizer's krylov variant, which asks only for solves, is the one that fits it (variant
+// auto takes it; the condensed variant forms S by one solve per jump unknown).
 //
 // The hierarchy is that of a vector problem (BoomerAMG's "unknown approach": coarsening and
 // interpolation within each displacement component, setComponents()); HMIS coarsening, ext+i
@@ -25,8 +25,11 @@
 // checks the mesh and its patches for rigid motions besides (FrictionCase::canMoveRigidly). The
 // forward error of that check is what the solves cost in accuracy, and the log says it.
 //
-// One rank (the case refuses amg with -parallel). hypre needs MPI initialised: it runs on
-// MPI_COMM_SELF. Compiled only in builds with FRICTION_WITH_HYPRE (others skip the file).
+// On several ranks (frictionSolver -parallel) the ranks share the rows in contiguous blocks:
+// each rank hands hypre its summand (its own cells' entries, SparseFactor::setSummedOverRanks)
+// and hypre adds them; right-hand sides are whole on every rank (each sets its rows) and every
+// rank gets the whole solution back. One rank runs on MPI_COMM_SELF. Compiled only in builds
+// with FRICTION_WITH_HYPRE (others skip the file).
 #ifdef FRICTION_WITH_HYPRE
 #include <HYPRE.h>
 #include <HYPRE_krylov.h>
@@ -37,6 +40,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -74,6 +78,9 @@ class AmgBackend final : public SparseFactor::Backend {
   }
   void setIterativeTolerance(double tolerance) override { tolerance_ = tolerance; }
 
+  bool takesSummands() const override { return true; }
+  void setSummedInput(bool summed) override { summed_ = summed; }
+
   FactorStatus factor(const SparseMatrix& A) override {
     release();
     analysis_ = FactorAnalysis{};
@@ -81,39 +88,45 @@ class AmgBackend final : public SparseFactor::Backend {
     const auto start = std::chrono::steady_clock::now();
     n_ = static_cast<HYPRE_Int>(A.rows());
     if (A.rows() == 0) return FactorStatus::ok;
-    // The whole symmetric matrix from its lower triangle (full storage gives the same).
+    // The ranks share the rows in contiguous blocks; one rank holds them all.
+    ranks_ = parallel::size();
+    comm_ = ranks_ > 1 ? MPI_COMM_WORLD : MPI_COMM_SELF;
+    first_.assign(static_cast<std::size_t>(ranks_ + 1), 0);
+    for (int q = 0; q <= ranks_; ++q)
+      first_[static_cast<std::size_t>(q)] =
+          static_cast<HYPRE_Int>(static_cast<long long>(n_) * q / ranks_);
+    const int me = parallel::rank();
+    lo_ = first_[static_cast<std::size_t>(me)];
+    hi_ = first_[static_cast<std::size_t>(me) + 1];  // one past the last
+    // The whole symmetric matrix from its lower triangle (full storage gives the same): each
+    // rank adds its entries (its summand, or, with the whole matrix on every rank, its own
+    // rows'); hypre sends those of other ranks' rows to them when it assembles.
     std::vector<std::vector<std::pair<HYPRE_Int, double>>> rows(static_cast<std::size_t>(n_));
+    int nonFinite = 0;
     for (Eigen::Index c = 0; c < A.outerSize(); ++c)
       for (SparseMatrix::InnerIterator it(A, c); it; ++it) {
         const auto r = static_cast<HYPRE_Int>(it.row()), k = static_cast<HYPRE_Int>(it.col());
         if (r < k) continue;
-        if (!std::isfinite(it.value())) return FactorStatus::nonFinite;
-        // A positive definite matrix has a positive diagonal.
-        if (r == k && !(it.value() > 0)) {
-          analysis_.problem = "diagonal entry " + std::to_string(r) + " is " +
-                              formatted(it.value()) +
-                              ", not positive: the matrix is not "
-                              "positive definite";
-          return FactorStatus::notPositiveDefinite;
-        }
-        rows[static_cast<std::size_t>(r)].emplace_back(k, it.value());
-        if (r != k) rows[static_cast<std::size_t>(k)].emplace_back(r, it.value());
+        if (!std::isfinite(it.value())) nonFinite = 1;
+        const auto mine = [&](HYPRE_Int row) { return summed_ || (row >= lo_ && row < hi_); };
+        if (mine(r)) rows[static_cast<std::size_t>(r)].emplace_back(k, it.value());
+        if (r != k && mine(k)) rows[static_cast<std::size_t>(k)].emplace_back(r, it.value());
       }
-    HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, n_ - 1, 0, n_ - 1, &ij_);
+    if (parallel::maxOverRanks(nonFinite) != 0) return FactorStatus::nonFinite;
+    HYPRE_IJMatrixCreate(comm_, lo_, hi_ - 1, lo_, hi_ - 1, &ij_);
     HYPRE_IJMatrixSetObjectType(ij_, HYPRE_PARCSR);
-    std::vector<HYPRE_Int> sizes(static_cast<std::size_t>(n_));
-    double nonzeros = 0;
-    for (HYPRE_Int r = 0; r < n_; ++r) {
-      sizes[static_cast<std::size_t>(r)] =
-          static_cast<HYPRE_Int>(rows[static_cast<std::size_t>(r)].size());
-      nonzeros += sizes[static_cast<std::size_t>(r)];
-    }
+    // Room per own row: its entries here, twice that where other ranks add to it.
+    std::vector<HYPRE_Int> sizes(static_cast<std::size_t>(hi_ - lo_));
+    for (HYPRE_Int r = lo_; r < hi_; ++r)
+      sizes[static_cast<std::size_t>(r - lo_)] =
+          static_cast<HYPRE_Int>(rows[static_cast<std::size_t>(r)].size()) * (summed_ ? 2 : 1) + 1;
     HYPRE_IJMatrixSetRowSizes(ij_, sizes.data());
     HYPRE_IJMatrixInitialize(ij_);
     std::vector<HYPRE_BigInt> cols;
     std::vector<double> values;
     for (HYPRE_Int r = 0; r < n_; ++r) {
       auto& row = rows[static_cast<std::size_t>(r)];
+      if (row.empty()) continue;
       cols.clear();
       values.clear();
       for (const auto& [k, v] : row) {
@@ -122,11 +135,37 @@ class AmgBackend final : public SparseFactor::Backend {
       }
       HYPRE_Int count = static_cast<HYPRE_Int>(row.size());
       HYPRE_BigInt at = r;
-      HYPRE_IJMatrixSetValues(ij_, 1, &count, &at, cols.data(), values.data());
+      HYPRE_IJMatrixAddToValues(ij_, 1, &count, &at, cols.data(), values.data());
       std::vector<std::pair<HYPRE_Int, double>>().swap(row);
     }
     HYPRE_IJMatrixAssemble(ij_);
     HYPRE_IJMatrixGetObject(ij_, reinterpret_cast<void**>(&A_));
+    // A positive definite matrix has a positive diagonal (the assembled one: a rank's summand
+    // alone may lack a row's cells).
+    double nonzeros = 0, smallest = std::numeric_limits<double>::infinity();
+    HYPRE_Int smallestRow = -1;
+    for (HYPRE_Int r = lo_; r < hi_; ++r) {
+      HYPRE_Int size = 0;
+      HYPRE_BigInt* rowCols = nullptr;
+      HYPRE_Complex* rowValues = nullptr;
+      HYPRE_ParCSRMatrixGetRow(A_, r, &size, &rowCols, &rowValues);
+      nonzeros += size;
+      double diagonal = 0;
+      for (HYPRE_Int q = 0; q < size; ++q)
+        if (rowCols[q] == r) diagonal = rowValues[q];
+      HYPRE_ParCSRMatrixRestoreRow(A_, r, &size, &rowCols, &rowValues);
+      if (diagonal < smallest) smallest = diagonal, smallestRow = r;
+    }
+    nonzeros = parallel::sumOverRanks(nonzeros);
+    if (parallel::maxOverRanks(smallest > 0 ? 0 : 1) != 0) {
+      analysis_.problem =
+          "a diagonal entry is not positive" +
+          (smallestRow >= 0 && !(smallest > 0)
+               ? " (row " + std::to_string(smallestRow) + ": " + formatted(smallest) + ")"
+               : std::string()) +
+          ": the matrix is not positive definite";
+      return FactorStatus::notPositiveDefinite;
+    }
     b_ = makeVector();
     x_ = makeVector();
     r_ = makeVector();
@@ -145,11 +184,13 @@ class AmgBackend final : public SparseFactor::Backend {
     if (componentCount_ > 1 && static_cast<HYPRE_Int>(components_.size()) == n_) {
       HYPRE_BoomerAMGSetNumFunctions(amg_, componentCount_);
       // hypre takes the array and frees it with the solver.
-      auto* dofFunc = static_cast<HYPRE_Int*>(std::malloc(sizeof(HYPRE_Int) * components_.size()));
-      for (std::size_t i = 0; i < components_.size(); ++i) dofFunc[i] = components_[i];
+      const auto own = static_cast<std::size_t>(hi_ - lo_);
+      auto* dofFunc = static_cast<HYPRE_Int*>(std::malloc(sizeof(HYPRE_Int) * own));
+      for (std::size_t i = 0; i < own; ++i)
+        dofFunc[i] = components_[static_cast<std::size_t>(lo_) + i];
       HYPRE_BoomerAMGSetDofFunc(amg_, dofFunc);
     }
-    HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &pcg_);
+    HYPRE_ParCSRPCGCreate(comm_, &pcg_);
     HYPRE_PCGSetTol(pcg_, tolerance_);
     HYPRE_PCGSetMaxIter(pcg_, maxIterations_);
     HYPRE_PCGSetTwoNorm(pcg_, 1);
@@ -166,7 +207,9 @@ class AmgBackend final : public SparseFactor::Backend {
     std::mt19937_64 random(20261128);
     std::uniform_real_distribution<double> uniform(0.5, 1.5);
     for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = uniform(random);
-    const Eigen::VectorXd Ar = A.selfadjointView<Eigen::Lower>() * r;
+    setOwn(x_, r);
+    HYPRE_ParCSRMatrixMatvec(1.0, A_, xPar(), 0.0, bPar());
+    const Eigen::VectorXd Ar = gathered(b_);
     const auto checkStart = std::chrono::steady_clock::now();
     bool converged = false;
     const Eigen::VectorXd x = solveOne(Ar, converged);
@@ -244,7 +287,7 @@ class AmgBackend final : public SparseFactor::Backend {
 
   HYPRE_IJVector makeVector() const {
     HYPRE_IJVector v;
-    HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, n_ - 1, &v);
+    HYPRE_IJVectorCreate(comm_, lo_, hi_ - 1, &v);
     HYPRE_IJVectorSetObjectType(v, HYPRE_PARCSR);
     HYPRE_IJVectorInitialize(v);
     HYPRE_IJVectorAssemble(v);
@@ -258,19 +301,42 @@ class AmgBackend final : public SparseFactor::Backend {
     return p;
   }
 
+  // This rank's rows of a whole vector into v.
+  void setOwn(HYPRE_IJVector v, const Eigen::VectorXd& whole) const {
+    std::vector<HYPRE_BigInt> index(static_cast<std::size_t>(hi_ - lo_));
+    for (HYPRE_Int i = lo_; i < hi_; ++i) index[static_cast<std::size_t>(i - lo_)] = i;
+    HYPRE_IJVectorSetValues(v, hi_ - lo_, index.data(), whole.data() + lo_);
+  }
+  // The whole vector, every rank's rows of v, on every rank.
+  Eigen::VectorXd gathered(HYPRE_IJVector v) const {
+    Eigen::VectorXd whole(n_);
+    std::vector<HYPRE_BigInt> index(static_cast<std::size_t>(hi_ - lo_));
+    for (HYPRE_Int i = lo_; i < hi_; ++i) index[static_cast<std::size_t>(i - lo_)] = i;
+    HYPRE_IJVectorGetValues(v, hi_ - lo_, index.data(), whole.data() + lo_);
+    if (ranks_ > 1) {
+      std::vector<int> counts(static_cast<std::size_t>(ranks_)), offsets(counts.size());
+      for (int q = 0; q < ranks_; ++q) {
+        offsets[static_cast<std::size_t>(q)] = first_[static_cast<std::size_t>(q)];
+        counts[static_cast<std::size_t>(q)] =
+            first_[static_cast<std::size_t>(q) + 1] - first_[static_cast<std::size_t>(q)];
+      }
+      MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, whole.data(), counts.data(),
+                     offsets.data(), MPI_DOUBLE, comm_);
+    }
+    return whole;
+  }
+
   Eigen::VectorXd solveOne(const Eigen::VectorXd& b, bool& converged) const {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
     converged = true;
     if (n_ == 0) return x;
     const double bNorm = b.norm();
     if (bNorm == 0) return x;
-    std::vector<HYPRE_BigInt> index(static_cast<std::size_t>(n_));
-    for (HYPRE_Int i = 0; i < n_; ++i) index[static_cast<std::size_t>(i)] = i;
-    HYPRE_IJVectorSetValues(b_, n_, index.data(), b.data());
-    HYPRE_IJVectorSetValues(x_, n_, index.data(), x.data());
+    setOwn(b_, b);
+    setOwn(x_, x);
     HYPRE_ParCSRPCGSolve(pcg_, A_, bPar(), xPar());
     HYPRE_ClearAllErrors();  // "did not converge" is read below, not kept as hypre's error
-    HYPRE_IJVectorGetValues(x_, n_, index.data(), x.data());
+    x = gathered(x_);
     HYPRE_Int iterations = 0, done = 0;
     HYPRE_PCGGetNumIterations(pcg_, &iterations);
     HYPRE_PCGGetConverged(pcg_, &done);
@@ -304,6 +370,11 @@ class AmgBackend final : public SparseFactor::Backend {
     A_ = nullptr;
   }
 
+  bool summed_ = false;
+  int ranks_ = 1;
+  MPI_Comm comm_ = MPI_COMM_SELF;
+  std::vector<HYPRE_Int> first_;  // first_[q]: the first row of rank q; first_[ranks_] = n_
+  HYPRE_Int lo_ = 0, hi_ = 0;     // this rank's rows [lo_, hi_)
   std::vector<int> components_;
   int componentCount_ = 1;
   double tolerance_ = 1e-10;

@@ -9,8 +9,9 @@
 //                   large 2D problems, kept as a fallback and a cross-check.
 //   amg             conjugate gradients preconditioned by hypre's BoomerAMG, set up once: no
 //                   factor, so memory linear in the unknowns; every solve is an iteration to a
-//                   relative residual (setIterativeTolerance). Only in builds with
-//                   FRICTION_HYPRE (README "The largest 3D models").
+//                   relative residual (setIterativeTolerance); shared by the ranks of an MPI
+//                   run like mumps. Only in builds with FRICTION_HYPRE (README "The largest 3D
+//                   models").
 //   mumps           MUMPS (multifrontal LDLᵀ, symmetric mode) shared by the ranks of an MPI run
 //                   (frictionSolver -parallel); with one rank, the same solver serially. Only
 //                   in builds with FRICTION_MUMPS (README "Running in parallel").
@@ -247,7 +248,7 @@ class SparseFactor {
   void setMumpsMemory(const MumpsMemory& memory);
 
   /// Whether the backend takes each rank's summand of the matrix (its own cells' entries; the
-  /// distributed engine, README "Running in parallel"): mumps.
+  /// distributed engine, README "Running in parallel"): mumps and amg.
   bool takesSummands() const;
   /// With true, the A given to factor() and factorWithSchur() on each rank is that rank's
   /// summand of the matrix (the matrix is their sum); B and C stay whole on every rank. Only
