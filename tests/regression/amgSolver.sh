@@ -33,21 +33,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
   fail "this build has no amg linear solver (FRICTION_HYPRE)"
 compare=$src/tests/regression/parallelCompare.py
 
-rm -rf "$work" && mkdir -p "$work" || fail "cannot make $work"
-cp -r "$src/cases/pennyCrack" "$work/base" || fail "cannot copy cases/pennyCrack"
-rm -rf "$work/base"/log.* "$work/base/constant/splitMesh"
-sed -i 's/^writeVTK.*//; $a writeVTK no;' "$work/base/system/controlDict"
-"$bin/splitFractureNodes" -case "$work/base" >"$work/base/log.splitFractureNodes" 2>&1 ||
-  fail "splitFractureNodes failed"
-# variant NAME SOLVER 'KEYS': a copy of the case whose linearSolver line is
-# 'linearSolver SOLVER; KEYS'.
-variant() {
-  cp -r "$work/base" "$work/$1" || fail "cannot copy the case"
-  sed -i "s|^linearSolver .*|linearSolver    $2; $3|" "$work/$1/system/frictionSolution"
-  grep -q "^linearSolver    $2;" "$work/$1/system/frictionSolution" || fail "no linearSolver line"
-}
-# Files of the case folder other than its logs.
-listing() { (cd "$work/$1" && find . ! -name 'log.*' | sort); }
+source "$src/tests/regression/pennyVariants.sh"
+variant() { pennyVariant "$@"; }  # variant NAME SOLVER 'KEYS'
 
 case $scenario in
   penny)

@@ -33,18 +33,9 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
   fail "this build has no mumps linear solver (FRICTION_MUMPS)"
 compare=$src/tests/regression/parallelCompare.py
 
-rm -rf "$work" && mkdir -p "$work" || fail "cannot make $work"
-cp -r "$src/cases/pennyCrack" "$work/base" || fail "cannot copy cases/pennyCrack"
-rm -rf "$work/base"/log.* "$work/base/constant/splitMesh"
-sed -i 's/^writeVTK.*//; $a writeVTK no;' "$work/base/system/controlDict"
-"$bin/splitFractureNodes" -case "$work/base" >"$work/base/log.splitFractureNodes" 2>&1 ||
-  fail "splitFractureNodes failed"
+source "$src/tests/regression/pennyVariants.sh"
 # variant NAME 'KEYS': a copy of the case whose linearSolver line is 'linearSolver mumps; KEYS'.
-variant() {
-  cp -r "$work/base" "$work/$1" || fail "cannot copy the case"
-  sed -i "s|^linearSolver .*|linearSolver    mumps; $2|" "$work/$1/system/frictionSolution"
-  grep -q "^linearSolver    mumps;" "$work/$1/system/frictionSolution" || fail "no linearSolver line"
-}
+variant() { pennyVariant "$1" mumps "$2"; }
 solve() {  # solve NAME [LAUNCHER...]: run it, expect exit 0
   local name=$1
   shift
@@ -55,8 +46,6 @@ reference() {
   variant full ""
   solve full
 }
-# Files of the case folder other than its logs (what a run must not leave behind).
-listing() { (cd "$work/$1" && find . ! -name 'log.*' | sort); }
 # wroteInCaseAndCleaned NAME LISTING_BEFORE: the run wrote its factor in a folder of its own in
 # the case (the log's Out-of-core line, more than 0 GB), gave the full-rank run's tables to
 # 1e-9, and left nothing behind but its outputs.

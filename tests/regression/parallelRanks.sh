@@ -16,7 +16,8 @@
 #         intersection curves' sectors; 4 steps), faultNetworkBoxP2 (the same in P2: the
 #         curves' mid-edge nodes too), pennyKrylov (the penny crack with Newton's krylov
 #         variant: its back-substitutions and the probes' block of dual solves on the ranks),
-#         refusals, outputErrors, rigidBody
+#         refusals, outputErrors, rigidBody, outputErrorsAmg (outputErrors with linearSolver
+#         amg; builds with FRICTION_HYPRE)
 set -u
 bin=$1 src=$2 work=$3 scenario=$4
 fail() { echo "FAIL [parallel.$scenario]: $*" >&2; exit 1; }
@@ -73,15 +74,17 @@ case $scenario in
     echo "parallel.refusals: ok"
     exit 0
     ;;
-  outputErrors)
+  outputErrors | outputErrorsAmg)
     # An output error on rank 0, the rank that writes, must end every rank at once with the
     # serial exit status 6 (before, rank 0 left the time loop and waited in MUMPS's clean-up,
     # the others in the next shared solve: both for ever). The class: postProcessing or VTK a
     # file, the case folder read-only, a disk that fills up in mid-run. Each on 2 ranks under a
     # timeout; every rank's own exit status is recorded (a wrapper around each), and what was
     # written must be whole.
+    # outputErrorsAmg: the same with linearSolver amg, whose solves the ranks share through
+    # hypre and a gather of each solution.
     prepare base paperBenchmark
-    setSolver "$work/base/case" mumps
+    setSolver "$work/base/case" "$([[ $scenario == outputErrorsAmg ]] && echo amg || echo mumps)"
     mounted=()
     trap 'for m in "${mounted[@]}"; do umount "$m" 2>/dev/null; done' EXIT
     for sibling in postProcessingFile vtkFile readOnly diskFull; do
