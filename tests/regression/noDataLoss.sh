@@ -378,6 +378,47 @@ overwrite)
   rm "$c/postProcessing/notes.txt"
   sameOutputs "$work/reference/case" "$c"
   ;;
+heldLoads)
+  # Loads held after t = 0.5: the steps after it reuse 0.5's solution ("loads unchanged").
+  # Restarted from 0.5 (the last solved step) and from 0.75 (itself a reused step), the run
+  # reuses as the uninterrupted one does: it makes the recorded state again (the restore
+  # entry of uniform/frictionState) instead of solving again from the trial state, and every
+  # output file is the uninterrupted run's, byte for byte. With Coulomb friction and with
+  # slip-weakening (whose state, the slip path, and patch stiffness the restore entry adds).
+  held() {  # held CASE LAW
+    sed -i 's/(1 (-0.02 -0.025))/(0.5 (-0.02 -0.025))/' "$1/0/D"
+    grep -q "(0.5 (-0.02" "$1/0/D" || fail "cannot hold the load"
+    setKey "$1" writeInterval 1
+    if [[ $2 == slipWeakening ]]; then
+      sed -i 's/^ *law  *coulomb;/    law slipWeakening; staticCoefficient 0.2; dynamicCoefficient 0.18; criticalSlip 0.01;/; /^ *frictionCoefficient/d' \
+        "$1/constant/fractureProperties"
+      grep -q "law slipWeakening" "$1/constant/fractureProperties" || fail "cannot set slipWeakening"
+    fi
+  }
+  for law in coulomb slipWeakening; do
+    rm -rf "$work/reference" "$work"/stop*
+    makeCase "$work/reference" 8
+    held "$work/reference/case" $law
+    solve "$work/reference/case" "$work/reference/case/log.frictionSolver"
+    ((rc == 0)) || fail "$law: reference run failed: $(tail -3 "$work/reference/case/log.frictionSolver")"
+    reused=$(grep -c "loads unchanged: previous solution reused" "$work/reference/case/log.frictionSolver")
+    ((reused == 4)) || fail "$law: the reference reused $reused steps, expected 4 (0.625 to 1)"
+    for stop in 0.5 0.75; do
+      makeCase "$work/stop$stop" 8
+      c=$work/stop$stop/case
+      held "$c" $law
+      setKey "$c" endTime $stop
+      solve "$c" "$c/log.1"
+      ((rc == 0)) || fail "$law: first part to $stop failed"
+      grep -q "^ *restore$" "$c/$stop/uniform/frictionState" || fail "$law, $stop: no restore entry in the state"
+      setKey "$c" endTime 1
+      restartAndCompare "$c"
+      grep -q "^Time = 0.875  loads unchanged: previous solution reused  iterations 0  backSubstitutions 0 " "$c/log.2" ||
+        fail "$law: restarted from $stop: 0.875 not reused: $(grep -a '^Time = 0.875' "$c/log.2")"
+      echo "$law, restarted from $stop: every output as the uninterrupted run's"
+    done
+  done
+  ;;
 changedDeltaT)
   # Continue from the saved time with another deltaT, or to a later endTime: the times go
   # on from 0.5 and the last step ends at 1. The load is proportional and the slip only

@@ -286,24 +286,47 @@ FrictionCase::FrictionCase(const std::string& caseDir, const GivenFields& given)
   order_ = elementOrderOf(sol);
   if (sol.found("linearSolver"))
     SparseFactor::requireInBuild(sol.getWord("linearSolver"), sol.location("linearSolver"));
-  linearSolver_ = sol.getChoiceOr("linearSolver", SparseFactor::backendNames(), "cholmod");
-  // The fill-reducing ordering: cholmod's to choose; the other solvers have their own, and a
-  // case that names one for them is told so rather than ignored.
+  std::vector<std::string> solvers = SparseFactor::backendNames();
+  const bool hasMumps = std::count(solvers.begin(), solvers.end(), "mumps") > 0;
+  const bool hasAmg = std::count(solvers.begin(), solvers.end(), "amg") > 0;
+  solvers.insert(solvers.begin(), "auto");
+  linearSolver_ = sol.getChoiceOr("linearSolver", solvers, "auto");
+  // auto: chosen by size in setup() (chooseLinearSolver). Several ranks need a solver they
+  // share: mumps (its factor goes out of core by its own estimate), else amg.
+  linearSolverAuto_ = linearSolver_ == "auto";
+  if (linearSolverAuto_ && parallel::size() > 1) {
+    if (hasMumps || hasAmg) {
+      linearSolver_ = hasMumps ? "mumps" : "amg";
+      linearSolverChoice_ = "Linear solver auto: " + linearSolver_ + " (" +
+                            std::to_string(parallel::size()) + " ranks share it)";
+    }
+  }
+  if (sol.found("iterativeAbove") && !linearSolverAuto_)
+    throw InputError(sol.location("iterativeAbove"),
+                     "key 'iterativeAbove' is the predicted size of a direct factor above which "
+                     "'linearSolver auto' takes the iterative solver: it needs 'linearSolver "
+                     "auto;' (the default)");
+  if (linearSolverAuto_)
+    iterativeAbove_ = sol.getScalarOr("iterativeAbove", 0.0, Bounds::positive());
+  // The fill-reducing ordering: cholmod's to choose (with auto, where auto takes cholmod); the
+  // other solvers have their own, and a case that names one for them is told so rather than
+  // ignored.
   ordering_ = orderingNamed(sol.getChoiceOr("ordering", orderingNames(), "auto"));
-  if (ordering_ != Ordering::automatic && linearSolver_ != "cholmod")
+  if (ordering_ != Ordering::automatic && linearSolver_ != "cholmod" && !linearSolverAuto_)
     throw InputError(sol.location("ordering"),
                      "key 'ordering': linear solver '" + linearSolver_ +
                          "' has its own ordering (simplicialLDLT: AMD, mumps: METIS); 'ordering " +
                          toString(ordering_) +
                          "' needs 'linearSolver cholmod' (or use 'ordering auto')");
   readMumpsMemory(sol);
-  // The iterative solver's stopping rule: a relative residual ‖b − A x‖/‖b‖.
-  if (sol.found("iterativeTolerance") && linearSolver_ != "amg")
+  // The iterative solver's stopping rule: a relative residual ‖b − A x‖/‖b‖ (with auto, for
+  // where auto takes amg).
+  if (sol.found("iterativeTolerance") && linearSolver_ != "amg" && !linearSolverAuto_)
     throw InputError(sol.location("iterativeTolerance"),
                      "key 'iterativeTolerance' is where the solves of an iterative linear solver "
                      "stop; linear solver '" +
                          linearSolver_ + "' is direct: it needs 'linearSolver amg'");
-  if (linearSolver_ == "amg")
+  if (linearSolver_ == "amg" || linearSolverAuto_)
     iterativeTolerance_ =
         sol.getScalarOr("iterativeTolerance", 1e-10, Bounds{0.0, 1e-2, true, false});
   // Several ranks share the factorisation (mumps) or the multigrid hierarchy (amg).
@@ -485,9 +508,12 @@ void FrictionCase::printSettings(std::ostream& log) const {
           << " Pa, nu " << m.poissonRatio() << "\n";
     }
   }
-  log << "Elements: P" << order_ << ", linear solver " << linearSolver_;
-  if (linearSolver_ == "cholmod") log << ", ordering " << toString(ordering_);
-  if (linearSolver_ == "amg") log << ", iterativeTolerance " << iterativeTolerance_;
+  log << "Elements: P" << order_ << ", linear solver "
+      << (linearSolverAuto_ ? "auto" : linearSolver_);
+  if (linearSolver_ == "cholmod" || linearSolverAuto_) log << ", ordering " << toString(ordering_);
+  if (linearSolver_ == "amg" || linearSolverAuto_)
+    log << ", iterativeTolerance " << iterativeTolerance_;
+  if (iterativeAbove_ > 0) log << ", iterativeAbove " << iterativeAbove_ << " bytes";
   if (mumpsMemory_.lowRank > 0) log << ", low-rank factor (BLR) at " << mumpsMemory_.lowRank;
   log << outOfCoreNote_;
   if (!mumpsMemory_.outOfCoreDir.empty())
@@ -611,7 +637,20 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       exitStatusOf);
   // What the case leaves to its size (Newton's variant auto), before the factorisation, which
   // it decides: from facts of the case alone, alike on every rank and on a restart.
-  if (system_->size() > 0) {  // no fracture: no control loop, nothing to choose
+  // The stiffness assembled, then (linearSolver auto) the linear solver chosen for it, then
+  // Newton's variant, which depends on the solver (none: no fracture, no control loop).
+  const PhaseReport phases = [&](const std::string& phase, double seconds) {
+    logPhase(log, phase, seconds);
+  };
+  parallel::agree(
+      [&] {
+        system_->assemble(linearSolverAuto_ && parallel::size() == 1 ? "cholmod" : linearSolver_,
+                          phases, ordering_, mumpsMemory_);
+        if (linearSolverAuto_ && parallel::size() == 1) chooseLinearSolver();
+        if (!linearSolverChoice_.empty()) log << linearSolverChoice_ << "\n";
+      },
+      exitStatusOf);
+  if (system_->size() > 0) {
     CaseFacts facts;
     facts.fractureNodes = system_->size();
     facts.dimension = split_.mesh.dim;
@@ -627,10 +666,7 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
       facts.needsDenseS = "timeIntegration " + timeIntegrator_->name();
     optimizerChoice_ = optimizer_->chooseFor(facts);
   }
-  FactorStatus status = system_->factor(
-      linearSolver_, optimizer_->wantsInterfaceOperator(),
-      [&](const std::string& phase, double seconds) { logPhase(log, phase, seconds); }, ordering_,
-      mumpsMemory_);
+  FactorStatus status = system_->factorAssembled(optimizer_->wantsInterfaceOperator());
   // A part that nothing holds, or a direction no patch fixes: K is singular, whatever its
   // pivots say. The backends' pivot checks see it on one rank, but MUMPS on several does not
   // (measured on a free 3D body, cases/pennyCrack with every patch free: INFOG(28) null pivots
@@ -641,6 +677,59 @@ FactorStatus FrictionCase::setup(std::ostream& log) {
   factorStatus_ = status;
   parallel::agree([&] { finishSetup(status, log); }, exitStatusOf);
   return status;
+}
+
+// linearSolver auto on one rank: cholmod where its factor fits in memory, else amg, which
+// needs none (README "Which linear solver"). The factor's size comes from CHOLMOD's ordering
+// and symbolic analysis of the assembled matrix (SparseFactor::predict), whose ordering the
+// factorisation then reuses. A restart takes what the run it continues took (recorded in the
+// state), so that it writes what an uninterrupted run would, whatever memory is free now.
+void FrictionCase::chooseLinearSolver() {
+  std::ostringstream why;
+  why << std::setprecision(3) << "Linear solver auto: ";
+  const std::string recorded = time_->startFromLatest() ? recordedLinearSolver() : "";
+  const auto names = SparseFactor::backendNames();
+  const bool hasAmg = std::count(names.begin(), names.end(), "amg") > 0;
+  if (!recorded.empty()) {
+    linearSolver_ = recorded;
+    why << recorded << " (as the run this one continues: its newest time folder's state)";
+  } else {
+    Stopwatch clock;
+    FactorAnalysis predicted;
+    const bool known = system_->predictFactor(predicted);
+    const double limit = iterativeAbove_ > 0 ? iterativeAbove_ : 0.8 * availableMemory();
+    const bool fits = !known || predicted.bytes <= limit;
+    linearSolver_ = fits || !hasAmg ? "cholmod" : "amg";
+    why << linearSolver_ << " (";
+    if (!known) {
+      why << "the factor's size could not be predicted";
+    } else {
+      why << "CHOLMOD's factor, predicted by its " << predicted.ordering
+          << " ordering and symbolic analysis in " << formatSeconds(clock.seconds()) << ": "
+          << predicted.entries << " entries, " << predicted.bytes / 1e9 << " GB, "
+          << (fits ? "<= " : "> ") << limit / 1e9 << " GB"
+          << (iterativeAbove_ > 0 ? " (iterativeAbove)" : ", 80 % of the memory available");
+      if (!fits && !hasAmg) why << "; this build has no amg (FRICTION_HYPRE): factored anyway";
+      if (fits) why << "; the factorisation takes this ordering";
+    }
+    why << ")";
+  }
+  if (linearSolver_ != "cholmod") system_->useBackend(linearSolver_, mumpsMemory_);
+  linearSolverChoice_ = why.str();
+}
+
+std::string FrictionCase::recordedLinearSolver() const {
+  // The newest complete time folder, as restart() finds it.
+  std::string folder;
+  for (const auto& [t, name] : timeFolders(caseDir_))
+    if (fs::exists(fs::path(caseDir_) / name / "uniform" / "frictionState")) folder = name;
+  if (folder.empty()) return "";
+  const Dictionary st =
+      Dictionary::read((fs::path(caseDir_) / folder / "uniform" / "frictionState").string(),
+                       DictionaryLimits::dataFile());
+  if (!st.found("linearSolver")) return "";
+  const auto names = SparseFactor::backendNames();
+  return st.getChoice("linearSolver", names);
 }
 
 std::vector<std::string> FrictionCase::freeComponents() const {
@@ -1640,6 +1729,38 @@ long FrictionCase::restart(std::ostream& log) {
                            "(frictionSolver -overwrite)");
     e->readState(effectStates->subDict(e->name()), t0);
   }
+  if (st.found("linearSolver")) (void)st.getWord("linearSolver");  // setup() took it
+  // The evaluation of the step that wrote the folder, for a first step that reuses it.
+  std::optional<Evaluation> restore;
+  if (const Dictionary* e = st.findDict("restore")) {
+    const std::vector<double> s0 = e->getScalarList("slip"), b0 = e->getScalarList("control");
+    const Eigen::Index controls = expected + static_cast<Eigen::Index>(opening.size());
+    if (static_cast<Eigen::Index>(s0.size()) != expected)
+      e->fail("slip", "key 'slip': " + std::to_string(s0.size()) + " values, expected " +
+                          std::to_string(expected));
+    if (static_cast<Eigen::Index>(b0.size()) != controls)
+      e->fail("control", "key 'control': " + std::to_string(b0.size()) + " values, expected " +
+                             std::to_string(controls));
+    restore = Evaluation{};
+    restore->time = e->getScalar("time");
+    restore->slip = Eigen::Map<const Eigen::VectorXd>(s0.data(), expected);
+    restore->beta = Eigen::Map<const Eigen::VectorXd>(b0.data(), controls);
+    // Friction that weakens: its slip path at the step's start and Newton's patch stiffness
+    // (without them, a folder of a run whose law did not weaken, the first step is solved).
+    if (weakening_ && e->found("slipPath")) {
+      const std::vector<double> p0 = e->getScalarList("slipPath");
+      if (static_cast<Eigen::Index>(p0.size()) != system_->size())
+        e->fail("slipPath", "key 'slipPath': " + std::to_string(p0.size()) + " values, expected " +
+                                std::to_string(system_->size()));
+      restore->path = Eigen::Map<const Eigen::VectorXd>(p0.data(), system_->size());
+      if (e->found("tangentStiffness"))
+        restore->tangentStiffness = e->getScalar("tangentStiffness");
+      restore->stiffnessComponents = e->getIntOr("stiffnessComponents", 0);
+    } else if (weakening_) {
+      restore.reset();
+    }
+    e->markAllRead();
+  }
   st.checkAllRead();
   // The folder's name must be the time its state records (to the digits of the name): a
   // folder copied or renamed to a later name would restart an earlier state there, compute
@@ -1658,6 +1779,8 @@ long FrictionCase::restart(std::ostream& log) {
   for (std::size_t i = 0; i < opening.size(); ++i)
     lastBeta_[expected + static_cast<Eigen::Index>(i)] = opening[i];
   if (weakening_) slipPath_ = Eigen::Map<const Eigen::VectorXd>(path.data(), system_->size());
+  restore_ = std::move(restore);
+  restartedFromFolder_ = true;
   if (rateState_) {
     psi_ = Eigen::Map<const Eigen::VectorXd>(psi.data(), system_->size());
     slipRate_ =
@@ -1708,11 +1831,13 @@ void FrictionCase::keepSolution(const StepLoads& loads) {
   pressure_ = loads.pressure;
 }
 
-void FrictionCase::solveStep(const StepLoads& loads, double t, StepResult& r) {
+void FrictionCase::withStepProblem(const StepLoads& loads, double t,
+                                   const Eigen::VectorXd& startSlip,
+                                   const Eigen::VectorXd& startPath,
+                                   const std::function<void(ControlProblem&)>& use) {
   FractureSystem& sys = *system_;
   const Eigen::Index n = sys.size(), perNode = sys.blockSize();
-  const Eigen::Index controlSize = opening_ ? perNode * n + n : perNode * n;
-  sys.setStep(loads.load, slip_);
+  sys.setStep(loads.load, startSlip);
   if (n > 0) {
     Eigen::VectorXd sn0 = Eigen::VectorXd::Zero(n), tau0 = Eigen::VectorXd::Zero(perNode * n);
     for (const auto& e : effects_) e->addFractureTraction(sys.controlNodes(), t, sn0, tau0);
@@ -1723,23 +1848,56 @@ void FrictionCase::solveStep(const StepLoads& loads, double t, StepResult& r) {
   OpeningSettings openings{unilateral_, loads.pressure, gammaN_};
   // Friction that weakens: μ(δ_n + |β|) from the slip path at the step's start.
   if (weakening_) {
-    weakeningSettings_.pathStart = slipPath_;
+    weakeningSettings_.pathStart = startPath;
     weakeningSettings_.pressure = loads.pressure;
   }
   ControlProblem problem(sys, mu_, cohesion, gamma_, zeta_, gradient_,
                          opening_ ? &openings : nullptr,
                          weakening_ ? &weakeningSettings_ : nullptr);
-  Eigen::VectorXd beta = warmStart_ ? lastBeta_ : Eigen::VectorXd::Zero(controlSize);
-  if (n > 0)
-    r.report = optimizer_->minimize(problem, beta);
-  else
-    r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
-  // The accepted β once more, so that displacement and tractions on disk belong to it (a
-  // line search may have evaluated a rejected trial last). judgeStep() judges this state,
-  // not the optimizer's last evaluation.
-  last_ = problem.evaluate(beta);
-  r.relResidual = problem.relativeResidual(last_);
+  use(problem);
+}
+
+void FrictionCase::solveStep(const StepLoads& loads, double t, StepResult& r) {
+  const Eigen::Index n = system_->size(), perNode = system_->blockSize();
+  const Eigen::Index controlSize = opening_ ? perNode * n + n : perNode * n;
+  withStepProblem(loads, t, slip_, slipPath_, [&](ControlProblem& problem) {
+    Eigen::VectorXd beta = warmStart_ ? lastBeta_ : Eigen::VectorXd::Zero(controlSize);
+    if (n > 0)
+      r.report = optimizer_->minimize(problem, beta);
+    else
+      r.report.status = OptimizerStatus::converged;  // no fracture: nothing to iterate on
+    // The accepted β once more, so that displacement and tractions on disk belong to it (a
+    // line search may have evaluated a rejected trial last). judgeStep() judges this state,
+    // not the optimizer's last evaluation.
+    last_ = problem.evaluate(beta);
+    r.relResidual = problem.relativeResidual(last_);
+    evaluated_ = Evaluation{t,
+                            slip_,
+                            beta,
+                            weakening_ ? slipPath_ : Eigen::VectorXd(),
+                            r.report.tangentStiffness,
+                            r.report.stiffnessComponents};
+  });
   pressure_ = loads.pressure;
+}
+
+bool FrictionCase::restoreStep(const StepLoads& loads, StepResult& r) {
+  if (!restore_) return false;
+  const Evaluation e = std::move(*restore_);
+  restore_.reset();
+  const long solves0 = system_->factorization().numSolves();
+  withStepProblem(loads, e.time, e.slip, e.path, [&](ControlProblem& problem) {
+    last_ = problem.evaluate(e.beta);
+    r.relResidual = problem.relativeResidual(last_);
+  });
+  r.report.status = OptimizerStatus::converged;  // recorded only for a converged step
+  r.report.tangentStiffness = e.tangentStiffness;
+  r.report.stiffnessComponents = e.stiffnessComponents;
+  r.equilibrium = system_->equilibriumResidual();
+  pressure_ = loads.pressure;
+  evaluated_ = e;
+  restoreSolves_ = system_->factorization().numSolves() - solves0;
+  return true;
 }
 
 const InterfaceOperator& FrictionCase::faultOperator() {
@@ -1953,6 +2111,7 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
       log << "\n";
     }
   }
+  if (restartedFromFolder_ && first <= time_->numSteps()) timeIntegrator_->restarted(*this);
   RemainingTime remaining;
 
   for (long k = first; k <= time_->numSteps(); ++k) {
@@ -1983,14 +2142,16 @@ std::vector<StepResult> FrictionCase::run(std::ostream& log) {
 
     // The step's own solves: operators built once per run (Newton's condensed S) are counted
     // apart, so that a restarted run, which builds them again, writes the same numbers.
-    r.backSubstitutions = sys.factorization().numSolves() - solves0 - r.report.setupSolves;
+    r.backSubstitutions =
+        sys.factorization().numSolves() - solves0 - r.report.setupSolves - restoreSolves_;
+    restoreSolves_ = 0;  // a restart's remaking of its state is not the step's work
     // The solves of prepare() above, on the first step that iterates (as when they were spent
     // inside it).
     if (prepareSolves > 0 && !r.reused && n > 0) {
       r.report.setupSolves += prepareSolves;
       prepareSolves = 0;
     }
-    r.equilibrium = r.reused ? results.back().equilibrium : sys.equilibriumResidual();
+    if (!r.reused) r.equilibrium = sys.equilibriumResidual();  // a reused step has its own
     r.J = last_.J;
     r.lastStepNorm = r.report.history.empty() ? 0 : std::max(0.0, r.report.history.back().stepNorm);
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -2684,6 +2845,26 @@ void FrictionCase::writeTimeFolder(const StepResult& r, const Eigen::VectorXd& b
     }
     state.endDict();
   }
+  // The evaluation the tables above come from (quasiStatic, a converged step): a restart
+  // makes it again bit for bit if its first step has this step's loads (restoreStep).
+  if (evaluated_ && !rateState_ && r.report.status == OptimizerStatus::converged) {
+    const auto list = [](const Eigen::VectorXd& v) {
+      return std::vector<double>(v.data(), v.data() + v.size());
+    };
+    state.beginDict("restore");
+    state.entry("time", evaluated_->time);
+    state.entry("slip", list(evaluated_->slip));
+    state.entry("control", list(evaluated_->beta));
+    if (weakening_) {
+      state.entry("slipPath", list(evaluated_->path));
+      if (std::isfinite(evaluated_->tangentStiffness))
+        state.entry("tangentStiffness", evaluated_->tangentStiffness);
+      state.entry("stiffnessComponents", evaluated_->stiffnessComponents);
+    }
+    state.endDict();
+  }
+  // linearSolver auto: what it chose, which a restart takes again (chooseLinearSolver).
+  if (linearSolverAuto_) state.entryWord("linearSolver", linearSolver_);
   state.writeAtomic(folder.file("uniform/frictionState"));
 
   // The VTK files first: the rename of the time folder commits the time. A run killed before

@@ -17,8 +17,10 @@
 
 #include <functional>
 #include <iosfwd>
+#include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -131,7 +133,14 @@ class FrictionCase : private StepHost {
   StepLoads loadsAt(double t) override;
   void solveStep(const StepLoads& loads, double t, StepResult& r) override;
   void keepSolution(const StepLoads& loads) override;
+  bool restoreStep(const StepLoads& loads, StepResult& r) override;
   double stateTime() const override { return lastTime_; }
+  // The control problem of a step under `loads` at time t from the accumulated slip
+  // `startSlip` (the system's step, traction offsets, pressure, openings, weakening), handed
+  // to `use`: solveStep() and restoreStep() build it alike.
+  void withStepProblem(const StepLoads& loads, double t, const Eigen::VectorXd& startSlip,
+                       const Eigen::VectorXd& startPath,
+                       const std::function<void(ControlProblem&)>& use);
   const InterfaceOperator& faultOperator() override;
   void tractionsAt(const StepLoads& loads, double t, Eigen::VectorXd& tau,
                    Eigen::VectorXd& sigmaN) override;
@@ -220,6 +229,12 @@ class FrictionCase : private StepHost {
   std::vector<FractureSettings> fractures_;
   int order_ = 1;
   std::string linearSolver_ = "cholmod";
+  /// linearSolver auto (the default): linearSolver_ is chosen in setup() (chooseLinearSolver);
+  /// the bytes of CHOLMOD's predicted factor above which it takes the iterative solver (key
+  /// iterativeAbove; ≤ 0: 80 % of the memory available then); the choice and why, for the log.
+  bool linearSolverAuto_ = false;
+  double iterativeAbove_ = 0;
+  std::string linearSolverChoice_;
   Ordering ordering_ = Ordering::automatic;  ///< the key `ordering` (cholmod only)
   /// The keys `lowRank`, `outOfCore`, `outOfCoreDir` (mumps only).
   MumpsMemory mumpsMemory_;
@@ -228,6 +243,10 @@ class FrictionCase : private StepHost {
   /// judged (judgeStep marks a step with more inaccurate).
   mutable long iterativeUnconvergedSeen_ = 0;
   std::string outOfCoreNote_;  // why outOfCore auto cannot leave the core, for the log
+  // linearSolver auto: the solver for an assembled system (setup()), and the one a restart
+  // finds in the newest complete time folder's state (empty: none recorded).
+  void chooseLinearSolver();
+  std::string recordedLinearSolver() const;
   double gamma_ = 0, gammaRelative_ = 1, zeta_ = 0;
   bool gammaAbsolute_ = false, warmStart_ = false;
   /// Where gamma and gammaNormal were given (absolute values are checked against E/h once h is
@@ -288,6 +307,21 @@ class FrictionCase : private StepHost {
   /// Control of the last step (warm start, restart): the slip increment, then with openings
   /// the opening g per node [m] (a state: the faces' separation at the end of that step).
   Eigen::VectorXd lastBeta_;
+  /// The evaluation last_ holds (quasiStatic): the time of its step, the accumulated slip at
+  /// that step's start and its control β (solveStep). A time folder's state records it, and a
+  /// restart makes it again bit for bit where its first step reuses it (restoreStep); the
+  /// solves that costs are not the step's own (restoreSolves_).
+  struct Evaluation {
+    double time = 0;
+    Eigen::VectorXd slip, beta;
+    Eigen::VectorXd path;  ///< law slipWeakening: the slip path δ at the step's start
+    /// law slipWeakening: Newton's patch stiffness of the step (its status line and file)
+    double tangentStiffness = std::numeric_limits<double>::quiet_NaN();
+    long stiffnessComponents = 0;
+  };
+  std::optional<Evaluation> evaluated_, restore_;
+  long restoreSolves_ = 0;
+  bool restartedFromFolder_ = false;
   std::string stoppedEarly_;
   std::vector<FloatingPart> floating_;
   /// setup()'s verdict on the factorisation: the backend's, or notPositiveDefinite where the

@@ -688,6 +688,15 @@ int FractureSystem::numPartlyHeldOnDirichlet() const {
 FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfaceOperator,
                                     const PhaseReport& phases, Ordering ordering,
                                     const MumpsMemory& memory) {
+  assemble(backend, phases, ordering, memory);
+  return factorAssembled(withInterfaceOperator);
+}
+
+bool FractureSystem::assemble(const std::string& backend, const PhaseReport& phases,
+                              Ordering ordering, const MumpsMemory& memory) {
+  assembled_ = false;
+  phases_ = phases;
+  ordering_ = ordering;
   Stopwatch clock;
   const auto report = [&](const std::string& phase) {
     const double seconds = clock.lap();
@@ -811,7 +820,7 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
   }
 
   if (consistent_) {
-    if (!buildRecovery()) return FactorStatus::failed;
+    if (!buildRecovery()) return false;
     report("P2 fault tractions: the consistent mass of the fractures factored");
   }
 
@@ -840,8 +849,31 @@ FactorStatus FractureSystem::factor(const std::string& backend, bool withInterfa
   reduced_->setSummedOverRanks(own);
   report("assembly of the stiffness (" + std::to_string(unsplitSpace_->numDofs()) +
          " dofs) and the Dirichlet conditions taken out");
+  summands_ = own;
   factor_->setSummedOverRanks(own);
   factor_->setPhaseReport(phases);
+  assembled_ = true;
+  return true;
+}
+
+bool FractureSystem::predictFactor(FactorAnalysis& predicted) {
+  FRICTION_ASSERT(assembled_ && factor_, "predictFactor() after assemble()");
+  return factor_->predict(reduced_->matrix(), predicted);
+}
+
+void FractureSystem::useBackend(const std::string& backend, const MumpsMemory& memory) {
+  FRICTION_ASSERT(assembled_, "useBackend() after assemble()");
+  if (factor_ && factor_->backend() == backend) return;
+  factor_ = std::make_unique<SparseFactor>(backend);
+  FRICTION_ASSERT(!summands_ || factor_->takesSummands(), "useBackend: the summands need one");
+  factor_->setOrdering(factor_->takesOrdering() ? ordering_ : Ordering::automatic, dim_);
+  if (memory.any()) factor_->setMumpsMemory(memory);
+  factor_->setSummedOverRanks(summands_);
+  factor_->setPhaseReport(phases_);
+}
+
+FactorStatus FractureSystem::factorAssembled(bool withInterfaceOperator) {
+  if (!assembled_) return FactorStatus::failed;
   if (factor_->iterative()) {
     // The component of each free dof (interleaved: dof = dim · node + component), for a vector
     // multigrid hierarchy.

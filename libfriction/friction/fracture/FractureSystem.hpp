@@ -95,6 +95,16 @@ class FractureSystem : public SlipResponse {
   FactorStatus factor(const std::string& backend = "cholmod", bool withInterfaceOperator = false,
                       const PhaseReport& phases = {}, Ordering ordering = Ordering::automatic,
                       const MumpsMemory& memory = {});
+  /// factor() in two halves, for a caller that decides between them (linearSolver auto):
+  /// assemble() does every assembly and takes the Dirichlet conditions out (false: it failed,
+  /// and factorAssembled() then says `failed`); predictFactor() is SparseFactor::predict of
+  /// the assembled matrix with `backend` (cholmod; false where it cannot tell); useBackend()
+  /// replaces the backend before factorAssembled() factors.
+  bool assemble(const std::string& backend, const PhaseReport& phases = {},
+                Ordering ordering = Ordering::automatic, const MumpsMemory& memory = {});
+  bool predictFactor(FactorAnalysis& predicted);
+  void useBackend(const std::string& backend, const MumpsMemory& memory = {});
+  FactorStatus factorAssembled(bool withInterfaceOperator);
   const SparseFactor& factorization() const { return *factor_; }
   /// The relative residual at which an iterative linear solver's solves stop (linearSolver
   /// amg, key iterativeTolerance); before factor().
@@ -237,6 +247,12 @@ class FractureSystem : public SlipResponse {
   std::unique_ptr<SparseFactor> factor_;
   double iterativeTolerance_ = 1e-10;
   Index ownCells_ = 0;
+  // assemble()'s: whether it succeeded, each rank's summand given (own cells), the ordering
+  // and the phase report, for factorAssembled() and useBackend().
+  bool assembled_ = false;
+  bool summands_ = false;
+  Ordering ordering_ = Ordering::automatic;
+  PhaseReport phases_;
 
   std::vector<ControlNode> nodes_;
   Eigen::VectorXd weights_, mask_, componentMask_;

@@ -331,17 +331,6 @@ class MumpsBackend : public SparseFactor::Backend {
     return !outOfCore || outOfCoreFolder();
   }
 
-  // The memory this machine has for a new allocation [bytes]: MemAvailable of /proc/meminfo
-  // (infinite where it cannot be read: no automatic out of core then).
-  static double availableMemory() {
-    std::ifstream in("/proc/meminfo");
-    std::string key, unit;
-    double kb = 0;
-    while (in >> key >> kb >> unit)
-      if (key == "MemAvailable:") return 1024.0 * kb;
-    return std::numeric_limits<double>::infinity();
-  }
-
   bool outOfCoreFolder() {
     int failed = 0;
     if (oocFolder_.empty()) {

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -125,6 +126,24 @@ Eigen::VectorXd cholmodPivots(const cholmod_factor& L, Eigen::Index rows,
     if (row < rows) out[row] = inFactorOrder[k];
   }
   return out;
+}
+
+// A fingerprint of A's pattern (its size and, column by column, its row indices; FNV-1a): the
+// ordering predict() keeps is for this pattern only.
+std::uint64_t patternKey(const Eigen::SparseMatrix<double>& A) {
+  std::uint64_t h = 14695981039346656037ull;
+  const auto mix = [&h](std::uint64_t v) {
+    h ^= v;
+    h *= 1099511628211ull;
+  };
+  mix(static_cast<std::uint64_t>(A.rows()));
+  mix(static_cast<std::uint64_t>(A.cols()));
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j) {
+    mix(static_cast<std::uint64_t>(j) << 32);
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      mix(static_cast<std::uint64_t>(it.row()));
+  }
+  return h;
 }
 
 // A square compressed column-major matrix as CHOLMOD sees it, lower triangle read: values x
@@ -601,14 +620,79 @@ class CholmodBackend : public SparseFactor::Backend {
 
   FactorAnalysis analysis() const override { return analysis_; }
 
+  // The ordering factor() would use, then a simplicial symbolic analysis of A's lower pattern
+  // in it: CHOLMOD counts the factor's entries and flops from the elimination tree and the
+  // column counts, without building the factor's structure (memory O(n) beyond the pattern).
+  bool predict(const SparseMatrix& A, FactorAnalysis& predicted) override {
+    using I = CholmodIndex;
+    analysis_ = {};
+    auto clock = std::chrono::steady_clock::now();
+    std::vector<I> perm;
+    int orderingA = -1;
+    kept_ = {};
+    if (!groupedOrdering(A, perm, orderingA)) return false;
+    const double orderingSeconds = secondsSince(clock);
+    const double groups = analysis_.orderedGroups;
+    // A's lower triangle as a pattern with CHOLMOD's 64-bit indices (no values).
+    const I n = A.rows();
+    std::vector<I> colStart(static_cast<std::size_t>(n + 1), 0), rows;
+    for (I j = 0; j < n; ++j) {
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        if (it.row() >= j) rows.push_back(it.row());
+      colStart[j + 1] = static_cast<I>(rows.size());
+    }
+    cholmod_sparse view = lowerView(static_cast<std::size_t>(n), rows.size(), colStart.data(),
+                                    rows.data(), nullptr, false);
+    cholmod_common& cm = llt_.cholmod();
+    const int supernodal = cm.supernodal, nmethods = cm.nmethods, method = cm.method[0].ordering;
+    cm.supernodal = CHOLMOD_SIMPLICIAL;
+    cm.nmethods = 1;
+    cm.method[0].ordering = CHOLMOD_GIVEN;
+    cholmod_factor* L = cholmod_l_analyze_p(&view, perm.data(), nullptr, 0, &cm);
+    cm.supernodal = supernodal;
+    cm.nmethods = nmethods;
+    cm.method[0].ordering = method;
+    const bool ok = L && cm.status >= 0;
+    if (L) cholmod_l_free_factor(&L, &cm);
+    if (!ok) return false;
+    analysis_.ordering = orderingA >= 0 ? cholmodOrderingName(orderingA) : "";
+    analysis_.orderedGroups = groups;
+    analysis_.entries = cm.lnz > 0 ? cm.lnz : 0;
+    analysis_.flops = cm.fl > 0 ? cm.fl : 0;
+    analysis_.bytes = 8.0 * analysis_.entries * SparseFactor::predictedPadding;
+    analysis_.orderingSeconds = orderingSeconds;
+    analysis_.analysisSeconds = secondsSince(clock);
+    // Kept for the factorisation of this pattern: ordering is most of the analysis's time.
+    kept_.key = patternKey(A);
+    kept_.ordering = ordering_;
+    kept_.perm = std::move(perm);
+    kept_.cholmodOrdering = orderingA;
+    kept_.groups = groups;
+    predicted = analysis_;
+    return true;
+  }
+
  private:
   // A's fill-reducing ordering (ordering_, not cholmodDefault), postordered, computed on the
   // graph of A's groups of equal columns (indistinguishableColumns) and expanded to its
   // columns. The analysis is simplicial and thrown away: only the permutation is kept. False
-  // if CHOLMOD failed (its status is in the common block).
+  // if CHOLMOD failed (its status is in the common block). The ordering predict() kept, when
+  // A has its pattern and the ordering is the same, is taken instead (once: a new factor of
+  // the same pattern later orders again, as it always has).
   bool groupedOrdering(const SparseMatrix& A, std::vector<CholmodIndex>& perm, int& ordering) {
     using I = CholmodIndex;
     cholmod_common& cm = llt_.cholmod();
+    if (!kept_.perm.empty()) {
+      const Kept kept = std::move(kept_);
+      kept_ = {};
+      if (kept.ordering == ordering_ && kept.key == patternKey(A)) {
+        perm = kept.perm;
+        ordering = kept.cholmodOrdering;
+        analysis_.orderedGroups = kept.groups;
+        analysis_.orderingChoice = choice_ + ", ordered once for the prediction";
+        return true;
+      }
+    }
     const ColumnGroups groups = indistinguishableColumns(A);
     GroupGraph graph = groupGraph(A, groups);
     cholmod_sparse view = graph.view();
@@ -741,6 +825,15 @@ class CholmodBackend : public SparseFactor::Backend {
     return out;
   }
 
+  // The ordering of the last predict(), for the factorisation of the same pattern.
+  struct Kept {
+    std::uint64_t key = 0;
+    Ordering ordering = Ordering::automatic;
+    std::vector<CholmodIndex> perm;
+    int cholmodOrdering = -1;
+    double groups = 0;
+  };
+  Kept kept_;
   mutable CholmodLlt llt_;
   Ordering ordering_ = Ordering::amd;
   std::string choice_ = "ordering amd";
@@ -817,6 +910,15 @@ bool metisOrdering(const SparseMatrix& A, std::vector<long>& order) {
     for (CholmodIndex q = groups.first[g]; q < groups.first[g + 1]; ++q)
       order.push_back(groups.members[q]);
   return ok;
+}
+
+double availableMemory() {
+  std::ifstream in("/proc/meminfo");
+  std::string key, unit;
+  double kb = 0;
+  while (in >> key >> kb >> unit)
+    if (key == "MemAvailable:") return 1024.0 * kb;
+  return std::numeric_limits<double>::infinity();
 }
 
 const char* toString(FactorStatus status) {
@@ -982,18 +1084,7 @@ FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix*
   // The bordered factorisation where the backend has one (and the border is finite: a
   // non-finite border is left to the blocked solves, whose results then say so).
   impl_->setPivotTolerance(pivotTolerance_);
-  if (impl_->takesOrdering()) {
-    // `auto` is resolved here, once per factorisation, by the rule of automaticOrdering():
-    // one ordering, not several tried.
-    if (ordering_ == Ordering::automatic)
-      impl_->setOrdering(
-          automaticOrdering(dimension_, A.rows()),
-          "auto, " + std::to_string(dimension_) + "D, " + std::to_string(A.rows()) + " unknowns");
-    else
-      impl_->setOrdering(ordering_, ordering_ == Ordering::cholmodDefault
-                                        ? toString(ordering_)
-                                        : "ordering " + toString(ordering_));
-  }
+  passOrdering(A.rows());
   impl_->onPhase = phaseReport_;
   impl_->phasesReported = 0;
   bool bordered = false;
@@ -1014,6 +1105,28 @@ FactorStatus SparseFactor::factorImpl(const SparseMatrix& A, const SparseMatrix*
   if (status_ != FactorStatus::ok) schur_.resize(0, 0);
   factorSeconds_ += secondsSince(start);
   return status_;
+}
+
+void SparseFactor::passOrdering(Eigen::Index rows) {
+  if (!impl_->takesOrdering()) return;
+  // `auto` is resolved here, once per factorisation, by the rule of automaticOrdering(): one
+  // ordering, not several tried.
+  if (ordering_ == Ordering::automatic)
+    impl_->setOrdering(
+        automaticOrdering(dimension_, rows),
+        "auto, " + std::to_string(dimension_) + "D, " + std::to_string(rows) + " unknowns");
+  else
+    impl_->setOrdering(ordering_, ordering_ == Ordering::cholmodDefault
+                                      ? toString(ordering_)
+                                      : "ordering " + toString(ordering_));
+}
+
+bool SparseFactor::predict(const SparseMatrix& A, FactorAnalysis& predicted) {
+  FRICTION_ASSERT(A.rows() == A.cols(), "predict: matrix must be square");
+  if (!impl_->takesOrdering() || ordering_ == Ordering::cholmodDefault || A.rows() == 0)
+    return false;
+  passOrdering(A.rows());
+  return impl_->predict(A, predicted);
 }
 
 FactorStatus SparseFactor::judgePivots(const SparseMatrix& A) {

@@ -54,6 +54,10 @@ class SparseFactor::Backend {
   virtual void setIterativeTolerance(double /*tolerance*/) {}
   /// The ordering and size of the last analysis, as far as the backend knows them.
   virtual FactorAnalysis analysis() const { return {}; }
+  /// What factor(A) would take, from its ordering and a symbolic analysis alone
+  /// (SparseFactor::predict); the ordering is kept for the next factorisation of A's pattern.
+  /// False: the backend cannot tell (or failed to).
+  virtual bool predict(const SparseMatrix& /*A*/, FactorAnalysis& /*predicted*/) { return false; }
   /// Told each phase of a factorisation as it ends (SparseFactor::setPhaseReport); a backend
   /// that reports none is reported whole by SparseFactor.
   PhaseReport onPhase;

@@ -53,14 +53,29 @@ std::unique_ptr<TimeIntegrator> TimeIntegrator::New(const Dictionary& frictionSo
   return nullptr;  // getChoiceOr accepts only the table's names
 }
 
+void QuasiStatic::restarted(StepHost& host) {
+  // The loads of the restart's time, as the step of that time had them (effects with a state
+  // are at that time already: advancing them there changes nothing).
+  last_ = host.loadsAt(host.stateTime());
+  restartPending_ = true;
+}
+
 void QuasiStatic::advance(StepHost& host, StepResult& r, const StepResult* previous) {
   StepLoads loads = host.loadsAt(r.time);
+  // A restart's first step: the step before it is the one the restart's state file records,
+  // made again bit for bit, so that a step with its loads is reused as in the uninterrupted
+  // run (and not solved again from β = 0, which writes other round-off).
+  StepResult restored;
+  if (!previous && restartPending_ && loads == last_ && host.restoreStep(loads, restored))
+    previous = &restored;
+  restartPending_ = false;
   // Only what changed is recomputed: a step whose loads equal the previous step's has the
   // previous (converged) solution, with β = 0.
   if (previous && loads == last_ && previous->report.status == OptimizerStatus::converged) {
     r.reused = true;
     r.report.status = OptimizerStatus::converged;
     r.relResidual = previous->relResidual;
+    r.equilibrium = previous->equilibrium;
     r.report.tangentStiffness = previous->report.tangentStiffness;
     r.report.stiffnessComponents = previous->report.stiffnessComponents;
     host.keepSolution(loads);

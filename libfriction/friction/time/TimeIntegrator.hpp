@@ -92,6 +92,13 @@ class StepHost {
   /// The step keeps the previous step's solution under `loads`: no slip increment, the
   /// openings stay.
   virtual void keepSolution(const StepLoads& loads) = 0;
+  /// After a restart, for a first step whose loads are those of the restart's time: makes
+  /// the case's last state the one the step of that time ended with, bit for bit (the
+  /// evaluation its state file records), and fills r (status, residual, equilibrium) as that
+  /// step's own result; then keepSolution() reuses it as the uninterrupted run did. False
+  /// where the state file records no such evaluation (the step did not converge, or the
+  /// folder is older): the step is then solved.
+  virtual bool restoreStep(const StepLoads& /*loads*/, StepResult& /*r*/) { return false; }
 
   // For integrators of rate-and-state faults (quasiDynamic):
   /// The time the case's state is at (startTime, a restart's time, or the last step's).
@@ -130,6 +137,8 @@ class TimeIntegrator {
   /// the case's last state at r.time. `previous`: the step before, computed in this run
   /// (nullptr for the run's first step).
   virtual void advance(StepHost& host, StepResult& r, const StepResult* previous) = 0;
+  /// A restarted run, before its first step: the case's state is that of host.stateTime().
+  virtual void restarted(StepHost& /*host*/) {}
   /// Whether the integrator has a state of its own to restart from (written under
   /// 'integrator' in uniform/frictionState).
   virtual bool hasState() const { return false; }
@@ -155,9 +164,12 @@ class QuasiStatic : public TimeIntegrator {
   std::string name() const override { return "quasiStatic"; }
   std::string prepare(StepHost& host) override { return host.prepareSolver(); }
   void advance(StepHost& host, StepResult& r, const StepResult* previous) override;
+  void restarted(StepHost& host) override;
 
  private:
   StepLoads last_;  ///< the loads of the last step advanced to
+  /// A restart's first step may reuse the state of the restart's time (StepHost::restoreStep).
+  bool restartPending_ = false;
 };
 
 }  // namespace friction

@@ -448,6 +448,68 @@ TEST_CASE("linalg SparseFactor cholmod orders as told, once, and says what chose
   CHECK(ldlt.analysis().orderingChoice.empty());
 }
 
+TEST_CASE("linalg SparseFactor predicts cholmod's factor and factors in the predicted order",
+          "[linalg]") {
+  const Eigen::SparseMatrix<double> A = spdMatrix();
+  const Eigen::Index n = A.rows();
+  Eigen::SparseMatrix<double> B, C;
+  border(n, 40, B, C);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  for (const Ordering ordering : {Ordering::amd, Ordering::metis, Ordering::automatic}) {
+    CAPTURE(toString(ordering));
+    SparseFactor plain("cholmod"), predicted("cholmod");
+    plain.setOrdering(ordering, 2);
+    predicted.setOrdering(ordering, 2);
+    REQUIRE(plain.factor(A) == FactorStatus::ok);
+    FactorAnalysis p;
+    REQUIRE(predicted.predict(A, p));
+    // The entries and flops are CHOLMOD's counts from the same ordering and column counts as
+    // the factorisation's: equal, not near. The bytes assume the padding measured in 3D.
+    CHECK(p.entries == plain.analysis().entries);
+    CHECK(p.flops == plain.analysis().flops);
+    CHECK(p.ordering == plain.analysis().ordering);
+    CHECK(p.bytes == 8 * p.entries * SparseFactor::predictedPadding);
+    CHECK(p.orderedGroups == distinctColumns(A));
+    // The factorisation takes the kept ordering (said in the log) and makes the same factor:
+    // the same solution bit for bit.
+    REQUIRE(predicted.factor(A) == FactorStatus::ok);
+    CHECK_THAT(predicted.analysis().orderingChoice,
+               Catch::EndsWith(", ordered once for the prediction"));
+    CHECK(predicted.analysis().entries == plain.analysis().entries);
+    CHECK(predicted.solve(b) == plain.solve(b));
+    // Kept once: the next factorisation orders again, as every factorisation did before.
+    REQUIRE(predicted.factor(A) == FactorStatus::ok);
+    CHECK_THAT(predicted.analysis().orderingChoice,
+               !Catch::Contains("ordered once for the prediction"));
+    // Bordered: the kept ordering of A, then the border last; S as without the prediction.
+    SparseFactor borderedPlain("cholmod"), borderedPredicted("cholmod");
+    borderedPlain.setOrdering(ordering, 2);
+    borderedPredicted.setOrdering(ordering, 2);
+    REQUIRE(borderedPlain.factorWithSchur(A, B, C) == FactorStatus::ok);
+    REQUIRE(borderedPredicted.predict(A, p));
+    REQUIRE(borderedPredicted.factorWithSchur(A, B, C) == FactorStatus::ok);
+    CHECK_THAT(borderedPredicted.analysis().orderingChoice,
+               Catch::EndsWith(", ordered once for the prediction"));
+    CHECK(borderedPredicted.schurComplement() == borderedPlain.schurComplement());
+  }
+  // Another pattern than the predicted one is ordered anew (the kept ordering is not its).
+  SparseFactor f("cholmod");
+  f.setOrdering(Ordering::amd, 2);
+  FactorAnalysis p;
+  REQUIRE(f.predict(A, p));
+  Eigen::SparseMatrix<double> other = A;
+  other.coeffRef(n - 1, 0) = other.coeffRef(0, n - 1) = 1.0;  // a new entry, still SPD
+  REQUIRE(f.factor(other) == FactorStatus::ok);
+  CHECK_THAT(f.analysis().orderingChoice, !Catch::Contains("prediction"));
+  // No prediction where the ordering is CHOLMOD's own (it orders inside its analysis) or the
+  // backend is not cholmod.
+  SparseFactor strategy("cholmod");
+  strategy.setOrdering(Ordering::cholmodDefault, 2);
+  CHECK_FALSE(strategy.predict(A, p));
+  SparseFactor ldlt("simplicialLDLT");
+  CHECK_FALSE(ldlt.predict(A, p));
+}
+
 TEST_CASE("linalg SparseFactor cholmod orders the graph of equal columns wherever they are",
           "[linalg]") {
   // The stiffness with its unknowns shuffled: a node's two components are no longer
