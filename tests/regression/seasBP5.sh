@@ -21,8 +21,13 @@
 #  * law rateState's creepSlipRate: every node beyond the 100 km x 40 km has slipped V_p t
 #    along +x exactly;
 #  * refusals, exit 1 naming the key, nothing written: a station 30 km off the fault,
-#    stations without strike, strike down the dip, profiles, surfaceStations and positiveSlip
-#    in 3D, an arclength station in 3D, a creepDirection normal to the fault.
+#    stations without strike, strike down the dip, profiles and positiveSlip in 3D, a surface
+#    station given (x y) or above the free surface, an arclength station in 3D, a
+#    creepDirection normal to the fault;
+#  * surface stations (3D): the format (seven columns), the faces y = +-100 km, held, at
+#    exactly +-V_p t/2 and +-V_p/2 along x; 1 km either side of the trace above the
+#    nucleation zone, the event's right-lateral motion (+x on the + side, -x on the -), and
+#    at the end time the written volume solution interpolated there (VTK's cell search).
 # Usage: seasBP5.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$1 src=$2 work=$3
@@ -35,11 +40,76 @@ cd "$work/full/bp5"
 ./Allmesh -h 10000 >/dev/null
 "$bin/splitFractureNodes" -case . >log.splitFractureNodes 2>&1
 sed -i 's/^endTime .*/endTime 1e5;/; s/^deltaT .*/deltaT 5e4;/; s/^writeInterval .*/writeInterval 1;/' system/controlDict
+# Surface stations: on the faces y = +-100 km (held, moving +-V_p t/2 along x), and on the free
+# surface 1 km either side of the fault above the nucleation zone.
+sed -i 's/^    seismicSlipRate.*/&\n    surfaceStations { srf_plus (0 100000 -50000); srf_minus (0 -100000 -50000); srf_nucP (-24000 1000 0); srf_nucM (-24000 -1000 0); }/' system/controlDict
+grep -q "srf_nucM" system/controlDict || { echo "FAIL: no surface stations set"; exit 1; }
 mkdir -p "$work/restarted"
 cp -r . "$work/restarted/bp5"
 "$bin/frictionSolver" -case . >log.frictionSolver 2>&1
 out=postProcessing/faultOutput
 [[ $(ls $out/fltst_*.dat | wc -l) == 10 ]] || { echo "FAIL: 10 station files expected"; ls $out; exit 1; }
+grep -q "^Setup: the surface stations' response to the slip (4 stations, 12 back-substitutions, once per run)" log.frictionSolver ||
+  { echo "FAIL: no surface response line: $(grep -a "surface stations" log.frictionSolver)"; exit 1; }
+/usr/bin/python3 - "$out" <<'PY'
+# 3D surface stations: the format, the held faces exactly, the free surface above the event.
+import re, sys
+out = sys.argv[1]
+row = re.compile(r"^ +-?\d\.\d{13}E[+-]\d\d( +-?\d\.\d{6}E[+-]\d\d){6}$")
+data = {}
+for name in ("srf_plus", "srf_minus", "srf_nucP", "srf_nucM"):
+    lines = open(f"{out}/{name}.dat").read().splitlines()
+    head = [l for l in lines if l.startswith("#")]
+    assert len(head) == 8 and lines[8] == "t disp1 disp2 disp3 vel1 vel2 vel3", (name, lines[:10])
+    assert "Displacement along z (m), positive upwards" in lines[4], lines[4]
+    rows = lines[9:]
+    assert len(rows) >= 100, (name, len(rows))
+    for l in rows:
+        assert row.match(l), (name, l)
+    data[name] = [[float(v) for v in l.split()] for l in rows]
+# The faces y = +-100 km are held: u = (+-V_p t/2, 0, 0), v = (+-V_p/2, 0, 0), to the 7 digits
+# written (relative 5e-7) and round-off of the element's weights.
+Vp = 1e-9
+for name, sign in (("srf_plus", 1), ("srf_minus", -1)):
+    for t, u1, u2, u3, v1, v2, v3 in data[name]:
+        assert abs(u1 - sign * Vp * t / 2) <= 5e-7 * Vp * t / 2 + 1e-20, (name, t, u1)
+        assert abs(v1 - sign * Vp / 2) <= 5e-7 * Vp / 2, (name, t, v1)
+        assert max(abs(u2), abs(u3)) <= 1e-12 * max(Vp * t, 1e-20) + 1e-20, (name, t, u2, u3)
+        assert max(abs(v2), abs(v3)) <= 1e-12 * Vp, (name, t, v2, v3)
+# Above the nucleation zone, 1 km either side of the trace: the event moves the + side along +x
+# and the - side along -x (right-lateral, as slip_2 > 0 at strk-24dp+10), by centimetres
+# (slip 0.1 m and more at 10 km depth, 4 km below the velocity-weakening patch's top).
+up, um = data["srf_nucP"][-1], data["srf_nucM"][-1]
+# (Not antisymmetric to better than a factor 3 here: the points are 1 km off the trace in cells
+# of 10 km, whose + and - sides are not mirror images; measured 0.034 and -0.100 m.)
+assert up[1] > 1e-3 and um[1] < -1e-3, (up, um)
+# At the end time the volume is solved: the stations' last rows (u_A + theta (u_B - u_A) +
+# G (s - s_A), G by the adjoint) are the written displacement field interpolated at the points
+# (VTK's own cell search and weights), to the 7 digits written.
+import vtk
+reader = vtk.vtkXMLUnstructuredGridReader()
+reader.SetFileName("VTK/bp5_100000.vtu")
+reader.Update()
+grid = reader.GetOutput()
+field = grid.GetPointData().GetArray("displacement")
+points = {"srf_nucP": (-24000, 1000, 0), "srf_nucM": (-24000, -1000, 0)}
+for name, p in points.items():
+    found = None
+    for cid in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(cid)
+        w = [0.0] * cell.GetNumberOfPoints()
+        if cell.EvaluatePosition(p, [0, 0, 0], vtk.reference(0), [0, 0, 0], vtk.reference(0.0), w) == 1:
+            found = [sum(w[k] * field.GetTuple3(cell.GetPointId(k))[j]
+                         for k in range(cell.GetNumberOfPoints())) for j in range(3)]
+            break
+    assert found is not None, name
+    last = data[name][-1]
+    assert last[0] == 1e5, last
+    scale = max(abs(x) for x in found)
+    assert all(abs(a - b) <= 1e-6 * scale for a, b in zip(last[1:4], found)), (name, last, found)
+print(f"PASS: surface stations: held faces at +-V_p t/2 exactly; above the event disp1 "
+      f"{up[1]:.4g} and {um[1]:.4g} m at the end, the volume solution's there to 1e-6")
+PY
 /usr/bin/python3 - "$out" <<'PY'
 import glob, math, re, sys
 out = sys.argv[1]
@@ -123,7 +193,7 @@ for f in "$work"/full/bp5/postProcessing/faultOutput/*.dat "$work"/full/bp5/[1-9
   cmp -s "$f" "${f/full/restarted}" || { echo "FAIL: restarted ${f#$work/full/} differs"; exit 1; }
   n=$((n + 1))
 done
-((n == 13)) || { echo "FAIL: $n files compared, 13 expected"; exit 1; }
+((n == 17)) || { echo "FAIL: $n files compared, 17 expected"; exit 1; }
 echo "PASS: stopped at 5e4 s and restarted: $n files byte for byte as the uninterrupted run's"
 
 # Refusals: exit 1, the key named, no output folder.
@@ -144,8 +214,10 @@ refuse noStrike '/^    strike /d' "controlDict:.*faultOutput: 3D stations need '
 refuse alongDip 's/^    strike .*/    strike (0 0 1);/' "controlDict:.*faultOutput: strike (0 0 1) runs down the fault's dip"
 refuse profiles 's/^    seismicSlipRate.*/&\n    profiles { from 0; to 40000; spacing 500; interval 1; }/' \
   "controlDict:.*faultOutput: 'profiles' run along a 2D fracture's arclength"
-refuse surface 's/^    seismicSlipRate.*/&\n    surfaceStations { srf (0 1000 0); }/' \
-  "controlDict:.*faultOutput: 'surfaceStations' are written for 2D cases only so far"
+refuse surface 's/^    surfaceStations .*/    surfaceStations { srf (0 1000); }/' \
+  "controlDict:.*surface station 'srf': expected a point (x y z) on a 3D mesh"
+refuse surfaceOutside 's/^    surfaceStations .*/    surfaceStations { srf (0 1000 5000); }/' \
+  "controlDict:.*surface station 'srf' at (0, 1000, 5000): not in the body (no cell holds it)"
 refuse positive 's/^    seismicSlipRate.*/&\n    positiveSlip (1 0 0);/' \
   "controlDict:.*faultOutput: 'positiveSlip' is the 2D key; in 3D give 'strike (x y z)'"
 refuse arclength 's/fltst_strk+00dp+22 (0 0 -22000);/fltst_strk+00dp+22 22000;/' \
@@ -158,4 +230,4 @@ rc=0
 "$bin/frictionSolver" -case . >log 2>&1 || rc=$?
 [[ $rc == 1 ]] && grep -q "constant/fractureProperties: fracture 'fault': creepDirection is normal to the fracture at the node at" log ||
   { echo "FAIL: creepDirection normal to the fault (exit $rc)"; cat log; exit 1; }
-echo "PASS: 3D refusals (off the fault, no strike, strike down the dip, profiles, surface stations, positiveSlip, an arclength, creepDirection normal to the fault)"
+echo "PASS: 3D refusals (off the fault, no strike, strike down the dip, profiles, a 2D surface station, one outside, positiveSlip, an arclength, creepDirection normal to the fault)"

@@ -1955,8 +1955,9 @@ void FrictionCase::buildSurfaceResponse(std::ostream& log) {
   Stopwatch clock;
   const Eigen::SparseMatrix<double>& W = faultSeries_->surfaceOperator();
   surfaceResponse_ = system_->displacementResponse(W);
-  log << "Setup: the surface stations' response to the slip (" << W.rows() / 2 << " stations, "
-      << W.rows() << " back-substitutions, once per run): " << clock.seconds() << " s\n";
+  log << "Setup: the surface stations' response to the slip (" << W.rows() / split_.mesh.dim
+      << " stations, " << W.rows() << " back-substitutions, once per run): " << clock.seconds()
+      << " s\n";
 }
 
 RateStateFault FrictionCase::rateStateFault() {

@@ -173,10 +173,11 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
       x.where = st.location(name);
       const std::vector<Value>& v = st.values(name);
       if (v.size() == 1 && v[0].isList() && v[0].items.size() == 3) {
-        x.in3D = true;  // refused by bind(): 3D surface stations are not written yet
-        (void)st.getScalarList(name);
+        x.in3D = true;  // a 3D mesh's point (bind() checks the dimension)
+        const std::vector<double> c = st.getScalarList(name);
+        x.x = Eigen::Vector3d(c[0], c[1], c[2]);
       } else {
-        x.x = st.getVector(name);
+        x.x.head<2>() = st.getVector(name);
       }
       o.surface_.push_back(x);
     }
@@ -245,10 +246,10 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
                        "faultOutput: 'profiles' run along a 2D fracture's arclength, which a "
                        "fault surface (3D) does not have: remove them (3D writes the stations "
                        "and global.dat)");
-    if (!surface_.empty())
-      throw InputError(surfaceAt_,
-                       "faultOutput: 'surfaceStations' are written for 2D cases only so far: "
-                       "remove them in 3D");
+    for (const Surface& x : surface_)
+      if (!x.in3D)
+        throw InputError(x.where,
+                         "surface station '" + x.name + "': expected a point (x y z) on a 3D mesh");
     if (positiveGiven_)
       throw InputError(positiveAt_,
                        "faultOutput: 'positiveSlip' is the 2D key; in 3D give 'strike (x y z)', "
@@ -319,7 +320,7 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
   }
   if (dim == 3) {
     bind3D(nodes);
-    W_.resize(0, space.numDofs());
+    bindSurface3D(space);
     return;
   }
   for (Station& st : stations_) {
@@ -331,7 +332,7 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
   // element's basis there.
   std::vector<Eigen::Triplet<double>> w;
   for (std::size_t j = 0; j < surface_.size(); ++j) {
-    const Eigen::Vector2d& p = surface_[j].x;
+    const Eigen::Vector2d p = surface_[j].x.head<2>();
     bool found = false;
     for (Index c = 0; c < space.numCells() && !found; ++c) {
       const NodeList cell = space.cellNodes(c);
@@ -496,14 +497,28 @@ void FaultSeries::open(const std::string& caseDir, bool fresh, double restartTim
     const std::string kept = fresh ? "" : keptLines(path, restartTime);
     const char* way = verticalDown_ ? "downwards" : "upwards";
     std::ostringstream h;
-    h << "# libfriction, frictionSolver: surface station '" << st.name << "' at ("
-      << formatNumber(st.x.x()) << ", " << formatNumber(st.x.y()) << ") m\n"
-      << "# Column #1 = Time (s)\n"
-      << "# Column #2 = Displacement along x (m)\n"
-      << "# Column #3 = Displacement along y (m), positive " << way << "\n"
-      << "# Column #4 = Velocity along x (m/s)\n"
-      << "# Column #5 = Velocity along y (m/s), positive " << way << "\n"
-      << "t disp1 disp2 vel1 vel2\n";
+    if (dim_ == 3) {
+      h << "# libfriction, frictionSolver: surface station '" << st.name << "' at ("
+        << formatNumber(st.x.x()) << ", " << formatNumber(st.x.y()) << ", "
+        << formatNumber(st.x.z()) << ") m\n"
+        << "# Column #1 = Time (s)\n"
+        << "# Column #2 = Displacement along x (m)\n"
+        << "# Column #3 = Displacement along y (m)\n"
+        << "# Column #4 = Displacement along z (m), positive " << way << "\n"
+        << "# Column #5 = Velocity along x (m/s)\n"
+        << "# Column #6 = Velocity along y (m/s)\n"
+        << "# Column #7 = Velocity along z (m/s), positive " << way << "\n"
+        << "t disp1 disp2 disp3 vel1 vel2 vel3\n";
+    } else {
+      h << "# libfriction, frictionSolver: surface station '" << st.name << "' at ("
+        << formatNumber(st.x.x()) << ", " << formatNumber(st.x.y()) << ") m\n"
+        << "# Column #1 = Time (s)\n"
+        << "# Column #2 = Displacement along x (m)\n"
+        << "# Column #3 = Displacement along y (m), positive " << way << "\n"
+        << "# Column #4 = Velocity along x (m/s)\n"
+        << "# Column #5 = Velocity along y (m/s), positive " << way << "\n"
+        << "t disp1 disp2 vel1 vel2\n";
+    }
     writeTextAtomic(path, kept.empty() ? h.str() : kept);
     surfaceFiles_.push_back(std::make_unique<AppendFile>(path, false));
   }
@@ -549,6 +564,46 @@ void FaultSeries::open(const std::string& caseDir, bool fresh, double restartTim
       ++j;
     }
   }
+}
+
+// 3D surface stations: the tetrahedron holding the point (the first in the mesh's order; a
+// point on a face or an edge takes that cell's side) and the element's basis there, three rows
+// per station (x, y, z).
+void FaultSeries::bindSurface3D(const LagrangeSpace& space) {
+  std::vector<Eigen::Triplet<double>> w;
+  for (std::size_t j = 0; j < surface_.size(); ++j) {
+    const Eigen::Vector3d& p = surface_[j].x;
+    bool found = false;
+    for (Index c = 0; c < space.numCells() && !found; ++c) {
+      const NodeList cell = space.cellNodes(c);
+      std::array<SimplexPoint<3>, 4> v;
+      for (int i = 0; i < 4; ++i) v[static_cast<std::size_t>(i)] = space.point(cell[i]);
+      // A cheap rejection first: the point outside the cell's bounding box (with a margin).
+      Eigen::Vector3d lo = v[0], hi = v[0];
+      for (const auto& q : v) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+      const double margin = 1e-9 * (hi - lo).norm();
+      if ((p.array() < lo.array() - margin).any() || (p.array() > hi.array() + margin).any())
+        continue;
+      const Simplex<3> tet(v);
+      if (!(std::abs(tet.measure) > 0)) continue;
+      const Barycentric<3> l = tet.barycentric(p);
+      const double tol = 1e-9;
+      if (l[0] < -tol || l[1] < -tol || l[2] < -tol || l[3] < -tol) continue;
+      double phi[SimplexNodes<3>::max];
+      basisValues<3>(space.degree(), l, phi);
+      for (int q = 0; q < cell.size; ++q)
+        for (int comp = 0; comp < 3; ++comp)
+          w.emplace_back(static_cast<Eigen::Index>(3 * j) + comp, space.dof(cell[q], comp), phi[q]);
+      found = true;
+    }
+    if (!found)
+      throw InputError(surface_[j].where, "surface station '" + surface_[j].name + "' at (" +
+                                              formatNumber(p.x()) + ", " + formatNumber(p.y()) +
+                                              ", " + formatNumber(p.z()) +
+                                              "): not in the body (no cell holds it)");
+  }
+  W_.resize(static_cast<Eigen::Index>(3 * surface_.size()), space.numDofs());
+  W_.setFromTriplets(w.begin(), w.end());
 }
 
 void FaultSeries::sample(const RateSample& s) {
@@ -679,6 +734,23 @@ void FaultSeries::sample3D(const RateSample& s, double maxV) {
     appendValue(row, phi[1]);
     appendValue(row, std::log10(L_[u] / V0_[u]) + (psi[i] - f0_[u]) / (b_[u] * std::log(10.0)));
     row += "\n";
+  }
+  if (!surface_.empty() && s.surface) {
+    Eigen::VectorXd du, dv;
+    s.surface(du, dv);
+    const double sz = verticalDown_ ? -1.0 : 1.0;
+    for (std::size_t j = 0; j < surface_.size(); ++j) {
+      std::string& row = surfaceRows_[j];
+      const auto i = static_cast<Eigen::Index>(3 * j);
+      appendTime(row, s.time);
+      appendValue(row, du[i]);
+      appendValue(row, du[i + 1]);
+      appendValue(row, sz * du[i + 2]);
+      appendValue(row, dv[i]);
+      appendValue(row, dv[i + 1]);
+      appendValue(row, sz * dv[i + 2]);
+      row += "\n";
+    }
   }
   double momentRate = 0;
   for (const Eigen::Index i : onFracture_)

@@ -13,6 +13,7 @@
 //       stationInterval 0;  stationSeismicInterval 0;   // least time between rows [s]
 //       profiles        { from 0; to 40000; spacing 500; interval 1.5768e8; seismicInterval 1; }
 //       surfaceStations { srfst_fn+08 (8000 0); srfst_fn+00 (0.001 0); }   // points (x y) [m]
+//                                           // (x y z) in 3D: disp1-3, vel1-3
 //       verticalDown    yes;   // surface stations: disp2, vel2 positive downwards (SEAS's w)
 //   }
 //
@@ -141,9 +142,9 @@ class FaultSeries {
   std::vector<Station> points_;  ///< the profiles' points (name unused)
   struct Surface {
     std::string name;
-    Eigen::Vector2d x;
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();  ///< z = 0 for a point (x y)
     SourceLocation where;
-    bool in3D = false;  ///< given as (x y z): refused, 3D surface stations are not written yet
+    bool in3D = false;  ///< given as (x y z): a 3D mesh's point
   };
   std::vector<Surface> surface_;
   bool verticalDown_ = false;
@@ -172,6 +173,7 @@ class FaultSeries {
                  const std::vector<ControlNode>& nodes) const;
   std::string header(const Station& st) const;
   void bind3D(const std::vector<ControlNode>& nodes);
+  void bindSurface3D(const LagrangeSpace& space);
   void sample3D(const RateSample& s, double maxV);
   /// InputError naming the key unless `name` can be a file of its own in the output folder.
   void checkStationName(const Dictionary& d, const std::string& name,
