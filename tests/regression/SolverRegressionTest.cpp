@@ -849,9 +849,11 @@ TEST_CASE("a part held only through a frictionless fracture: the slip explodes, 
 namespace {
 
 // The paper benchmark with steps that take long (steepest descent to an unreachable tolerance,
-// `iterations` of them per step: about 1 s per 4 000), run and sent SIGTERM after `first`
-// seconds and SIGINT `gap` seconds later; SIGKILL 5 s after that if it still runs ('hung' in
-// log.driver, as 'ended before the second signal' if it ended first). Returns its exit status.
+// `iterations` of them per step: about 1 s per 4 000 on a quiet machine, 2 s beside another
+// job), run and sent SIGTERM after `first` seconds (first < 0: as soon as the log has the line
+// of step 1, so that the signal comes at the start of step 2 whatever the machine's speed) and
+// SIGINT `gap` seconds later; SIGKILL 5 s after that if it still runs ('hung' in log.driver, as
+// 'ended before the second signal' if it ended first). Returns its exit status.
 int signalTwice(Case& c, int iterations, double first, double gap) {
   c.edit("system/frictionSolution", "type +semismoothNewton;", "type steepestDescent;");
   c.edit("system/frictionSolution", "maxIterations +[0-9]+;",
@@ -863,8 +865,12 @@ int signalTwice(Case& c, int iterations, double first, double gap) {
   const std::string dir = c.dir().string();
   std::ostringstream script;
   script << "'" << (bin / "frictionSolver").string() << "' -case '" << dir << "' > '" << dir
-         << "/log.frictionSolver' 2>&1 & pid=$!; sleep " << first << "; kill -TERM $pid; sleep "
-         << gap << "; kill -0 $pid || echo 'ended before the second signal'; kill -INT $pid; "
+         << "/log.frictionSolver' 2>&1 & pid=$!; "
+         << (first < 0 ? "for i in $(seq 1200); do grep -q '^Time = 1 ' '" + dir +
+                             "/log.frictionSolver' && break; sleep 0.05; done"
+                       : "sleep " + std::to_string(first))
+         << "; kill -TERM $pid; sleep " << gap
+         << "; kill -0 $pid || echo 'ended before the second signal'; kill -INT $pid; "
          << "for i in $(seq 50); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done; "
          << "kill -0 $pid 2>/dev/null && { echo hung; kill -KILL $pid; }; wait $pid";
   return run(script.str(), c.dir() / "log.driver");
@@ -894,13 +900,16 @@ TEST_CASE("a second SIGINT/SIGTERM stops within the step, writes nothing of it, 
 
 TEST_CASE("a run stopped between writes says a continuation computes the unwritten steps again",
           "[regression][signals]") {
-  // Steps of about 1 s, none written before the end (writeInterval 100 of 20 steps): signalled
-  // twice in the fourth step or so, the run has computed steps it never wrote, and startFrom
-  // latestTime starts from 0.
+  // Steps of about 5 s, none written before the end (writeInterval 100 of 20 steps): signalled
+  // twice at the start of the second step (once the log has the first), the run has computed a
+  // step it never wrote, and startFrom latestTime starts from 0. (Signalled at fixed times, 3.5
+  // and 3.8 s into steps of 1 s, the run failed beside another job: its steps took 1.8 s, the
+  // first signal came 0.1 s before the end of step 2, which was then written, and the run ended
+  // before the second.)
   Case c("paperBenchmark", "paperBenchmark-unwrittenSteps");
   c.edit("system/controlDict", "endTime +1;", "endTime 20;");
   c.edit("system/controlDict", "writeInterval +1;", "writeInterval 100;");
-  const int rc = signalTwice(c, 4000, 3.5, 0.3);
+  const int rc = signalTwice(c, 20000, -1, 0.3);
   const std::string log = c.log(), driver = readText(c.dir() / "log.driver");
   INFO(log << driver);
   CHECK(rc == 5);
