@@ -126,16 +126,7 @@ case $scenario in
       local name=$1 keys=$2
       shift 2
       auto "$name" "$keys"
-      local before line out rc
-      before=$(listing "$name")
-      line=$(grep -n "^${keys%% *}" "$work/$name/system/frictionSolution" | cut -d: -f1)
-      out=$("$bin/frictionSolver" -case "$work/$name" 2>&1)
-      rc=$?
-      ((rc == 1)) || fail "$name: exit $rc, expected 1: $out"
-      grep -qF "system/frictionSolution:$line" <<<"$out" || fail "$name: no file:line ($line): $out"
-      for e in "$@"; do grep -qF -- "$e" <<<"$out" || fail "$name: no '$e' in: $out"; done
-      [[ $(listing "$name") == "$before" ]] || fail "$name: the case changed: $(comm -3 <(echo "$before") <(listing "$name"))"
-      n=$((n + 1))
+      pennyRefused "$name" "^${keys%% *}" "$@"
     }
     bad explicit "iterativeAbove 1e9; linearSolver cholmod;" "key 'iterativeAbove'" "needs 'linearSolver auto;'"
     bad zero "iterativeAbove 0;" "iterativeAbove"
