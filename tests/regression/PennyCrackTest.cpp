@@ -151,6 +151,26 @@ TEST_CASE(
                                   " fracture control nodes >= " + threshold(log) + ")\n"));
   CHECK_THAT(log, Catch::Contains("GMRES products per Newton iteration"));
   CHECK_THAT(log, !Catch::Contains("jump unknowns last"));
+  {
+    // What the krylov variant holds for the fault, counted: positive in each part, the total
+    // and the per-node figure consistent, and far below the dense S_tt it does without
+    // (8 bytes × (2n)² over n nodes: 32 n bytes per node).
+    std::smatch m;
+    REQUIRE(std::regex_search(
+        log, m,
+        std::regex("fault operator ([0-9.e+-]+) MB counted, ([0-9.e+-]+) kB per fault node "
+                   "\\(probed S ([0-9.e+-]+), its LU ([0-9.e+-]+), products kept ([0-9.e+-]+), "
+                   "GMRES ([0-9.e+-]+)\\)")));
+    const double total = std::stod(m[1]), perNode = std::stod(m[2]);
+    double parts = 0;
+    for (int g = 3; g <= 6; ++g) {
+      CHECK(std::stod(m[g]) > 0);
+      parts += std::stod(m[g]);
+    }
+    CHECK(std::abs(parts - total) <= 0.01 * total);  // each printed to 3 digits
+    CHECK(std::abs(perNode - 1e3 * total / static_cast<double>(nodes)) <= 0.01 * perNode);
+    CHECK(perNode * 1e3 < 0.25 * 32.0 * static_cast<double>(nodes));
+  }
 
   Case c("pennyCrack", "penny-auto-condensed");
   fs::copy_file(k.dir() / msh, c.dir() / msh, fs::copy_options::overwrite_existing);

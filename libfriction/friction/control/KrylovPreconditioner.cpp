@@ -224,7 +224,19 @@ bool KrylovPreconditioner::factor(const ControlProblem& p, const ControlState& s
   G.makeCompressed();
   lu_.compute(G);
   ok_ = lu_.info() == Eigen::Success;
+  if (ok_)
+    largestFactorBytes_ =
+        std::max(largestFactorBytes_, static_cast<double>(lu_.nnzL() + lu_.nnzU()) *
+                                          (sizeof(double) + sizeof(int)));
   return ok_;
+}
+
+double KrylovPreconditioner::probedBytes() const {
+  const auto bytes = [](const Eigen::SparseMatrix<double, Eigen::RowMajor>& m) {
+    return static_cast<double>(m.nonZeros()) * (sizeof(double) + sizeof(int)) +
+           static_cast<double>(m.outerSize() + 1) * sizeof(int);
+  };
+  return bytes(S_.Stt) + bytes(S_.Snt);
 }
 
 Eigen::VectorXd KrylovPreconditioner::apply(const Eigen::VectorXd& v) const {

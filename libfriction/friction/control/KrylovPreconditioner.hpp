@@ -73,11 +73,16 @@ class KrylovPreconditioner {
               const std::vector<Eigen::Index>& active);
   /// G̃⁻¹ v (v on the active components).
   Eigen::VectorXd apply(const Eigen::VectorXd& v) const;
+  /// Bytes held by the probed S (values and indices), counted from its arrays.
+  double probedBytes() const;
+  /// Bytes of the largest sparse LU factored so far (values and row indices of L and U).
+  double largestFactorBytes() const { return largestFactorBytes_; }
 
  private:
   ProbedInterfaceOperator S_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
   bool ok_ = false;
+  double largestFactorBytes_ = 0;
 };
 
 }  // namespace friction

@@ -898,6 +898,7 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   };
   std::deque<Kept> recycled;
   constexpr std::size_t maxRecycled = 60;
+  double heldKept = 0, heldGmres = 0;  // the largest of an iteration, for the log
   for (int it = 1; it <= stop_.maxIterations; ++it) {
     if (converged(p, s, lastStep)) {
       if (p.gamma() == gammaCase) {
@@ -1003,6 +1004,14 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
           gmres(applyActive, rhs, eta, static_cast<int>(std::min<Eigen::Index>(4 * m, 2000)), made,
                 precondition, U, AU);
       if (!delta.reached) capped.push_back(it);
+      // What this iteration held for the fault, counted from the arrays' sizes: the step's
+      // products (vector, S_tt and S_nt of it) and GMRES's (its basis V, Z of the restart
+      // length, the recycled U, A U and their basis Q).
+      const double kept = static_cast<double>(recycled.size() + calls.size()) *
+                          static_cast<double>(2 * size + n) * sizeof(double);
+      const double basis = static_cast<double>(2 * std::min<Eigen::Index>(60, m) + 1 + 3 * p0) *
+                           static_cast<double>(m) * sizeof(double);
+      if (kept + basis > heldKept + heldGmres) heldKept = kept, heldGmres = basis;
       for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta.x[a];
       for (std::size_t j = 0; j < calls.size(); ++j) {
         if (delta.weights[j] == 0) continue;
@@ -1040,6 +1049,14 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   // The cost of each Newton iteration in dual solves (deterministic: tests assert it).
   if (!products.empty()) {
     std::ostringstream note;
+    // The fault's memory beyond the body's solver (issue 29's bytes per fault node).
+    const double probed = krylovPreconditioner_ ? krylovPreconditioner_->probedBytes() : 0.0,
+                 lu = krylovPreconditioner_ ? krylovPreconditioner_->largestFactorBytes() : 0.0,
+                 held = probed + lu + heldKept + heldGmres;
+    note << std::setprecision(3) << "fault operator " << held / 1e6 << " MB counted, "
+         << held / 1e3 / static_cast<double>(n) << " kB per fault node (probed S "
+         << probed / 1e6 << ", its LU " << lu / 1e6 << ", products kept " << heldKept / 1e6
+         << ", GMRES " << heldGmres / 1e6 << "); ";
     note << "GMRES products per Newton iteration:";
     for (const int c : products) note << " " << c;
     // A GMRES that stopped at its limit short of its tolerance: the preconditioner does not
