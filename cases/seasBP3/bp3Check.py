@@ -55,7 +55,7 @@ FDRA = {
 
 
 # FDRA's surface stations (another FDRA run, Y. Sun 2021, same repository:
-# cattania_srfst_fn_{p0,n16,p16}_T60.txt): per event (|v| >= 1e-4 m/s, windows less than a
+# cattania_srfst_fn_{p0,n16,p16}_{T60,N30}.txt): per event (|v| >= 1e-4 m/s, windows less than a
 # day apart merged) the offsets (disp1, disp2) [m], disp2 = w positive downwards. Reported,
 # not checked.
 FDRA_SURFACE = {
@@ -63,6 +63,11 @@ FDRA_SURFACE = {
         "srfst_fn+00": [(-0.240, -2.399), (-0.136, -1.363), (-0.150, -1.506), (-0.162, -1.624)],
         "srfst_fn-16": [(0.158, 0.062), (0.744, 0.194), (0.490, 0.137), (0.541, 0.151)],
         "srfst_fn+16": [(0.040, -0.062), (-0.198, -0.102), (-0.095, -0.084), (-0.106, -0.092)],
+    },
+    ("normal", 30): {
+        "srfst_fn+00": [(1.923, 1.425), (1.463, 1.084), (1.848, 1.369), (1.457, 1.079)],
+        "srfst_fn-16": [(-0.494, -0.064), (-0.380, -0.049), (-0.476, -0.062), (-0.379, -0.049)],
+        "srfst_fn+16": [(0.944, -0.266), (0.725, -0.212), (0.905, -0.254), (0.721, -0.211)],
     },
 }
 

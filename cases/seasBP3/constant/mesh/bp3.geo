@@ -13,6 +13,14 @@
 //
 // Mesh size: h on the fault's first Wf (Round(Wf/h) equal segments), growing with the distance
 // d from it as h + grading * d, at most hFar.
+//
+// The body stands for the half-space: its sides, held at the rigid motion, take the place of
+// the far field, where an event's displacement decays only as 1/distance in 2D. With tandem's
+// 400 km (the default) an event's surface offsets near the fault are shifted by a few cm (0.04
+// m down at 16 km for a 3.4 m event of the 30-degree normal case) against the boundary-element
+// code FDRA; with D = W = 6400e3 and hFar = 150e3 they are FDRA's to 3 mm
+// (cases/seasBP3/README.md). There Frontal-Delaunay made flat triangles of three fault nodes at
+// h = 25 m (splitFractureNodes refuses them, naming the element).
 // Usage: gmsh -2 -format msh41 -setnumber h 100 bp3.geo -o bp3.msh
 
 DefineConstant[
