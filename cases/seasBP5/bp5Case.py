@@ -21,6 +21,10 @@ p.add_argument("--years", type=float, default=1800.0)
 p.add_argument("--deltaT-years", type=float, default=10.0)
 p.add_argument("--tolerance", type=float, default=1e-8)
 p.add_argument("--order", type=int, choices=[1, 2], default=1)
+# The body's half-length along strike and depth (bp5.geo's X and Z): the creeping plane's
+# field reaches them.
+p.add_argument("--X", type=float, default=200e3)
+p.add_argument("--Z", type=float, default=100e3)
 args = p.parse_args()
 
 year = 365 * 24 * 3600.0
@@ -79,8 +83,8 @@ for i in range(nx + 1):
 # Where the fault creeps at V_p: the plane y = 0 beyond the rectangle (|x| > 50 km or depth >
 # 40 km); 0 on the rectangle, whose nodes lie on rows. Rows every 500 m to 10 km from it (the
 # outer nodes nearest to it are a cell away: their nearest row is an outer one), every 5 km
-# farther, to the body's sides (200 km) and bottom (100 km).
-X, Z = 200e3, 100e3
+# farther, to the body's sides (X, 200 km by default) and bottom (Z, 100 km).
+X, Z = args.X, args.Z
 creep = []
 for spacing, reach in ((500.0, 10e3), (5e3, None)):
     for i in range(int(round(2 * X / spacing)) + 1):
@@ -101,7 +105,7 @@ for name, r in rows.items():
         f.write("\n".join(r) + "\n")
 
 
-def field(name, maxDistance=4e5):
+def field(name, maxDistance=2 * max(args.X, args.Z)):
     return '{ type points; file "constant/bp5-%s.dat"; maxDistance %g; }' % (name, maxDistance)
 
 
