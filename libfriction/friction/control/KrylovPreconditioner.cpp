@@ -2,6 +2,8 @@
 // (KrylovPreconditioner.hpp).
 #include "friction/control/KrylovPreconditioner.hpp"
 
+#include <cholmod.h>
+
 #include <algorithm>
 #include <deque>
 
@@ -192,6 +194,51 @@ double newtonGamma(const ControlProblem& p, const Eigen::VectorXd& diagonalStt) 
   return gammaCase;
 }
 
+void NestedDissectionOrdering::operator()(const Eigen::SparseMatrix<double>& A,
+                                          PermutationType& perm) const {
+  const Eigen::Index n = A.cols();
+  perm.resize(n);
+  if (n == 0) return;
+  // The upper triangle of the pattern of A + Aᵀ (values 1: only the pattern counts), as a
+  // symmetric CHOLMOD matrix with 64-bit indices.
+  Eigen::SparseMatrix<double> pattern = A.cwiseAbs();
+  const Eigen::SparseMatrix<double> transposed = pattern.transpose();
+  pattern += transposed;
+  Eigen::SparseMatrix<double> upper = pattern.triangularView<Eigen::Upper>();
+  upper.makeCompressed();
+  std::vector<SuiteSparse_long> p(upper.outerIndexPtr(), upper.outerIndexPtr() + n + 1),
+      i(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
+  std::vector<double> x(static_cast<std::size_t>(upper.nonZeros()), 1.0);
+  cholmod_sparse view{};
+  view.nrow = view.ncol = static_cast<std::size_t>(n);
+  view.nzmax = static_cast<std::size_t>(upper.nonZeros());
+  view.p = p.data();
+  view.i = i.data();
+  view.x = x.data();
+  view.stype = 1;
+  view.itype = CHOLMOD_LONG;
+  view.xtype = CHOLMOD_REAL;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = 1;
+  view.packed = 1;
+  std::vector<SuiteSparse_long> order(static_cast<std::size_t>(n));
+  cholmod_common cm;
+  cholmod_l_start(&cm);
+  cm.print = 0;
+  cm.error_handler = nullptr;
+  bool ok = cholmod_l_metis(&view, nullptr, 0, 1, order.data(), &cm) != 0;
+  if (!ok) ok = cholmod_l_amd(&view, nullptr, 0, order.data(), &cm) != 0;
+  cholmod_l_finish(&cm);
+  if (!ok) {  // no ordering: the identity (the factor is exact all the same)
+    perm.setIdentity(n);
+    return;
+  }
+  // order[k] is the column placed k-th.
+  for (Eigen::Index k = 0; k < n; ++k)
+    perm.indices()[static_cast<Eigen::Index>(order[static_cast<std::size_t>(k)])] =
+        static_cast<int>(k);
+}
+
 bool KrylovPreconditioner::factor(const ControlProblem& p, const ControlState& s,
                                   const std::vector<Eigen::Index>& active) {
   const Eigen::Index k = p.blockSize(), m = static_cast<Eigen::Index>(active.size());
@@ -226,8 +273,8 @@ bool KrylovPreconditioner::factor(const ControlProblem& p, const ControlState& s
   ok_ = lu_.info() == Eigen::Success;
   if (ok_)
     largestFactorBytes_ =
-        std::max(largestFactorBytes_, static_cast<double>(lu_.nnzL() + lu_.nnzU()) *
-                                          (sizeof(double) + sizeof(int)));
+        std::max(largestFactorBytes_,
+                 static_cast<double>(lu_.nnzL() + lu_.nnzU()) * (sizeof(double) + sizeof(int)));
   return ok_;
 }
 

@@ -1054,9 +1054,9 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
                  lu = krylovPreconditioner_ ? krylovPreconditioner_->largestFactorBytes() : 0.0,
                  held = probed + lu + heldKept + heldGmres;
     note << std::setprecision(3) << "fault operator " << held / 1e6 << " MB counted, "
-         << held / 1e3 / static_cast<double>(n) << " kB per fault node (probed S "
-         << probed / 1e6 << ", its LU " << lu / 1e6 << ", products kept " << heldKept / 1e6
-         << ", GMRES " << heldGmres / 1e6 << "); ";
+         << held / 1e3 / static_cast<double>(n) << " kB per fault node (probed S " << probed / 1e6
+         << ", its LU " << lu / 1e6 << ", products kept " << heldKept / 1e6 << ", GMRES "
+         << heldGmres / 1e6 << "); ";
     note << "GMRES products per Newton iteration:";
     for (const int c : products) note << " " << c;
     // A GMRES that stopped at its limit short of its tolerance: the preconditioner does not

@@ -2,6 +2,7 @@
 // and the probed entries against the dense S where S is zero beyond the kept distance.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -191,4 +192,49 @@ TEST_CASE("newtonGamma: the mean diagonal in 3D where the case's gamma is far be
   CHECK(newtonGamma(p3, d) == Approx(11.0));
   ControlProblem stiff(b3, mu, c, 1.0, 0, GradientKind::exact);  // not < 1e-2 × 11
   CHECK(newtonGamma(stiff, d) == 1.0);
+}
+
+TEST_CASE("the preconditioner's ordering: a permutation, and less fill than COLAMD on a surface",
+          "[control][krylov]") {
+  // A fault-like pattern: an nx × ny grid, two components per node, coupled to the nodes
+  // within one hop (the probed S̃'s pattern at probingDistance 1), diagonally dominant.
+  const int nx = 60, ny = 50, k = 2;
+  const Graph g = grid(nx, ny);
+  const Index n = static_cast<Index>(g.size()), size = k * n;
+  std::vector<Eigen::Triplet<double>> t;
+  for (Index i = 0; i < n; ++i)
+    for (Index a = 0; a < k; ++a) {
+      t.emplace_back(k * i + a, k * i + a, 10.0);
+      t.emplace_back(k * i + a, k * i + (a + 1) % k, 0.5);
+      for (const Index j : g[static_cast<std::size_t>(i)])
+        for (Index b = 0; b < k; ++b) t.emplace_back(k * i + a, k * j + b, a == b ? -1.0 : 0.2);
+    }
+  Eigen::SparseMatrix<double> A(size, size);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  NestedDissectionOrdering::PermutationType perm;
+  NestedDissectionOrdering()(A, perm);
+  REQUIRE(perm.size() == size);
+  std::vector<int> seen(static_cast<std::size_t>(size), 0);
+  for (Index c = 0; c < size; ++c) {
+    const int to = perm.indices()[c];
+    REQUIRE(to >= 0);
+    REQUIRE(to < size);
+    ++seen[static_cast<std::size_t>(to)];
+  }
+  CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, NestedDissectionOrdering> nd;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> colamd;
+  nd.compute(A);
+  colamd.compute(A);
+  REQUIRE(nd.info() == Eigen::Success);
+  REQUIRE(colamd.info() == Eigen::Success);
+  const VectorXd x = VectorXd::LinSpaced(size, -1, 1);
+  const VectorXd b = A * x;
+  CHECK((nd.solve(b) - x).norm() <= 1e-12 * x.norm());
+  // The fill: measured 2.2 against 3.7 kB per node on a 4 178-node fault (README); on this
+  // grid too nested dissection must leave fewer entries than COLAMD.
+  INFO("nested dissection " << nd.nnzL() + nd.nnzU() << ", COLAMD "
+                            << colamd.nnzL() + colamd.nnzU());
+  CHECK(nd.nnzL() + nd.nnzU() < colamd.nnzL() + colamd.nnzU());
 }
