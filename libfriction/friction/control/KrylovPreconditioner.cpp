@@ -2,13 +2,12 @@
 // (KrylovPreconditioner.hpp).
 #include "friction/control/KrylovPreconditioner.hpp"
 
-#include <cholmod.h>
-
 #include <algorithm>
 #include <deque>
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/StopRequest.hpp"
+#include "friction/linalg/SparseFactorBackend.hpp"
 
 namespace friction {
 
@@ -197,43 +196,18 @@ double newtonGamma(const ControlProblem& p, const Eigen::VectorXd& diagonalStt) 
 void NestedDissectionOrdering::operator()(const Eigen::SparseMatrix<double>& A,
                                           PermutationType& perm) const {
   const Eigen::Index n = A.cols();
-  perm.resize(n);
-  if (n == 0) return;
-  // The upper triangle of the pattern of A + Aᵀ (values 1: only the pattern counts), as a
-  // symmetric CHOLMOD matrix with 64-bit indices.
+  // METIS on the pattern of A + Aᵀ (the factorisation's own ordering, metisOrdering); where
+  // CHOLMOD cannot order, Eigen's COLAMD, SparseLU's default.
   Eigen::SparseMatrix<double> pattern = A.cwiseAbs();
   const Eigen::SparseMatrix<double> transposed = pattern.transpose();
   pattern += transposed;
-  Eigen::SparseMatrix<double> upper = pattern.triangularView<Eigen::Upper>();
-  upper.makeCompressed();
-  std::vector<SuiteSparse_long> p(upper.outerIndexPtr(), upper.outerIndexPtr() + n + 1),
-      i(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
-  std::vector<double> x(static_cast<std::size_t>(upper.nonZeros()), 1.0);
-  cholmod_sparse view{};
-  view.nrow = view.ncol = static_cast<std::size_t>(n);
-  view.nzmax = static_cast<std::size_t>(upper.nonZeros());
-  view.p = p.data();
-  view.i = i.data();
-  view.x = x.data();
-  view.stype = 1;
-  view.itype = CHOLMOD_LONG;
-  view.xtype = CHOLMOD_REAL;
-  view.dtype = CHOLMOD_DOUBLE;
-  view.sorted = 1;
-  view.packed = 1;
-  std::vector<SuiteSparse_long> order(static_cast<std::size_t>(n));
-  cholmod_common cm;
-  cholmod_l_start(&cm);
-  cm.print = 0;
-  cm.error_handler = nullptr;
-  bool ok = cholmod_l_metis(&view, nullptr, 0, 1, order.data(), &cm) != 0;
-  if (!ok) ok = cholmod_l_amd(&view, nullptr, 0, order.data(), &cm) != 0;
-  cholmod_l_finish(&cm);
-  if (!ok) {  // no ordering: the identity (the factor is exact all the same)
-    perm.setIdentity(n);
+  std::vector<long> order;
+  if (!metisOrdering(pattern, order)) {
+    Eigen::COLAMDOrdering<int>()(A, perm);
     return;
   }
-  // order[k] is the column placed k-th.
+  // order[k] is the column placed k-th; SparseLU wants perm.indices()(column) = position.
+  perm.resize(n);
   for (Eigen::Index k = 0; k < n; ++k)
     perm.indices()[static_cast<Eigen::Index>(order[static_cast<std::size_t>(k)])] =
         static_cast<int>(k);

@@ -11,9 +11,9 @@
 // iteration the sparse Jacobian on the active components (ControlProblem::jacobianEntry's
 // formula with the probed S) is factored by a sparse LU and applied as a right preconditioner.
 // Its columns are ordered by nested dissection of the Jacobian's symmetric pattern (METIS, as
-// CHOLMOD holds it; AMD where CHOLMOD has no METIS): the fault is a surface, whose graph
+// CHOLMOD holds it; COLAMD where CHOLMOD cannot order): the fault is a surface, whose graph
 // nested dissection orders with the least fill (measured in README "The fault operator's
-// memory, counted": at 15 996 nodes 46.8 MB against COLAMD's 83.9 MB).
+// memory, counted": at 15 996 nodes 46.7 MB against COLAMD's 83.9 MB).
 #pragma once
 
 #include <vector>
@@ -67,8 +67,9 @@ Eigen::VectorXd sampledDiagonal(SlipResponse& resp,
 double newtonGamma(const ControlProblem& p, const Eigen::VectorXd& diagonalStt);
 
 /// The column ordering of the preconditioner's SparseLU (Eigen's OrderingType): nested
-/// dissection of the pattern of A + Aᵀ by CHOLMOD's METIS, or CHOLMOD's AMD where METIS is not
-/// available. perm.indices()(old column) = new position, the convention SparseLU applies.
+/// dissection of the pattern of A + Aᵀ by CHOLMOD's METIS (metisOrdering), or COLAMD where
+/// CHOLMOD cannot order. perm.indices()(old column) = new position, the convention SparseLU
+/// applies.
 struct NestedDissectionOrdering {
   using PermutationType = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
   void operator()(const Eigen::SparseMatrix<double>& A, PermutationType& perm) const;
