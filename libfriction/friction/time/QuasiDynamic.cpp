@@ -14,6 +14,7 @@
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
 #include "friction/law/RateState.hpp"
+#include "friction/linalg/DenseProduct.hpp"
 #include "friction/output/FaultSeries.hpp"
 
 namespace friction {
@@ -103,15 +104,19 @@ std::string QuasiDynamic::prepare(StepHost& host) {
     built = s.str();
   }
   const Eigen::Index kn = k * ns;  // the right-hand side's S_tt: kn × kn
+  // What the dense products run on (DenseProduct.hpp): the kernel and its threads.
+  const std::string denseKernel =
+      " (dense products: " + describeDenseProduct(static_cast<long>((k + 1) * ns * kn)) + ")";
   if (choice_ == OperatorChoice::automatic) {
     hierarchical_ = kn >= autoHierarchicalFrom;
     if (!hierarchical_)
       return (built.empty() ? std::string() : built + "; ") +
              "S of the right-hand side dense (faultOperator auto: S_tt " + std::to_string(kn) +
              " x " + std::to_string(kn) + ", below " + std::to_string(autoHierarchicalFrom) +
-             " rows)";
+             " rows)" + denseKernel;
   }
-  if (!hierarchical_) return built;
+  if (!hierarchical_)
+    return (built.empty() ? std::string("S of the right-hand side dense") : built) + denseKernel;
   // Compressed once per run: rows [τ (k·ns); σ_n (ns)] and columns (k·ns) belong to the moved
   // nodes (all of them unless reduced_).
   std::vector<Eigen::Index> rowPoint(static_cast<std::size_t>(kn + ns)),
@@ -144,7 +149,7 @@ std::string QuasiDynamic::prepare(StepHost& host) {
     s << (built.empty() ? std::string() : built + "; ")
       << "S of the right-hand side dense (faultOperator auto: S_tt " << kn << " rows; an H-matrix "
       << "would store " << std::fixed << std::setprecision(1) << 100 * share
-      << " % of its entries, more than " << 100 * autoHierarchicalShare << " %)";
+      << " % of its entries, more than " << 100 * autoHierarchicalShare << " %)" << denseKernel;
     H_.reset();
     hierarchical_ = false;
     return s.str();
@@ -153,16 +158,17 @@ std::string QuasiDynamic::prepare(StepHost& host) {
   // several: this machine is shared), and how far apart the two are on a slip of every node.
   Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(kn, -1.0, 1.0).array().sin();
   for (Eigen::Index c = 0; c < kn; ++c) x[c] *= fault.componentMask[k * node(c / k) + c % k];
-  Eigen::VectorXd yH, yT, yN;
+  Eigen::VectorXd yH, yT, yN, yD;
   double denseBest = 1e300, hBest = 1e300;
   for (int rep = 0; rep < 5; ++rep) {
     const auto c0 = std::chrono::steady_clock::now();
     if (reduced_) {
-      yT.noalias() = Ssolved_.topRows(kn) * x;
-      yN.noalias() = Ssolved_.bottomRows(ns) * x;
+      denseProduct(Ssolved_, x, yD);
     } else {
-      yT.noalias() = S.Stt * x;
-      yN.noalias() = S.Snt * x;
+      denseProduct(S.Stt, x, yT);
+      denseProduct(S.Snt, x, yN);
+      yD.resize(kn + ns);
+      yD << yT, yN;
     }
     const auto c1 = std::chrono::steady_clock::now();
     H_->multiply(x, yH);
@@ -170,8 +176,6 @@ std::string QuasiDynamic::prepare(StepHost& host) {
     denseBest = std::min(denseBest, std::chrono::duration<double>(c1 - c0).count());
     hBest = std::min(hBest, std::chrono::duration<double>(c2 - c1).count());
   }
-  Eigen::VectorXd yD(kn + ns);
-  yD << yT, yN;
   std::ostringstream s;
   s << (built.empty() ? std::string() : built + "; ") << "S_tt and S_nt of the right-hand side "
     << (choice_ == OperatorChoice::automatic
@@ -239,7 +243,7 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
       if (H_)
         H_->multiply(x, y);
       else
-        y.noalias() = Ssolved_ * x;
+        denseProduct(Ssolved_, x, y);
       y += (t - tA) * creep;
       dtau.setZero(kn);
       dsigma.setZero(n);
@@ -254,8 +258,8 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
       dtau = y.head(kn);
       dsigma = y.tail(n);
     } else {
-      dtau.noalias() = S.Stt * ds;
-      dsigma.noalias() = S.Snt * ds;
+      denseProduct(S.Stt, ds, dtau);
+      denseProduct(S.Snt, ds, dsigma);
     }
   };
 
