@@ -265,12 +265,23 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
 
   // The slip rate of every free component at (t, s, ψ), into V (k·n); false where a node's
   // balance has no solution (σ̄ ≤ 0: the fault opens; a law's solve failed).
+  // The last right-hand side's elastic increment, kept for the fault outputs: the embedded
+  // Runge–Kutta pairs evaluate at each accepted step's end (first same as last), where the
+  // outputs sample, so the sample needs no product of its own.
+  struct LastIncrement {
+    double t = std::numeric_limits<double>::quiet_NaN();
+    Eigen::VectorXd s, dtau, dsigma;
+  } last;
   const auto slipRates = [&](double t, const Eigen::VectorXd& s, const Eigen::VectorXd& psi,
                              Eigen::VectorXd& V) {
     const double theta = span > 0 ? (t - tA) / span : 1.0;
     const Eigen::VectorXd ds = (s - sA).cwiseProduct(mask);
     Eigen::VectorXd tau, sigma;
     elasticIncrement(ds, t, tau, sigma);
+    last.t = t;
+    last.s = s;
+    last.dtau = tau;
+    last.dsigma = sigma;
     tau += tauA + theta * (tauB - tauA);
     sigma += sigmaA + theta * (sigmaB - sigmaA);
     const Eigen::VectorXd p = loadsA.pressure + theta * (loadsB.pressure - loadsA.pressure);
@@ -347,7 +358,14 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     smp.traction = [&](Eigen::Index i, Eigen::VectorXd& tau, double& sigmaEff) {
       const bool product =
           (H_ || reduced_) && (!reduced_ || solvedIndex_[static_cast<std::size_t>(i)] >= 0);
-      if (product && dtau.size() == 0) elasticIncrement(ds, t, dtau, dsigma);
+      if (product && dtau.size() == 0) {
+        if (last.t == t && last.s.size() == s.size() && last.s == s) {
+          dtau = last.dtau;  // the same product, made by the step's last stage
+          dsigma = last.dsigma;
+        } else {
+          elasticIncrement(ds, t, dtau, dsigma);
+        }
+      }
       tau.resize(k);
       for (int c = 0; c < k; ++c) {
         const Eigen::Index row = k * i + c;
