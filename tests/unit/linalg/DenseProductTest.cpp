@@ -85,7 +85,8 @@ TEST_CASE("denseProduct: a strided x, and empty shapes", "[linalg][denseProduct]
 // Eigen's own product against denseProduct on one thread and on denseProductThreads(), each
 // the best of several alternated repetitions in this one run (the machine is shared):
 //   build/tests/unitTests "[denseProductBenchmark]"
-TEST_CASE("denseProduct: cost against Eigen's product at BP5's sizes", "[.][denseProductBenchmark]") {
+TEST_CASE("denseProduct: cost against Eigen's product at BP5's sizes",
+          "[.][denseProductBenchmark]") {
   ThreadsRestored restore;
   const int threads = denseProductThreads();
   std::printf("%8s %8s %8s %12s %12s %12s %8s %8s\n", "ns", "rows", "cols", "Eigen [ms]",
