@@ -371,6 +371,10 @@ OptimizerReport Lbfgs::minimize(ControlProblem& p, Eigen::VectorXd& beta) {
 
 namespace {
 
+/// GMRES's restart length: the Arnoldi basis holds at most this many vectors (and as many
+/// preconditioned ones, flexible GMRES), which the krylov variant's memory count reads.
+constexpr Eigen::Index gmresRestart = 60;
+
 // Restarted GMRES for a small nonsymmetric system A x = b given by its action; x starts at 0.
 // With a right preconditioner M (x = M u, GMRES on A M u = b) the residual it judges is still
 // b − A x. Stops at ‖b − A x‖ ≤ tol ‖b‖ or after maxProducts products with A; `products`
@@ -396,7 +400,8 @@ GmresAnswer gmres(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& 
                   const Eigen::VectorXd& b, double tol, int maxProducts, int& products,
                   const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& M = nullptr,
                   const Eigen::MatrixXd& U = Eigen::MatrixXd(),
-                  const Eigen::MatrixXd& AU = Eigen::MatrixXd(), int restart = 60) {
+                  const Eigen::MatrixXd& AU = Eigen::MatrixXd(),
+                  int restart = static_cast<int>(gmresRestart)) {
   const Eigen::Index n = b.size();
   GmresAnswer out{Eigen::VectorXd::Zero(n), {}, Eigen::VectorXd::Zero(U.cols())};
   Eigen::VectorXd& x = out.x;
@@ -1009,8 +1014,9 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
       // length, the recycled U, A U and their basis Q).
       const double kept = static_cast<double>(recycled.size() + calls.size()) *
                           static_cast<double>(2 * size + n) * sizeof(double);
-      const double basis = static_cast<double>(2 * std::min<Eigen::Index>(60, m) + 1 + 3 * p0) *
-                           static_cast<double>(m) * sizeof(double);
+      const double basis =
+          static_cast<double>(2 * std::min<Eigen::Index>(gmresRestart, m) + 1 + 3 * p0) *
+          static_cast<double>(m) * sizeof(double);
       if (kept + basis > heldKept + heldGmres) heldKept = kept, heldGmres = basis;
       for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta.x[a];
       for (std::size_t j = 0; j < calls.size(); ++j) {
