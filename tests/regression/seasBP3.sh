@@ -20,7 +20,9 @@
 #    case and backwards in the 30-degree normal one, whose shear starts at -26.546122 MPa;
 #  * refusals: faultOutput in a quasiStatic case, a station off the fault, law creep without
 #    quasiDynamic, a creep direction normal to the fault, two stations of one name: exit 1,
-#    the key named, nothing written.
+#    the key named, nothing written;
+#  * bp3.geo's near-fault region: a 6 400 km body at h = 25 m splits, wholly meshed; its
+#    bad values refused.
 # Usage: seasBP3.sh BIN_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 bin=$1 src=$2 work=$3
@@ -171,3 +173,39 @@ refuse "$work/bad" "constant/fractureProperties" "law creep's direction is norma
 fresh; sed -i 's/srfst_fn+08 (8000 0);/fltst_dp075 (8000 0);/' "$work/bad/system/controlDict"
 refuse "$work/bad" "system/controlDict" "surface station 'fltst_dp075': a station's name is its file's name"
 echo "PASS: refusals"
+
+# The near-fault region (bp3.geo's `inner`): a body of 6 400 km, FDRA's half-space to 3 mm at
+# the surface stations (README "The body's size"), meshed at the benchmark's h = 25 m with a
+# region of 100 km around the fault, splits at both dips and with two materials (the whole
+# body meshed: splitFractureNodes' area 2W·D and top 2W to 1e-9, the fault 40 km long);
+# `inner` with `layer`, or no deeper than the rate-and-state part, is refused by gmsh.
+mkdir -p "$work/inner"
+cp -r "$src/cases/seasBP3" "$work/inner/bp3"
+cd "$work/inner/bp3"
+./Allclean >/dev/null
+for mesh in "30 0" "60 0" "60 1"; do
+  read -r dip bim <<<"$mesh"
+  /usr/bin/python3 bp3Case.py --dip "$dip" >/dev/null
+  ./Allmesh -h 25 -dip "$dip" -W 6400e3 -D 6400e3 -hFar 150e3 -inner 100e3 -bimaterial "$bim" >/dev/null ||
+    { echo "FAIL: gmsh at dip $dip (bimaterial $bim)"; cat log.gmsh; exit 1; }
+  "$bin/splitFractureNodes" -case . -overwrite >log.splitFractureNodes 2>&1 ||
+    { echo "FAIL: the split at dip $dip (bimaterial $bim)"; cat log.splitFractureNodes; exit 1; }
+  /usr/bin/python3 - log.splitFractureNodes "$dip" <<'PY'
+import re, sys
+log = open(sys.argv[1]).read()
+W = D = 6400e3
+area = float(re.search(r"^\s+area:\s+(\S+)", log, re.M).group(1))
+top = float(re.search(r"^\s+top\s+\d+\s+\d+\s+(\S+)\s+boundary", log, re.M).group(1))
+fault = float(re.search(r"^\s+fault\s+\d+\s+\d+\s+(\S+)\s+fracture", log, re.M).group(1))
+bad = []
+if abs(area - 2 * W * D) > 1e-9 * 2 * W * D: bad.append(f"area {area} against 2WD = {2 * W * D}")
+if abs(top - 2 * W) > 1e-9 * 2 * W: bad.append(f"top {top} against 2W = {2 * W}")
+if abs(fault - 40e3) > 1e-6: bad.append(f"fault {fault} m against 40 km")
+if bad: sys.exit("FAIL (dip %s): " % sys.argv[2] + "; ".join(bad))
+PY
+done
+if ./Allmesh -h 100 -inner 100e3 -layer 5000 >/dev/null 2>&1; then echo "FAIL: inner with layer meshed"; exit 1; fi
+grep -q "'inner' and 'layer' cannot be combined" log.gmsh || { echo "FAIL: no reason for inner with layer"; cat log.gmsh; exit 1; }
+if ./Allmesh -h 100 -inner 20e3 >/dev/null 2>&1; then echo "FAIL: inner of 20 km meshed (the fault's rate-and-state part is 34.6 km deep)"; exit 1; fi
+grep -q "'inner' must be deeper than the rate-and-state part" log.gmsh || { echo "FAIL: no reason for a shallow inner"; cat log.gmsh; exit 1; }
+echo "PASS: the near-fault region of a 6 400 km body"

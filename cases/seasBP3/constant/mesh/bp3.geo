@@ -19,8 +19,9 @@
 // 400 km (the default) an event's surface offsets near the fault are shifted by a few cm (0.04
 // m down at 16 km for a 3.4 m event of the 30-degree normal case) against the boundary-element
 // code FDRA; with D = W = 6400e3 and hFar = 150e3 they are FDRA's to 3 mm
-// (cases/seasBP3/README.md). There Frontal-Delaunay made flat triangles of three fault nodes at
-// h = 25 m (splitFractureNodes refuses them, naming the element).
+// (cases/seasBP3/README.md). Give such a body `inner` = 100e3 (below): meshed whole, its
+// surfaces along the fault got flat triangles of three fault nodes at h = 25 m
+// (splitFractureNodes refuses them, naming the element).
 // Usage: gmsh -2 -format msh41 -setnumber h 100 bp3.geo -o bp3.msh
 
 DefineConstant[
@@ -31,7 +32,8 @@ DefineConstant[
   W       = {400e3,  Name "Parameters/5Half-width of the body at the top [m]"},
   grading = {0.1,    Name "Parameters/6Size growth per metre of distance"},
   hFar    = {20e3,   Name "Parameters/7Largest mesh size [m]"},
-  layer   = {0,      Name "Parameters/9Depth of a horizontal layer interface [m] (0: none)"}
+  layer   = {0,      Name "Parameters/9Depth of a horizontal layer interface [m] (0: none)"},
+  inner   = {0,      Name "Parameters/10Half-width and depth of a near-fault region [m] (0: none)"}
 ];
 
 General.NumThreads = 1;
@@ -53,7 +55,54 @@ Point(5) = {W, 0, 0};
 Point(6) = {W + shift, -D, 0};
 Point(7) = {-W + shift, -D, 0};
 
-If (layer <= 0)
+If (inner > 0 && layer > 0)
+  Error("bp3.geo: 'inner' and 'layer' cannot be combined yet");
+  Abort;
+EndIf
+If (inner > 0 && (inner >= W || inner >= D || inner <= Wf * s))
+  Error("bp3.geo: 'inner' must be deeper than the rate-and-state part (Wf sin(dip)) and less than W and D");
+  Abort;
+EndIf
+
+If (layer <= 0 && inner > 0)
+// A near-fault region, a parallelogram like the body's, `inner` wide on each side of the trace
+// and `inner` deep, holds the fault's rate-and-state part: the surfaces along the fault are
+// meshed in its bounding box. In a body of thousands of km meshed whole, Frontal-Delaunay left
+// triangles of three collinear fault nodes at h = 25 m (at 6 400 km, dip 30 and 60).
+si = inner * c / s;
+Point(8) = {si, -inner, 0};             // the fault at the region's bottom
+Point(9) = {-inner, 0, 0};
+Point(10) = {inner, 0, 0};
+Point(11) = {inner + si, -inner, 0};
+Point(12) = {-inner + si, -inner, 0};
+Line(1) = {4, 9};   Line(21) = {9, 1};    // top, left of the trace
+Line(2) = {10, 5};  Line(22) = {1, 10};   // top, right
+Line(3) = {5, 6};   // right side
+Line(4) = {6, 3};   // bottom, right
+Line(5) = {3, 7};   // bottom, left
+Line(6) = {7, 4};   // left side
+Line(7) = {1, 2};   // fault
+Line(8) = {2, 8};   // creep, inside the region
+Line(9) = {8, 3};   // creep, outside
+Line(23) = {8, 11}; Line(24) = {11, 10};  // the region's bottom and side, right
+Line(25) = {8, 12}; Line(26) = {12, 9};   // the region's bottom and side, left
+Transfinite Curve{7} = Round(Wf / h) + 1;
+Curve Loop(1) = {7, 8, 23, 24, -22};        // hanging wall, near the fault
+Plane Surface(1) = {1};
+Curve Loop(2) = {-21, -26, -25, -8, -7};    // footwall, near the fault
+Plane Surface(2) = {2};
+Curve Loop(3) = {-24, -23, 9, -4, -3, -2};  // hanging wall, beyond
+Plane Surface(3) = {3};
+Curve Loop(4) = {-1, -6, -5, -9, 25, 26};   // footwall, beyond
+Plane Surface(4) = {4};
+faultCurves[] = {7};
+topCurves[] = {1, 21, 22, 2};
+creepCurves[] = {8, 9};
+leftCurves[] = {6};
+rightCurves[] = {3};
+hangingWall[] = {1, 3};
+footWall[] = {2, 4};
+ElseIf (layer <= 0)
 Line(1) = {4, 1};   // top, left of the trace
 Line(2) = {1, 5};   // top, right
 Line(3) = {5, 6};   // right side
@@ -69,8 +118,12 @@ Plane Surface(1) = {1};
 Curve Loop(2) = {-1, -6, -5, -8, -7};   // footwall (left), counter-clockwise
 Plane Surface(2) = {2};
 faultCurves[] = {7};
+topCurves[] = {1, 2};
+creepCurves[] = {8};
 leftCurves[] = {6};
 rightCurves[] = {3};
+hangingWall[] = {1};
+footWall[] = {2};
 Else
 // A horizontal interface at depth `layer` (above the end of the rate-and-state part) splits
 // both sides: regions "upper" and "lower".
@@ -102,8 +155,12 @@ Plane Surface(2) = {2};
 Curve Loop(4) = {-6, -5, -8, -11, -14};    // footwall, lower
 Plane Surface(4) = {4};
 faultCurves[] = {7, 11};
+topCurves[] = {1, 2};
+creepCurves[] = {8};
 leftCurves[] = {6, 12};
 rightCurves[] = {3, 13};
+hangingWall[] = {1};
+footWall[] = {2};
 EndIf
 
 Field[1] = Distance;
@@ -113,12 +170,12 @@ Field[2] = MathEval;
 Field[2].F = Sprintf("Min(%g + %g * F1, %g)", h, grading, hFar);
 Background Field = 2;
 
-Physical Curve("top", 1) = {1, 2};
+Physical Curve("top", 1) = {topCurves[]};
 Physical Curve("right", 2) = {rightCurves[]};
 Physical Curve("bottom", 3) = {4, 5};
 Physical Curve("left", 4) = {leftCurves[]};
 Physical Curve("fault", 5) = {faultCurves[]};
-Physical Curve("creep", 6) = {8};
+Physical Curve("creep", 6) = {creepCurves[]};
 // With -setnumber bimaterial 1 the two sides are regions of their own ("hangingWall",
 // "footWall"; constant/mechanicalProperties' regions), e.g. for rocks of contrasting stiffness;
 // with -setnumber layer L (> 0) the rock above depth L and below it are ("upper", "lower").
@@ -127,8 +184,8 @@ If (layer > 0)
   Physical Surface("upper", 1) = {1, 2};
   Physical Surface("lower", 2) = {3, 4};
 ElseIf (bimaterial)
-  Physical Surface("hangingWall", 1) = {1};
-  Physical Surface("footWall", 2) = {2};
+  Physical Surface("hangingWall", 1) = {hangingWall[]};
+  Physical Surface("footWall", 2) = {footWall[]};
 Else
-  Physical Surface("rock", 1) = {1, 2};
+  Physical Surface("rock", 1) = {hangingWall[], footWall[]};
 EndIf
