@@ -8,11 +8,11 @@
 
 namespace friction {
 
-/// y = A x. The kernel is compiled twice, for AVX2 with FMA and for the baseline, and the
-/// program takes the one its processor runs when it loads (Eigen's own kernels are compiled
-/// for the baseline SSE2 only). Where A has at least denseProductThreadedFrom entries its
-/// rows are split between denseProductThreads() threads. Every row is summed in the same
-/// order whatever the split, so the result does not depend on the number of threads.
+/// y = A x. The kernel is compiled twice, for x86-64-v3 (AVX2 with FMA) and for the baseline, and
+/// the program takes the one its processor runs when it loads (Eigen's own kernels are compiled for
+/// the baseline SSE2 only). Where A has at least denseProductThreadedFrom entries its rows are
+/// split between denseProductThreads() threads. Every row is summed in the same order whatever the
+/// split, so the result does not depend on the number of threads.
 void denseProduct(const Eigen::MatrixXd& A, const Eigen::Ref<const Eigen::VectorXd>& x,
                   Eigen::VectorXd& y);
 
@@ -30,7 +30,7 @@ inline constexpr int denseProductMaxThreads = 4;
 /// Overrides denseProductThreads() (n >= 1), or restores its rule (n = 0). For tests.
 void setDenseProductThreads(int n);
 
-/// What the products run on, for the log: "AVX2+FMA kernel, 2 threads".
+/// What the products run on, for the log: "AVX2+FMA (x86-64-v3) kernel, 2 threads".
 std::string describeDenseProduct(long entries);
 
 }  // namespace friction
