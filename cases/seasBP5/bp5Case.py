@@ -159,7 +159,9 @@ files["system/controlDict"] = head("controlDict") + (
     "writePrecision  10;\n"
     "// The benchmark's fault stations (strike x2 and depth x3 in km), every Runge-Kutta step.\n"
     "faultOutput\n{\n    fracture        fault;\n    strike          (1 0 0);   // SEAS's x2\n"
-    "    seismicSlipRate 1e-3;\n    stations\n    {\n%s    }\n}\n"
+    "    seismicSlipRate 1e-3;\n"
+    "    ruptures        yes;   // rupture_<k>.dat: each event's rupture times and slip per node\n"
+    "    stations\n    {\n%s    }\n}\n"
     % (g(end), args.years, g(args.deltaT_years * year), args.deltaT_years, stationText))
 files["system/frictionSolution"] = head("frictionSolution") + (
     "elementOrder    %d;\nlinearSolver    cholmod;\n"

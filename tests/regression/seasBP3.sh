@@ -127,6 +127,52 @@ sys.exit(0 if worst <= 1e-9 and rel <= 1e-12 else 1)
 PY
 echo "PASS: outputs, creep and balance"
 
+# Ruptures (2D): rupture_1.dat, the event global.dat shows, one row per node of the fault,
+# rupture times within the event and not all at once, the slip at fltst_dp075's nodes the
+# station file's over the event.
+/usr/bin/python3 - postProcessing/faultOutput <<'PY'
+import math, os, re, sys
+out = sys.argv[1]
+def rows(path):
+    return [[float(x) for x in l.split()] for l in open(path) if l[:1] not in "#xt" and l.strip()]
+g = rows(os.path.join(out, "global.dat"))
+events, start = [], None
+for t, lv, _ in g:
+    if start is None and lv >= -3: start = t
+    elif start is not None and lv < -3: events.append((start, t)); start = None
+files = sorted(f for f in os.listdir(out) if f.startswith("rupture_"))
+assert events and files == ["rupture_%d.dat" % (k + 1) for k in range(len(events))], \
+    f"FAIL: files {files}, global.dat's events {events}"
+largest = None
+for f, (t0, t1) in zip(files, events):
+    text = open(os.path.join(out, f)).read()
+    m = re.search(r"onset (\S+) s, end (\S+) s", text)
+    onset, end = float(m.group(1)), float(m.group(2))
+    assert abs(onset - t0) <= 1e-12 * onset and abs(end - t1) <= 1e-12 * end, f"FAIL: {f}'s times"
+    assert text.splitlines()[2] == "x y rupture_time slip", "FAIL: 2D column line"
+    r = rows(os.path.join(out, f))
+    hit = [x for x in r if not math.isnan(x[2])]
+    assert len(r) >= 50 and hit and all(0 <= x[2] <= end - onset for x in hit), \
+        f"FAIL: {f}: {len(r)} rows, rupture times {[x[2] for x in hit][:10]}"
+    if largest is None or len(hit) > len(largest[3]): largest = (onset, end, r, hit)
+# The earthquake (the event most nodes reach): its rupture spreads.
+onset, end, r, hit = largest
+assert any(x[2] > 0 for x in hit) and len(hit) >= 10, f"FAIL: the earthquake: {len(hit)} nodes"
+# fltst_dp075 at 7.5 km down-dip, between two nodes of 400 m: the station's slip over the event
+# lies between the two nodes' (linear between them), up-dip positive as the station's.
+station = rows(os.path.join(out, "fltst_dp075.dat"))
+before = [x for x in station if x[0] < onset * (1 - 1e-12)][-1]
+after = [x for x in station if abs(x[0] - end) <= 1e-12 * end][0]
+want = after[1] - before[1]
+s60 = math.sqrt(3) / 2
+near = sorted(r, key=lambda x: abs(math.hypot(x[0], x[1]) - 7500))[:2]
+lo, hi = min(x[3] for x in near), max(x[3] for x in near)
+assert lo - 2e-6 <= want <= hi + 2e-6 and want > 0.1, f"FAIL: station {want}, nodes {lo} {hi}"
+print(f"PASS: rupture file of {len(events)} event(s): {len(r)} nodes, {len(hit)} ruptured, "
+      f"slip at 7.5 km {want:.3f} m")
+PY
+echo "PASS: ruptures (2D)"
+
 # Restart through the event, byte for byte.
 cd "$work/restarted/bp3"
 sed -i "s/^endTime .*/endTime $((100 * year));/" system/controlDict

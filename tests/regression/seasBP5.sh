@@ -24,6 +24,12 @@
 #    stations without strike, strike down the dip, profiles and positiveSlip in 3D, a surface
 #    station given (x y) or above the free surface, an arclength station in 3D, a
 #    creepDirection normal to the fault;
+#  * ruptures (rupture_<k>.dat): the events are global.dat's (onset and end where its largest
+#    slip rate crosses 1e-3 m/s), one row per moved node, the first event's ruptured nodes
+#    at time 0 inside the nucleation zone (V_init = 0.01 m/s), the second's times within the
+#    event and not all 0, its slip at the station strk-24dp+10 the station file's over the
+#    event; stopped inside the second event and restarted, the same bytes; 'ruptures'
+#    without strike refused;
 #  * surface stations (3D): the format (seven columns), the faces y = +-100 km, held, at
 #    exactly +-V_p t/2 and +-V_p/2 along x; 1 km either side of the trace above the
 #    nucleation zone, the event's right-lateral motion (+x on the + side, -x on the -), and
@@ -193,7 +199,9 @@ for f in "$work"/full/bp5/postProcessing/faultOutput/*.dat "$work"/full/bp5/[1-9
   cmp -s "$f" "${f/full/restarted}" || { echo "FAIL: restarted ${f#$work/full/} differs"; exit 1; }
   n=$((n + 1))
 done
-((n == 17)) || { echo "FAIL: $n files compared, 17 expected"; exit 1; }
+# 10 stations, global.dat, rupture_1.dat and rupture_2.dat (bp5Case.py's ruptures yes), the
+# surface stations, and the two time folders' states.
+((n == 19)) || { echo "FAIL: $n files compared, 19 expected"; exit 1; }
 echo "PASS: stopped at 5e4 s and restarted: $n files byte for byte as the uninterrupted run's"
 
 # Refusals: exit 1, the key named, no output folder.
@@ -231,3 +239,80 @@ rc=0
 [[ $rc == 1 ]] && grep -q "constant/fractureProperties: fracture 'fault': creepDirection is normal to the fracture at the node at" log ||
   { echo "FAIL: creepDirection normal to the fault (exit $rc)"; cat log; exit 1; }
 echo "PASS: 3D refusals (off the fault, no strike, strike down the dip, profiles, a 2D surface station, one outside, positiveSlip, an arclength, creepDirection normal to the fault)"
+
+# Ruptures: the event files against global.dat and the stations, and a restart inside an event.
+rm -rf "$work/rupture" && mkdir -p "$work/rupture"
+cp -r "$work/full/bp5" "$work/rupture/full"
+cd "$work/rupture/full"
+rm -rf [1-9]* postProcessing VTK log.frictionSolver
+grep -q "^    ruptures        yes;" system/controlDict || { echo "FAIL: bp5Case.py wrote no 'ruptures yes'"; exit 1; }
+sed -i 's/^endTime .*/endTime 4400;/; s/^deltaT .*/deltaT 2200;/' system/controlDict
+cp -r . "$work/rupture/restarted"
+"$bin/frictionSolver" -case . >log.frictionSolver 2>&1
+moved=$(grep -o "S of the right-hand side on the [0-9]* nodes that rate-and-state moves" log.frictionSolver | grep -o "[0-9]*")
+[[ -n $moved ]] || { echo "FAIL: no count of moved nodes in the log"; exit 1; }
+/usr/bin/python3 - postProcessing/faultOutput "$moved" <<'PY'
+import math, os, re, sys
+out, moved = sys.argv[1], int(sys.argv[2])
+def rows(path):
+    return [[float(x) for x in l.split()] for l in open(path) if l[:1] not in "#xt" and l.strip()]
+g = rows(os.path.join(out, "global.dat"))
+# Events from global.dat: from the first row at or above log10 1e-3 to the first below.
+events, start = [], None
+for t, lv, _ in g:
+    if start is None and lv >= -3: start = t
+    elif start is not None and lv < -3: events.append((start, t)); start = None
+files = sorted(f for f in os.listdir(out) if f.startswith("rupture_"))
+assert files == ["rupture_%d.dat" % (k + 1) for k in range(len(events))] and len(events) == 2, \
+    f"FAIL: files {files}, global.dat's events {events}"
+station = rows(os.path.join(out, "fltst_strk-24dp+10.dat"))
+for k, (t0, t1) in enumerate(events, 1):
+    text = open(os.path.join(out, "rupture_%d.dat" % k)).read()
+    m = re.search(r"event %d on fracture 'fault': onset (\S+) s, end (\S+) s" % k, text)
+    assert m, f"FAIL: rupture_{k}.dat's header: {text[:200]}"
+    onset, end = float(m.group(1)), float(m.group(2))
+    assert abs(onset - t0) <= 1e-9 * max(1, t0) and abs(end - t1) <= 1e-9 * t1, \
+        f"FAIL: event {k}: onset {onset} end {end} against global.dat's {t0} {t1}"
+    assert text.splitlines()[2] == "x y z rupture_time slip_2 slip_3", "FAIL: column line"
+    r = rows(os.path.join(out, "rupture_%d.dat" % k))
+    assert len(r) == moved and all(len(x) == 6 for x in r), f"FAIL: {len(r)} rows, {moved} expected"
+    hit = [x for x in r if not math.isnan(x[3])]
+    assert hit and all(0 <= x[3] <= end - onset for x in hit), f"FAIL: event {k}: times {hit}"
+    if k == 1:  # onset at 0: the nodes at V_init = 0.01 m/s, the nucleation zone's
+        assert all(x[3] == 0 and -30e3 <= x[0] <= -18e3 and -16e3 <= x[2] <= -4e3 for x in hit), \
+            f"FAIL: event 1's ruptured nodes {hit}"
+    else:
+        assert any(x[3] > 0 for x in hit), "FAIL: event 2 ruptured all at once"
+        # The station's node (the nearest to (-24, 0, -10) km): its slip over the event is the
+        # station file's, end row minus the last row before the onset (6 digits written).
+        node = min(r, key=lambda x: (x[0] + 24e3) ** 2 + x[1] ** 2 + (x[2] + 10e3) ** 2)
+        # (times written with 14 digits: the rows within 1e-12 of the header's times)
+        before = [x for x in station if x[0] < onset * (1 - 1e-12)][-1]
+        after = [x for x in station if abs(x[0] - end) <= 1e-12 * end]
+        assert after, "FAIL: no station row at the event's end"
+        for j, c in ((4, 1), (5, 2)):
+            want = after[0][c] - before[c]
+            assert abs(node[j] - want) <= 2e-6 * max(1, abs(want)), \
+                f"FAIL: slip {node[j]} at the station's node against the station's {want}"
+        assert node[4] > 0.1, f"FAIL: event 2 slipped {node[4]} m along strike at the station"
+print(f"PASS: ruptures: {len(events)} events as global.dat's, {moved} nodes each")
+PY
+cd "$work/rupture/restarted"
+sed -i 's/^endTime .*/endTime 2200;/' system/controlDict
+"$bin/frictionSolver" -case . >log.1 2>&1
+grep -q "^ *ruptureRunning yes;" 2200/uniform/frictionState || { echo "FAIL: 2200 s is not inside the second event"; exit 1; }
+sed -i 's/^endTime .*/endTime 4400;/; s/^startTime .*/startTime 0;\nstartFrom latestTime;/' system/controlDict
+"$bin/frictionSolver" -case . >log.2 2>&1
+for f in "$work"/rupture/full/postProcessing/faultOutput/*.dat "$work"/rupture/full/[1-9]*/uniform/frictionState; do
+  cmp -s "$f" "${f/full/restarted}" || { echo "FAIL: restarted inside the event, ${f#$work/rupture/} differs"; exit 1; }
+done
+echo "PASS: ruptures: stopped inside the second event and restarted, the same bytes"
+rm -rf "$work/rupture/bad" && cp -r "$work/rupture/restarted" "$work/rupture/bad" && cd "$work/rupture/bad"
+rm -rf [1-9]* postProcessing VTK log.*
+sed -i '/^    stations$/,/^    }$/d; /^    strike /d' system/controlDict
+rc=0
+"$bin/frictionSolver" -case . >log 2>&1 || rc=$?
+[[ $rc == 1 ]] && grep -q "'ruptures' in 3D need 'strike (x y z)'" log && grep -q "system/controlDict" log ||
+  { echo "FAIL: ruptures without strike (exit $rc)"; cat log; exit 1; }
+[[ -z $(ls -d [1-9]* 2>/dev/null) ]] || { echo "FAIL: a time folder written"; exit 1; }
+echo "PASS: ruptures without strike refused"

@@ -186,9 +186,11 @@ std::unique_ptr<FaultSeries> FaultSeries::read(const Dictionary& controlDict) {
     o.surfaceAt_ = d.location("surfaceStations");
   }
   o.verticalDown_ = d.getBoolOr("verticalDown", false);
-  if (o.stations_.empty() && !o.profiles_ && o.surface_.empty())
+  o.ruptures_ = d.getBoolOr("ruptures", false);
+  if (o.stations_.empty() && !o.profiles_ && o.surface_.empty() && !o.ruptures_)
     throw InputError(d.location(),
-                     "faultOutput: give 'stations', 'profiles', 'surfaceStations' or some of them");
+                     "faultOutput: give 'stations', 'profiles', 'surfaceStations', "
+                     "'ruptures yes' or some of them");
   return out;
 }
 
@@ -318,7 +320,14 @@ void FaultSeries::bind(const std::vector<ControlNode>& nodes, int dim, int k,
       sign_[u] = d > 0 ? 1.0 : -1.0;
     }
   }
+  position_.assign(n, Eigen::Vector3d::Zero());
+  for (const Eigen::Index i : onFracture_)
+    position_[static_cast<std::size_t>(i)] = nodes[static_cast<std::size_t>(i)].position;
   if (dim == 3) {
+    if (ruptures_ && !strikeGiven_)
+      throw InputError(fractureAt_,
+                       "faultOutput: 'ruptures' in 3D need 'strike (x y z)', SEAS's "
+                       "along-strike direction 2 (the slip is written along 2 and 3)");
     bind3D(nodes);
     bindSurface3D(space);
     return;
@@ -483,6 +492,22 @@ void FaultSeries::open(const std::string& caseDir, bool fresh, double restartTim
                           (ec ? " (" + ec.message() + ")" : std::string(": a file has its name")));
   removeTemporaryFiles(folder.string());
   if (fresh) lastStation_ = lastProfile_ = -1, haveStationRow_ = haveProfileRow_ = false;
+  folder_ = folder.string();
+  if (fresh) {
+    events_ = 0, inEvent_ = false, previousTime_ = -1;
+    pendingRuptures_.clear();
+  }
+  // The events a run has not reached yet (a fresh run: every one; a restart: those ended
+  // after its time) are written again when they end: their earlier files go.
+  if (ruptures_)
+    for (const auto& entry : fs::directory_iterator(folder, ec)) {
+      const std::string name = entry.path().filename().string();
+      int index = 0;
+      char tail = 0;
+      if (std::sscanf(name.c_str(), "rupture_%d.da%c", &index, &tail) == 2 && tail == 't' &&
+          name == "rupture_" + std::to_string(index) + ".dat" && index > events_)
+        fs::remove(entry.path(), ec);
+    }
   stationFiles_.clear();
   for (const Station& st : stations_) {
     const std::string path = (folder / (st.name + ".dat")).string();
@@ -613,6 +638,7 @@ void FaultSeries::sample(const RateSample& s) {
   for (const Eigen::Index i : onFracture_)
     if (!creeping_[static_cast<std::size_t>(i)]) maxV = std::max(maxV, speed(i));
   const bool seismic = maxV >= seismicRate_;
+  if (ruptures_) followRupture(s, maxV);
   const auto due = [&](bool have, double last, double interval) {
     return !have || (s.time > last && s.time - last >= interval);
   };
@@ -764,7 +790,98 @@ void FaultSeries::sample3D(const RateSample& s, double maxV) {
   haveStationRow_ = true;
 }
 
+void FaultSeries::followRupture(const RateSample& s, double maxV) {
+  const Eigen::VectorXd &slip = *s.slip, &rate = *s.rate;
+  const Eigen::Index n = static_cast<Eigen::Index>(position_.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (previousTime_ < 0) {
+    previousSpeed_ = Eigen::VectorXd::Zero(n);
+    previousSlip_ = slip;
+  }
+  if (!inEvent_ && maxV >= seismicRate_) {
+    inEvent_ = true;
+    onset_ = s.time;
+    peak_ = 0;
+    ruptureTime_ = Eigen::VectorXd::Constant(n, nan);
+    eventStartSlip_ = previousSlip_;
+  }
+  if (inEvent_) {
+    peak_ = std::max(peak_, maxV);
+    const double lt = std::log10(seismicRate_);
+    for (const Eigen::Index i : onFracture_) {
+      if (creeping_[static_cast<std::size_t>(i)] || !std::isnan(ruptureTime_[i])) continue;
+      const double v = rate.segment(k_ * i, k_).norm();
+      if (!(v >= seismicRate_)) continue;
+      // Between the previous step (below the threshold) and this one, linear in log10 |V|.
+      const double v0 = previousSpeed_[i], t0 = previousTime_;
+      double t = s.time;
+      if (t0 >= 0 && t0 < s.time && v0 > 0 && v0 < seismicRate_ && v > v0)
+        t = t0 + (s.time - t0) * (lt - std::log10(v0)) / (std::log10(v) - std::log10(v0));
+      ruptureTime_[i] = std::max(t, onset_);
+    }
+  }
+  if (inEvent_ && maxV < seismicRate_) {
+    ++events_;
+    pendingRuptures_.emplace_back("rupture_" + std::to_string(events_) + ".dat",
+                                  ruptureFile(s.time, slip));
+    inEvent_ = false;
+  }
+  for (const Eigen::Index i : onFracture_) previousSpeed_[i] = rate.segment(k_ * i, k_).norm();
+  previousSlip_ = slip;
+  previousTime_ = s.time;
+}
+
+std::string FaultSeries::ruptureFile(double end, const Eigen::VectorXd& slip) const {
+  std::ostringstream h;
+  long ruptured = 0, nodes = 0;
+  for (const Eigen::Index i : onFracture_) {
+    if (creeping_[static_cast<std::size_t>(i)]) continue;
+    ++nodes;
+    if (!std::isnan(ruptureTime_[i])) ++ruptured;
+  }
+  h << "# libfriction, frictionSolver: event " << events_ << " on fracture '" << fracture_
+    << "': onset " << formatNumber(onset_) << " s, end " << formatNumber(end)
+    << " s, peak slip rate " << formatNumber(peak_) << " m/s; " << ruptured << " of " << nodes
+    << " nodes reached " << formatNumber(seismicRate_) << " m/s (creeping nodes left out)\n";
+  if (dim_ == 3) {
+    h << "# Columns: the node's position x y z (m); rupture_time (s): since the onset, when its "
+         "slip rate first reached the threshold (nan: never in this event); slip_2 slip_3 (m): "
+         "its slip over the event along SEAS's directions 2 (strike) and 3 (down dip)\n"
+      << "x y z rupture_time slip_2 slip_3\n";
+  } else {
+    h << "# Columns: the node's position x y (m); rupture_time (s): since the onset, when its "
+         "slip rate first reached the threshold (nan: never in this event); slip (m): its slip "
+         "over the event, positive as in the stations\n"
+      << "x y rupture_time slip\n";
+  }
+  std::string rows = h.str();
+  for (const Eigen::Index i : onFracture_) {
+    const auto u = static_cast<std::size_t>(i);
+    if (creeping_[u]) continue;
+    std::string row;
+    for (int c = 0; c < dim_; ++c) appendValue(row, position_[u][c]);
+    if (std::isnan(ruptureTime_[i]))
+      row += "            nan";  // as wide as appendValue's, and Python's float() reads it
+    else
+      appendValue(row, ruptureTime_[i] - onset_);
+    if (dim_ == 3) {
+      const Eigen::Vector2d d =
+          seas_[u] * Eigen::Vector2d(slip[k_ * i] - eventStartSlip_[k_ * i],
+                                     slip[k_ * i + 1] - eventStartSlip_[k_ * i + 1]);
+      appendValue(row, d[0]);
+      appendValue(row, d[1]);
+    } else {
+      appendValue(row, sign_[u] * (slip[k_ * i] - eventStartSlip_[k_ * i]));
+    }
+    rows += row.substr(1) + "\n";  // appendValue's leading space off the first column
+  }
+  return rows;
+}
+
 void FaultSeries::flush() {
+  for (const auto& [name, text] : pendingRuptures_)
+    writeTextAtomic((fs::path(folder_) / name).string(), text);
+  pendingRuptures_.clear();
   for (std::size_t j = 0; j < stationFiles_.size(); ++j) {
     if (!stationRows_[j].empty()) stationFiles_[j]->append(stationRows_[j]);
     stationRows_[j].clear();
@@ -794,6 +911,28 @@ void FaultSeries::sync() {
 void FaultSeries::writeState(DictionaryWriter& out) const {
   out.entry("lastStationRow", haveStationRow_ ? lastStation_ : -1.0);
   out.entry("lastProfileRow", haveProfileRow_ ? lastProfile_ : -1.0);
+  if (!ruptures_) return;
+  // The rupture that is being followed, so that a restart writes its file as the
+  // uninterrupted run does.
+  out.entry("rupturesEnded", static_cast<long>(events_));
+  out.entryWord("ruptureRunning", inEvent_ ? "yes" : "no");
+  out.entry("ruptureOnset", onset_);
+  out.entry("rupturePeak", peak_);
+  out.entry("rupturePreviousTime", previousTime_);
+  const auto vector = [&](const char* key, const Eigen::VectorXd& v) {
+    out.entry(key, std::vector<double>(v.data(), v.data() + v.size()));
+  };
+  vector("rupturePreviousSpeed", previousSpeed_);
+  vector("rupturePreviousSlip", previousSlip_);
+  // The nodes that have ruptured in the running event and when (the others: nan).
+  std::vector<int> ruptured;
+  std::vector<double> times;
+  for (Eigen::Index i = 0; i < ruptureTime_.size(); ++i)
+    if (!std::isnan(ruptureTime_[i]))
+      ruptured.push_back(static_cast<int>(i)), times.push_back(ruptureTime_[i]);
+  out.entry("rupturedNodes", ruptured);
+  out.entry("ruptureTimes", times);
+  vector("ruptureStartSlip", eventStartSlip_);
 }
 
 void FaultSeries::readState(const Dictionary& in) {
@@ -801,6 +940,40 @@ void FaultSeries::readState(const Dictionary& in) {
   lastProfile_ = in.getScalar("lastProfileRow");
   haveStationRow_ = lastStation_ >= 0;
   haveProfileRow_ = lastProfile_ >= 0;
+  if (!ruptures_) return;
+  if (!in.found("rupturesEnded")) {  // written without ruptures: they start here
+    events_ = 0, inEvent_ = false, previousTime_ = -1;
+    return;
+  }
+  events_ = static_cast<int>(in.getIntOr("rupturesEnded", 0, {0, 1000000000}));
+  inEvent_ = in.getBool("ruptureRunning");
+  onset_ = in.getScalar("ruptureOnset");
+  peak_ = in.getScalar("rupturePeak");
+  previousTime_ = in.getScalar("rupturePreviousTime");
+  const auto vector = [&](const char* key) {
+    const std::vector<double> v = in.getScalarList(key);
+    return Eigen::VectorXd(
+        Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
+  };
+  previousSpeed_ = vector("rupturePreviousSpeed");
+  previousSlip_ = vector("rupturePreviousSlip");
+  eventStartSlip_ = vector("ruptureStartSlip");
+  const Eigen::Index n = static_cast<Eigen::Index>(position_.size());
+  if (previousSpeed_.size() != (previousTime_ < 0 ? previousSpeed_.size() : n))
+    in.fail("rupturePreviousSpeed", "key 'rupturePreviousSpeed': expected " + std::to_string(n) +
+                                        " values, one per control node");
+  ruptureTime_ = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+  const std::vector<double> nodes = in.getScalarList("rupturedNodes"),
+                            times = in.getScalarList("ruptureTimes");
+  if (nodes.size() != times.size())
+    in.fail("ruptureTimes", "key 'ruptureTimes': expected one time per entry of rupturedNodes");
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(nodes[j]);
+    if (!(nodes[j] >= 0 && i < n && static_cast<double>(i) == nodes[j]))
+      in.fail("rupturedNodes",
+              "key 'rupturedNodes': expected control node indices below " + std::to_string(n));
+    ruptureTime_[i] = times[j];
+  }
 }
 
 }  // namespace friction

@@ -47,11 +47,22 @@
 // slip-rate components [m/s], the driving shear along 2 and 3 [MPa], log10 θ [s]. global.dat's
 // moment rate is then G Σ A_i |V_i| [N m/s] (A_i the lumped areas). Profiles and surface
 // stations: 2D only so far (refused in 3D, naming the key).
+//
+// Ruptures (`ruptures yes;`, 2D and 3D): an event runs from the first accepted step whose
+// largest slip rate (creeping nodes left out) reaches seismicSlipRate to the first one below
+// it. For each event k (counted from the run's start) rupture_k.dat holds, per node of the
+// fracture that is not creeping, its position, its rupture time [s] since the event's onset
+// (when its |V| first reached seismicSlipRate, interpolated in log10 |V| between the two
+// steps around it; nan where it never did) and its slip over the event [m] (from the last step
+// before the onset to the event's last; 3D: slip_2 slip_3 in SEAS's directions, 2D: slip with
+// positiveSlip's sign). Written when the event ends (an event still running at the end time
+// is not); a restart keeps the events ended before its time and the running one's state.
 #pragma once
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -156,6 +167,21 @@ class FaultSeries {
   std::vector<char> creeping_;  ///< per control node: its slip rate is imposed
   std::unique_ptr<AppendFile> globalFile_;
   std::string globalRows_;
+  // Ruptures: the event being followed and the previous step's rates and slip.
+  bool ruptures_ = false;
+  std::vector<Eigen::Vector3d> position_;  ///< per control node of the fracture
+  int events_ = 0;                         ///< events ended (files written or pending)
+  bool inEvent_ = false;
+  double onset_ = 0, peak_ = 0;
+  double previousTime_ = -1;        ///< < 0: no step sampled yet
+  Eigen::VectorXd previousSpeed_;   ///< n: |V| at the previous step
+  Eigen::VectorXd previousSlip_;    ///< k·n: slip at the previous step
+  Eigen::VectorXd ruptureTime_;     ///< n: absolute rupture times of this event (nan: none)
+  Eigen::VectorXd eventStartSlip_;  ///< k·n: slip at the step before the onset
+  std::vector<std::pair<std::string, std::string>> pendingRuptures_;  ///< name, text: flush()
+  std::string folder_;
+  void followRupture(const RateSample& s, double maxV);
+  std::string ruptureFile(double end, const Eigen::VectorXd& slip) const;
 
   // Bound to the case:
   int k_ = 1;
