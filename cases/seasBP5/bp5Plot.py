@@ -79,7 +79,7 @@ def main():
     times = [v[3] for v in r]
     hit = [t for t in times if not math.isnan(t)]
     if len(hit) >= 3 and max(hit) > 0:
-        step = max(1.0, round(max(hit) / 12))
+        step = max(1.0, round(max(hit) / 24))
         # Only the triangles whose three nodes the rupture reached carry its front.
         mask = [any(math.isnan(times[i]) for i in t) for t in tri.triangles]
         if not all(mask):
