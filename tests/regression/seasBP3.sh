@@ -130,17 +130,12 @@ echo "PASS: outputs, creep and balance"
 # Ruptures (2D): rupture_1.dat, the event global.dat shows, one row per node of the fault,
 # rupture times within the event and not all at once, the slip at fltst_dp075's nodes the
 # station file's over the event.
-/usr/bin/python3 - postProcessing/faultOutput <<'PY'
+/usr/bin/python3 - postProcessing/faultOutput "$src/tests/regression" <<'PY'
 import math, os, re, sys
 out = sys.argv[1]
-def rows(path):
-    return [[float(x) for x in l.split()] for l in open(path) if l[:1] not in "#xt" and l.strip()]
-g = rows(os.path.join(out, "global.dat"))
-events, start = [], None
-for t, lv, _ in g:
-    if start is None and lv >= -3: start = t
-    elif start is not None and lv < -3: events.append((start, t)); start = None
-files = sorted(f for f in os.listdir(out) if f.startswith("rupture_"))
+sys.path.insert(0, sys.argv[-1])
+from ruptureFiles import rows, eventsAndFiles
+events, files = eventsAndFiles(out)
 assert events and files == ["rupture_%d.dat" % (k + 1) for k in range(len(events))], \
     f"FAIL: files {files}, global.dat's events {events}"
 largest = None

@@ -251,18 +251,12 @@ cp -r . "$work/rupture/restarted"
 "$bin/frictionSolver" -case . >log.frictionSolver 2>&1
 moved=$(grep -o "S of the right-hand side on the [0-9]* nodes that rate-and-state moves" log.frictionSolver | grep -o "[0-9]*")
 [[ -n $moved ]] || { echo "FAIL: no count of moved nodes in the log"; exit 1; }
-/usr/bin/python3 - postProcessing/faultOutput "$moved" <<'PY'
+/usr/bin/python3 - postProcessing/faultOutput "$moved" "$src/tests/regression" <<'PY'
 import math, os, re, sys
 out, moved = sys.argv[1], int(sys.argv[2])
-def rows(path):
-    return [[float(x) for x in l.split()] for l in open(path) if l[:1] not in "#xt" and l.strip()]
-g = rows(os.path.join(out, "global.dat"))
-# Events from global.dat: from the first row at or above log10 1e-3 to the first below.
-events, start = [], None
-for t, lv, _ in g:
-    if start is None and lv >= -3: start = t
-    elif start is not None and lv < -3: events.append((start, t)); start = None
-files = sorted(f for f in os.listdir(out) if f.startswith("rupture_"))
+sys.path.insert(0, sys.argv[-1])
+from ruptureFiles import rows, eventsAndFiles
+events, files = eventsAndFiles(out)
 assert files == ["rupture_%d.dat" % (k + 1) for k in range(len(events))] and len(events) == 2, \
     f"FAIL: files {files}, global.dat's events {events}"
 station = rows(os.path.join(out, "fltst_strk-24dp+10.dat"))

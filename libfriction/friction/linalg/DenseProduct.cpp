@@ -104,10 +104,10 @@ void denseProduct(const Eigen::MatrixXd& A, const Eigen::Ref<const Eigen::Vector
 }
 
 std::string describeDenseProduct(long entries) {
+  const int threads = entries >= denseProductThreadedFrom ? denseProductThreads() : 1;
   std::ostringstream s;
-  s << (vectorised() ? "AVX2+FMA (x86-64-v3)" : "baseline") << " kernel, "
-    << (entries >= denseProductThreadedFrom ? denseProductThreads() : 1) << " thread"
-    << ((entries >= denseProductThreadedFrom ? denseProductThreads() : 1) == 1 ? "" : "s");
+  s << (vectorised() ? "AVX2+FMA (x86-64-v3)" : "baseline") << " kernel, " << threads
+    << (threads == 1 ? " thread" : " threads");
   return s.str();
 }
 

@@ -263,8 +263,6 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     }
   };
 
-  // The slip rate of every free component at (t, s, ψ), into V (k·n); false where a node's
-  // balance has no solution (σ̄ ≤ 0: the fault opens; a law's solve failed).
   // The last right-hand side's elastic increment, kept for the fault outputs: the embedded
   // Runge–Kutta pairs evaluate at each accepted step's end (first same as last), where the
   // outputs sample, so the sample needs no product of its own.
@@ -272,6 +270,8 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     double t = std::numeric_limits<double>::quiet_NaN();
     Eigen::VectorXd s, dtau, dsigma;
   } last;
+  // The slip rate of every free component at (t, s, ψ), into V (k·n); false where a node's
+  // balance has no solution (σ̄ ≤ 0: the fault opens; a law's solve failed).
   const auto slipRates = [&](double t, const Eigen::VectorXd& s, const Eigen::VectorXd& psi,
                              Eigen::VectorXd& V) {
     const double theta = span > 0 ? (t - tA) / span : 1.0;
