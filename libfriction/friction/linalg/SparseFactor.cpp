@@ -13,10 +13,12 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <type_traits>
 
 #include "friction/core/Assert.hpp"
 #include "friction/core/Parallel.hpp"
 #include "friction/core/Suggest.hpp"
+#include "friction/linalg/RestrictedSolve.hpp"
 #include "friction/linalg/SparseFactorBackend.hpp"
 
 // LAPACK (OpenBLAS's at run time, as for CHOLMOD): U Uᵀ in place of an upper triangular U.
@@ -399,6 +401,26 @@ class CholmodBackend : public SparseFactor::Backend {
   }
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const override {
     return bordered_ ? solveBordered(B) : Eigen::MatrixXd(llt_.solve(B));
+  }
+  SolveReach restrictTo(const std::vector<Eigen::Index>& rows) override {
+    restricted_.reset();
+    const cholmod_factor* L = llt_.cholmodFactor();
+    if (bordered_ || !L || !L->is_super || L->xtype != CHOLMOD_REAL || rows.empty()) return {};
+    static_assert(std::is_same_v<CholmodIndex, long>, "SupernodalView reads 64-bit longs");
+    SupernodalView view;
+    view.n = static_cast<long>(L->n);
+    view.nsuper = static_cast<long>(L->nsuper);
+    view.super = static_cast<const long*>(L->super);
+    view.pi = static_cast<const long*>(L->pi);
+    view.px = static_cast<const long*>(L->px);
+    view.s = static_cast<const long*>(L->s);
+    view.x = static_cast<const double*>(L->x);
+    view.perm = L->ordering == CHOLMOD_NATURAL ? nullptr : static_cast<const long*>(L->Perm);
+    restricted_ = std::make_unique<RestrictedSolve>(view, rows);
+    return {restricted_->share(), static_cast<long>(restricted_->reachedSupernodes()), view.nsuper};
+  }
+  Eigen::MatrixXd solveRestricted(const Eigen::MatrixXd& B) const override {
+    return restricted_ ? restricted_->solve(B) : solve(B);
   }
 
   // The bordered matrix is ordered as CHOLMOD orders A alone, then the border: the leading
@@ -790,6 +812,7 @@ class CholmodBackend : public SparseFactor::Backend {
   }
 
   void freeBordered() {
+    restricted_.reset();  // its view of the factor ends with the factor
     if (bordered_) cholmod_l_free_factor(&bordered_, &llt_.cholmod());
     bordered_ = nullptr;
   }
@@ -838,7 +861,8 @@ class CholmodBackend : public SparseFactor::Backend {
   Ordering ordering_ = Ordering::amd;
   std::string choice_ = "ordering amd";
   cholmod_factor* bordered_ = nullptr;
-  std::vector<CholmodIndex> borderedPerm_;  // the bordered factor's order (factorBordered)
+  std::vector<CholmodIndex> borderedPerm_;       // the bordered factor's order (factorBordered)
+  std::unique_ptr<RestrictedSolve> restricted_;  // restrictTo()'s reach in llt_'s factor
   Eigen::Index rows_ = 0;
   FactorAnalysis analysis_;
 };
@@ -1194,6 +1218,32 @@ Eigen::VectorXd SparseFactor::solve(const Eigen::VectorXd& b) {
   ++numSolves_;
   solveSeconds_ += secondsSince(start);
   return x;
+}
+
+SolveReach SparseFactor::restrictSolves(const std::vector<Eigen::Index>& rows) {
+  FRICTION_ASSERT(ok(), "restrictSolves without a successful factor()");
+  return impl_->restrictTo(rows);
+}
+
+Eigen::VectorXd SparseFactor::solveRestricted(const Eigen::VectorXd& b) {
+  FRICTION_ASSERT(ok(), "solve without a successful factor()");
+  FRICTION_ASSERT(b.size() == rows_, "solve: right-hand side has the wrong size");
+  const auto start = std::chrono::steady_clock::now();
+  const SingleBlasThread oneThread;
+  Eigen::VectorXd x = impl_->solveRestricted(Eigen::MatrixXd(b)).col(0);
+  ++numSolves_;
+  solveSeconds_ += secondsSince(start);
+  return x;
+}
+
+Eigen::MatrixXd SparseFactor::solveRestricted(const Eigen::MatrixXd& B) {
+  FRICTION_ASSERT(ok(), "solve without a successful factor()");
+  FRICTION_ASSERT(B.rows() == rows_, "solve: right-hand sides have the wrong size");
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::MatrixXd X = impl_->solveRestricted(B);
+  numSolves_ += static_cast<long>(B.cols());
+  solveSeconds_ += secondsSince(start);
+  return X;
 }
 
 Eigen::MatrixXd SparseFactor::solve(const Eigen::MatrixXd& B) {

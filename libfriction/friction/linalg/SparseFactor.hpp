@@ -83,6 +83,13 @@ struct MumpsMemory {
   bool any() const { return lowRank > 0 || !outOfCoreDir.empty(); }
 };
 
+/// Where SparseFactor::restrictSolves() found the rows' reach: the share of the factor's
+/// values and the supernodes a restricted solve visits. share < 0: the backend solves whole.
+struct SolveReach {
+  double share = -1;
+  long supernodes = 0, ofSupernodes = 0;
+};
+
 /// What the last analysis of a sparse Cholesky factorisation chose and will cost (for the log:
 /// at 10⁶ unknowns in 3D the factor, not the control loop, sets the time and the memory).
 struct FactorAnalysis {
@@ -251,6 +258,21 @@ class SparseFactor {
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
   /// X = A⁻¹ B, one back-substitution per column.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B);
+
+  /// Solves whose right-hand sides vanish outside `rows` and whose solutions are read on `rows`
+  /// only (a fault's band of unknowns: docs/method.md §4, "Solves restricted to the fault's
+  /// reach"). With a supernodal cholmod factor of A alone, solveRestricted() then visits only
+  /// the supernodes those rows reach in the elimination tree (linalg/RestrictedSolve.hpp): the
+  /// same answer on `rows`, to the bit. Returns what such a solve visits, with a negative
+  /// share where the backend solves whole (mumps, amg, a bordered or simplicial factor):
+  /// solveRestricted() is then solve(). Holds until the next factor().
+  SolveReach restrictSolves(const std::vector<Eigen::Index>& rows);
+  /// X = A⁻¹ B on the rows of restrictSolves() (elsewhere zero, or the whole solve's values
+  /// where the backend solves whole). B must vanish outside the rows' reach (a caller's
+  /// mistake otherwise: std::logic_error). One back-substitution per column, counted in
+  /// numSolves().
+  Eigen::MatrixXd solveRestricted(const Eigen::MatrixXd& B);
+  Eigen::VectorXd solveRestricted(const Eigen::VectorXd& b);
 
   /// The displacement component (0 … count − 1) of each row of the next matrices, and the
   /// relative residual at which an iterative backend's solves stop (amg; ignored by the direct

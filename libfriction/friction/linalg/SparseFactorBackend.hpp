@@ -58,6 +58,11 @@ class SparseFactor::Backend {
   /// (SparseFactor::predict); the ordering is kept for the next factorisation of A's pattern.
   /// False: the backend cannot tell (or failed to).
   virtual bool predict(const SparseMatrix& /*A*/, FactorAnalysis& /*predicted*/) { return false; }
+  /// Solves restricted to `rows` (SparseFactor::restrictSolves): what one restricted solve
+  /// visits, a negative share where this backend solves whole (then solveRestricted() is
+  /// solve()).
+  virtual SolveReach restrictTo(const std::vector<Eigen::Index>& /*rows*/) { return {}; }
+  virtual Eigen::MatrixXd solveRestricted(const Eigen::MatrixXd& B) const { return solve(B); }
   /// Told each phase of a factorisation as it ends (SparseFactor::setPhaseReport); a backend
   /// that reports none is reported whole by SparseFactor.
   PhaseReport onPhase;
