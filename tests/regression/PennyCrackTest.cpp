@@ -171,6 +171,23 @@ TEST_CASE(
     CHECK(std::abs(perNode - 1e3 * total / static_cast<double>(nodes)) <= 0.01 * perNode);
     CHECK(perNode * 1e3 < 0.25 * 32.0 * static_cast<double>(nodes));
   }
+  {
+    // Its dual solves visit the fault band's reach in the factor: the band holds at least the
+    // three components of each fault node (of both sides where it has two), and the reach is
+    // part of the factor.
+    std::smatch m;
+    REQUIRE(std::regex_search(
+        log, m,
+        std::regex("the fractures' reach in the factor \\(([0-9]+) unknowns at the fractures; a "
+                   "product's back-substitution reads ([0-9.]+) % of the factor's values, "
+                   "([0-9]+) of its ([0-9]+) supernodes\\)")));
+    CHECK(std::stol(m[1]) >= 3 * nodes);
+    CHECK(std::stol(m[1]) < dofsIn(log));
+    CHECK(std::stod(m[2]) > 0);
+    CHECK(std::stod(m[2]) <= 100);
+    CHECK(std::stol(m[3]) > 0);
+    CHECK(std::stol(m[3]) <= std::stol(m[4]));
+  }
 
   Case c("pennyCrack", "penny-auto-condensed");
   fs::copy_file(k.dir() / msh, c.dir() / msh, fs::copy_options::overwrite_existing);
@@ -179,6 +196,7 @@ TEST_CASE(
   REQUIRE(c.solve() == 0);
   CHECK_THAT(c.log(), !Catch::Contains("Newton variant:"));  // given, not chosen
   CHECK_THAT(c.log(), Catch::Contains("jump unknowns last"));
+  CHECK_THAT(c.log(), !Catch::Contains("reach in the factor"));  // the bordered factor: whole
   const Table a = c.namedTable("1", "fault"), b = k.namedTable("1", "fault");
   REQUIRE(a.rows.size() == b.rows.size());
   double scale = 0, differ = 0;
