@@ -35,15 +35,13 @@ int blasInt(long v) {
 
 }  // namespace
 
-RestrictedSolve::RestrictedSolve(const SupernodalView& L, const std::vector<Index>& rows)
-    : L_(L) {
+RestrictedSolve::RestrictedSolve(const SupernodalView& L, const std::vector<Index>& rows) : L_(L) {
   const long n = L.n, nsuper = L.nsuper;
   std::vector<long> nodeOf(static_cast<std::size_t>(n));
   for (long s = 0; s < nsuper; ++s)
     for (long k = L.super[s]; k < L.super[s + 1]; ++k) nodeOf[static_cast<std::size_t>(k)] = s;
   std::vector<long> factorRowOf(static_cast<std::size_t>(n));  // of each row of A
-  for (long k = 0; k < n; ++k)
-    factorRowOf[static_cast<std::size_t>(L.perm ? L.perm[k] : k)] = k;
+  for (long k = 0; k < n; ++k) factorRowOf[static_cast<std::size_t>(L.perm ? L.perm[k] : k)] = k;
   // Each row's supernode and its ancestors: the parent of a supernode is the supernode of its
   // first row below the diagonal block.
   std::vector<char> in(static_cast<std::size_t>(nsuper), 0);
@@ -139,8 +137,7 @@ Eigen::MatrixXd RestrictedSolve::solve(const Eigen::MatrixXd& B) const {
     } else {
       dtrsm_("L", "L", "N", "N", &nscol, &rhs, &plus, L1, &nsrow, y1, &ldy);
       if (below > 0)
-        dgemm_("N", "N", &below, &rhs, &nscol, &minus, L2, &nsrow, y1, &ldy, &plus, E.data(),
-               &ldE);
+        dgemm_("N", "N", &below, &rhs, &nscol, &minus, L2, &nsrow, y1, &ldy, &plus, E.data(), &ldE);
     }
     scatter(t, below);
   }
@@ -159,8 +156,7 @@ Eigen::MatrixXd RestrictedSolve::solve(const Eigen::MatrixXd& B) const {
       dtrsv_("L", "C", "N", &nscol, L1, &nsrow, y1, &one);
     } else {
       if (below > 0)
-        dgemm_("C", "N", &nscol, &rhs, &below, &minus, L2, &nsrow, E.data(), &ldE, &plus, y1,
-               &ldy);
+        dgemm_("C", "N", &nscol, &rhs, &below, &minus, L2, &nsrow, E.data(), &ldE, &plus, y1, &ldy);
       dtrsm_("L", "L", "C", "N", &nscol, &rhs, &plus, L1, &nsrow, y1, &ldy);
     }
   }
