@@ -565,10 +565,14 @@ OptimizerReport& SemismoothNewton::finish(ControlProblem& p, const ControlState&
 //    1 002-node point: n ≥ 11.3 dofs^(4/9) (3 130 nodes at 312 180 dofs, 4 410 at 678 102),
 //    and never below 1 000 nodes, where the dense S costs a fraction of a second.
 //  * 2D, the inclined crack (interfaceBenchmark.sh; one family of meshes, the dofs growing
-//    with the crack): condensed faster at 2 049 nodes (8.1 s against 16.8 s), krylov at 5 001
-//    (31 s against 59 s); condensed's extra work grows like n^2.2 there, krylov's stays ~10 s:
-//    even near 2 700 nodes.
-constexpr Eigen::Index krylovFromNodes2D = 3000;
+//    with the crack). Measured first with whole back-substitutions and before the krylov
+//    variant's solve cuts: condensed faster at 2 049 nodes (8.1 s against 16.8 s), krylov at
+//    5 001 (31 s against 59 s), so 3 000. Measured again 2026-11-29 with its products solved on
+//    the fault's reach (2.5x cheaper in 2D): condensed faster at 513 nodes (1.45 s against
+//    1.54 s), krylov at 1 025 (3.0–3.7 s against 4.0–4.3 s), 1 537 (4.7–4.9 s against
+//    5.3–6.2 s), 2 049 (6.4–6.6 s against 7.1–8.4 s), 3 073 (11.6–12.3 s against 15.1 s) and
+//    4 097 (14.7–16.5 s against 27.4 s): even between 513 and 1 025 nodes.
+constexpr Eigen::Index krylovFromNodes2D = 1000;
 constexpr double krylovNodeScale3D = 11.3;  // n ≥ scale · dofs^(4/9) in 3D
 constexpr Eigen::Index krylovFromNodesMin3D = 1000;
 // From this ν on, variant auto's line warns that krylov's probed preconditioner is weak.

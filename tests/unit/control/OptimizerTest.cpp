@@ -203,13 +203,16 @@ TEST_CASE("semismoothNewton variant auto: krylov from the case's threshold, unle
   // The measurements the thresholds rest on (README "Newton's variant by fault size"): the
   // variant found faster on each side of the threshold. 3D: krylov at 4 178 nodes in 312 180
   // dofs, 2 387 in 46 446 and 10 299 in 316 251; condensed at 2 387 in 678 102 and at 273 (the
-  // committed penny, 9 660). 2D: condensed at 2 049 nodes, krylov at 5 001.
+  // committed penny, 9 660). 2D (with products on the fault's reach): condensed at 513 nodes,
+  // krylov at 1 025, 2 049 and 5 001.
   CHECK(SemismoothNewton::krylovFromNodes(3, 312180) <= 4178);
   CHECK(SemismoothNewton::krylovFromNodes(3, 46446) <= 2387);
   CHECK(SemismoothNewton::krylovFromNodes(3, 316251) <= 10299);
   CHECK(SemismoothNewton::krylovFromNodes(3, 678102) > 2387);
   CHECK(SemismoothNewton::krylovFromNodes(3, 9660) > 273);
-  CHECK(SemismoothNewton::krylovFromNodes(2, 300950) > 2049);
+  CHECK(SemismoothNewton::krylovFromNodes(2, 86720) > 513);
+  CHECK(SemismoothNewton::krylovFromNodes(2, 159286) <= 1025);
+  CHECK(SemismoothNewton::krylovFromNodes(2, 300950) <= 2049);
   CHECK(SemismoothNewton::krylovFromNodes(2, 701946) <= 5001);
   // A larger body makes each back-substitution dearer: the threshold grows with the dofs.
   CHECK(SemismoothNewton::krylovFromNodes(3, 10'000'000) >
