@@ -95,10 +95,11 @@ RestrictedSolve::RestrictedSolve(const SupernodalView& L, const std::vector<Inde
 Eigen::MatrixXd RestrictedSolve::solve(const Eigen::MatrixXd& B) const {
   const long n = L_.n, m = B.cols();
   if (B.rows() != n) throw std::logic_error("restricted solve: right-hand sides of the wrong size");
-  for (long i = 0; i < n; ++i)
-    if (local_[static_cast<std::size_t>(i)] < 0 && !(B.row(i).array() == 0).all())
-      throw std::logic_error("restricted solve: a right-hand side is nonzero at row " +
-                             std::to_string(i) + ", outside the rows it was restricted to");
+  for (long c = 0; c < m; ++c)
+    for (long i = 0; i < n; ++i)
+      if (B(i, c) != 0 && local_[static_cast<std::size_t>(i)] < 0)
+        throw std::logic_error("restricted solve: a right-hand side is nonzero at row " +
+                               std::to_string(i) + ", outside the rows it was restricted to");
   Eigen::MatrixXd Y(reached_, m);
   for (long l = 0; l < reached_; ++l) {
     const long k = factorRowOfLocal_[static_cast<std::size_t>(l)];
@@ -121,15 +122,28 @@ Eigen::MatrixXd RestrictedSolve::solve(const Eigen::MatrixXd& B) const {
       for (long ii = 0; ii < below; ++ii)
         Y(b[static_cast<std::size_t>(ii)], c) = E[static_cast<std::size_t>(ii + c * below)];
   };
+  // Reached supernode t: its diagonal block L1 (nscol × nscol) and the block below it L2
+  // (below × nscol), both with leading dimension nsrow, and its columns' part y1 of Y.
+  struct Supernode {
+    int nscol, nsrow, below, ldE;
+    const double *L1, *L2;
+    double* y1;
+  };
+  const auto supernode = [&](std::size_t t) {
+    const long s = nodes_[t];
+    Supernode b;
+    b.nscol = blasInt(L_.super[s + 1] - L_.super[s]);
+    b.nsrow = blasInt(L_.pi[s + 1] - L_.pi[s]);
+    b.below = b.nsrow - b.nscol;
+    b.ldE = std::max(1, b.below);
+    b.L1 = L_.x + L_.px[s];
+    b.L2 = b.L1 + b.nscol;
+    b.y1 = Y.data() + first_[t];
+    return b;
+  };
   // L y = P b, supernode by supernode upward.
   for (std::size_t t = 0; t < nodes_.size(); ++t) {
-    const long s = nodes_[t];
-    const int nscol = blasInt(L_.super[s + 1] - L_.super[s]),
-              nsrow = blasInt(L_.pi[s + 1] - L_.pi[s]), below = nsrow - nscol;
-    const int ldE = std::max(1, below);
-    const double* L1 = L_.x + L_.px[s];
-    const double* L2 = L1 + nscol;
-    double* y1 = Y.data() + first_[t];
+    const auto [nscol, nsrow, below, ldE, L1, L2, y1] = supernode(t);
     gather(t, below);
     if (m == 1) {
       dtrsv_("L", "N", "N", &nscol, L1, &nsrow, y1, &one);
@@ -143,13 +157,7 @@ Eigen::MatrixXd RestrictedSolve::solve(const Eigen::MatrixXd& B) const {
   }
   // Lᵀ x = y, downward.
   for (std::size_t t = nodes_.size(); t-- > 0;) {
-    const long s = nodes_[t];
-    const int nscol = blasInt(L_.super[s + 1] - L_.super[s]),
-              nsrow = blasInt(L_.pi[s + 1] - L_.pi[s]), below = nsrow - nscol;
-    const int ldE = std::max(1, below);
-    const double* L1 = L_.x + L_.px[s];
-    const double* L2 = L1 + nscol;
-    double* y1 = Y.data() + first_[t];
+    const auto [nscol, nsrow, below, ldE, L1, L2, y1] = supernode(t);
     gather(t, below);
     if (m == 1) {
       dgemv_("C", &below, &nscol, &minus, L2, &nsrow, E.data(), &one, &plus, y1, &one);

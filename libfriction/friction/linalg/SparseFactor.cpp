@@ -1209,15 +1209,27 @@ Eigen::MatrixXd SparseFactor::schurBySolves(const SparseMatrix& B, const SparseM
   return 0.5 * (S + S.transpose());
 }
 
+// One back-substitution per column of what `solve` returns, counted and timed.
+template <class Solve>
+auto SparseFactor::counted(Eigen::Index columns, Solve&& solve) {
+  const auto start = std::chrono::steady_clock::now();
+  auto X = solve();
+  numSolves_ += static_cast<long>(columns);
+  solveSeconds_ += secondsSince(start);
+  return X;
+}
+
 Eigen::VectorXd SparseFactor::solve(const Eigen::VectorXd& b) {
   FRICTION_ASSERT(ok(), "solve without a successful factor()");
   FRICTION_ASSERT(b.size() == rows_, "solve: right-hand side has the wrong size");
-  const auto start = std::chrono::steady_clock::now();
   const SingleBlasThread oneThread;
-  Eigen::VectorXd x = impl_->solve(b);
-  ++numSolves_;
-  solveSeconds_ += secondsSince(start);
-  return x;
+  return counted(1, [&] { return impl_->solve(b); });
+}
+
+Eigen::MatrixXd SparseFactor::solve(const Eigen::MatrixXd& B) {
+  FRICTION_ASSERT(ok(), "solve without a successful factor()");
+  FRICTION_ASSERT(B.rows() == rows_, "solve: right-hand sides have the wrong size");
+  return counted(B.cols(), [&] { return impl_->solve(B); });
 }
 
 SolveReach SparseFactor::restrictSolves(const std::vector<Eigen::Index>& rows) {
@@ -1228,32 +1240,15 @@ SolveReach SparseFactor::restrictSolves(const std::vector<Eigen::Index>& rows) {
 Eigen::VectorXd SparseFactor::solveRestricted(const Eigen::VectorXd& b) {
   FRICTION_ASSERT(ok(), "solve without a successful factor()");
   FRICTION_ASSERT(b.size() == rows_, "solve: right-hand side has the wrong size");
-  const auto start = std::chrono::steady_clock::now();
   const SingleBlasThread oneThread;
-  Eigen::VectorXd x = impl_->solveRestricted(Eigen::MatrixXd(b)).col(0);
-  ++numSolves_;
-  solveSeconds_ += secondsSince(start);
-  return x;
+  return counted(
+      1, [&] { return Eigen::VectorXd(impl_->solveRestricted(Eigen::MatrixXd(b)).col(0)); });
 }
 
 Eigen::MatrixXd SparseFactor::solveRestricted(const Eigen::MatrixXd& B) {
   FRICTION_ASSERT(ok(), "solve without a successful factor()");
   FRICTION_ASSERT(B.rows() == rows_, "solve: right-hand sides have the wrong size");
-  const auto start = std::chrono::steady_clock::now();
-  Eigen::MatrixXd X = impl_->solveRestricted(B);
-  numSolves_ += static_cast<long>(B.cols());
-  solveSeconds_ += secondsSince(start);
-  return X;
-}
-
-Eigen::MatrixXd SparseFactor::solve(const Eigen::MatrixXd& B) {
-  FRICTION_ASSERT(ok(), "solve without a successful factor()");
-  FRICTION_ASSERT(B.rows() == rows_, "solve: right-hand sides have the wrong size");
-  const auto start = std::chrono::steady_clock::now();
-  Eigen::MatrixXd X = impl_->solve(B);
-  numSolves_ += static_cast<long>(B.cols());
-  solveSeconds_ += secondsSince(start);
-  return X;
+  return counted(B.cols(), [&] { return impl_->solveRestricted(B); });
 }
 
 }  // namespace friction

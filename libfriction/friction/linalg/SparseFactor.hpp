@@ -342,6 +342,9 @@ class SparseFactor {
                           const Eigen::SparseMatrix<double>* C);
   // The ordering of the next analysis, `auto` resolved for A's size (factor(), predict()).
   void passOrdering(Eigen::Index rows);
+  // Runs `solve` (a back-substitution of `columns` right-hand sides), counting and timing it.
+  template <class Solve>
+  auto counted(Eigen::Index columns, Solve&& solve);
   // The pivot test on the first rows_ rows.
   FactorStatus judgePivots(const Eigen::SparseMatrix<double>& A);
 };
