@@ -21,6 +21,9 @@ p.add_argument("--years", type=float, default=1800.0)
 p.add_argument("--deltaT-years", type=float, default=10.0)
 p.add_argument("--tolerance", type=float, default=1e-8)
 p.add_argument("--order", type=int, choices=[1, 2], default=1)
+# How the right-hand side's dense S is stored (faultOperator's precision; README, "S in single
+# precision"): auto (single from 2^22 entries), double or single.
+p.add_argument("--precision", choices=["auto", "double", "single"], default="auto")
 # The body's half-length along strike and depth (bp5.geo's X and Z): the creeping plane's
 # field reaches them.
 p.add_argument("--X", type=float, default=200e3)
@@ -165,10 +168,12 @@ files["system/controlDict"] = head("controlDict") + (
     % (g(end), args.years, g(args.deltaT_years * year), args.deltaT_years, stationText))
 files["system/frictionSolution"] = head("frictionSolution") + (
     "elementOrder    %d;\nlinearSolver    cholmod;\n"
-    "timeIntegration { type quasiDynamic; relativeTolerance %g; }\n"
+    "timeIntegration { type quasiDynamic; relativeTolerance %g;%s }\n"
     "control\n{\n    gammaRelative   1;\n"
     "    optimizer { type semismoothNewton; tolerance 1e-10; maxIterations 100; }\n}\n"
-    % (args.order, args.tolerance))
+    % (args.order, args.tolerance,
+       "" if args.precision == "auto"
+       else " faultOperator { type auto; precision %s; }" % args.precision))
 files["system/meshDict"] = head("meshDict") + (
     "mesh        \"constant/mesh/bp5.msh\";\nfractures   (fault);\n")
 for path, text in files.items():

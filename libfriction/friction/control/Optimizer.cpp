@@ -375,6 +375,9 @@ namespace {
 /// preconditioned ones, flexible GMRES), which the krylov variant's memory count reads.
 constexpr Eigen::Index gmresRestart = 60;
 
+// SemismoothNewton::setKeptProductsForTests: 0, or the tests' smaller cap.
+int keptProductsOverride = 0;
+
 // Restarted GMRES for a small nonsymmetric system A x = b given by its action; x starts at 0.
 // With a right preconditioner M (x = M u, GMRES on A M u = b) the residual it judges is still
 // b − A x. Stops at ‖b − A x‖ ≤ tol ‖b‖ or after maxProducts products with A; `products`
@@ -842,6 +845,10 @@ OptimizerReport SemismoothNewton::minimize(ControlProblem& p, Eigen::VectorXd& b
   return finish(p, s, lastStep, r, beta);
 }
 
+void SemismoothNewton::setKeptProductsForTests(int count) {
+  keptProductsOverride = std::max(count, 0);
+}
+
 OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::VectorXd& beta) {
   FRICTION_ASSERT(!p.hasOpening(), "the krylov variant is refused for fractures that open");
   SlipResponse& resp = p.response();
@@ -907,6 +914,11 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
   };
   std::deque<Kept> recycled;
   constexpr std::size_t maxRecycled = 60;
+  // An iteration's own products kept to sum S dir from: GMRES's restart length (more products
+  // than that, and S dir costs one product instead; setKeptProductsForTests()).
+  const std::size_t maxCalls = keptProductsOverride > 0
+                                   ? static_cast<std::size_t>(keptProductsOverride)
+                                   : static_cast<std::size_t>(gmresRestart);
   double heldKept = 0, heldGmres = 0;  // the largest of an iteration, for the log
   for (int it = 1; it <= stop_.maxIterations; ++it) {
     if (converged(p, s, lastStep)) {
@@ -988,12 +1000,17 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
           AU(a, j) = Gu[active[a]];
         }
       }
-      std::vector<Kept> calls;  // each product's vector and S of it, in GMRES's order
+      std::vector<Kept> calls;  // the first maxCalls products' vectors and S of them
+      bool dropped = false;     // a later product was not kept: S dir from a product of its own
       auto applyActive = [&](const Eigen::VectorXd& vA) {
         Eigen::VectorXd v = Eigen::VectorXd::Zero(size);
         for (Eigen::Index a = 0; a < m; ++a) v[active[a]] = vA[a];
-        calls.push_back({v, image(v)});
-        const Eigen::VectorXd Gv = applyG(v, calls.back().Sz);
+        Image Sv = image(v);
+        const Eigen::VectorXd Gv = applyG(v, Sv);
+        if (calls.size() < maxCalls)
+          calls.push_back({std::move(v), std::move(Sv)});
+        else
+          dropped = true;
         Eigen::VectorXd out(m);
         for (Eigen::Index a = 0; a < m; ++a) out[a] = Gv[active[a]];
         return out;
@@ -1023,15 +1040,19 @@ OptimizerReport SemismoothNewton::minimizeKrylov(ControlProblem& p, Eigen::Vecto
           static_cast<double>(m) * sizeof(double);
       if (kept + basis > heldKept + heldGmres) heldKept = kept, heldGmres = basis;
       for (Eigen::Index a = 0; a < m; ++a) dir[active[a]] = delta.x[a];
-      for (std::size_t j = 0; j < calls.size(); ++j) {
-        if (delta.weights[j] == 0) continue;
-        Sdir.t += delta.weights[j] * calls[j].Sz.t;
-        Sdir.sn += delta.weights[j] * calls[j].Sz.sn;
-      }
-      for (Eigen::Index j = 0; j < p0; ++j) {
-        if (delta.recycledWeights[j] == 0) continue;
-        Sdir.t += delta.recycledWeights[j] * usable[j]->Sz.t;
-        Sdir.sn += delta.recycledWeights[j] * usable[j]->Sz.sn;
+      if (dropped) {
+        Sdir = image(dir);  // the whole direction's, stick part included
+      } else {
+        for (std::size_t j = 0; j < calls.size(); ++j) {
+          if (delta.weights[j] == 0) continue;
+          Sdir.t += delta.weights[j] * calls[j].Sz.t;
+          Sdir.sn += delta.weights[j] * calls[j].Sz.sn;
+        }
+        for (Eigen::Index j = 0; j < p0; ++j) {
+          if (delta.recycledWeights[j] == 0) continue;
+          Sdir.t += delta.recycledWeights[j] * usable[j]->Sz.t;
+          Sdir.sn += delta.recycledWeights[j] * usable[j]->Sz.sn;
+        }
       }
       for (Kept& kp : calls) recycled.push_back(std::move(kp));
       while (recycled.size() > maxRecycled) recycled.pop_front();

@@ -246,6 +246,13 @@ class SemismoothNewton : public Optimizer {
   }
   OptimizerReport minimize(ControlProblem& problem, Eigen::VectorXd& beta) override;
   std::string name() const override { return "semismoothNewton"; }
+  /// The krylov variant keeps at most this many of a Newton iteration's GMRES products (the
+  /// vector and S of it: 5n doubles each in 3D) to sum S dir from; an iteration that makes more
+  /// gets S dir from one more product instead. With the step's recycled products (at most 60)
+  /// and GMRES's basis of the restart length, this bounds what the variant holds besides the
+  /// preconditioner's LU by a constant times n, however many products a fault's GMRES needs
+  /// (README, "The fault operator's memory, counted"). Set smaller by tests (0: the default).
+  static void setKeptProductsForTests(int count);
   /// Active-set changes over the last call's iterations (a cycling diagnostic).
   int activeSetChanges() const { return activeSetChanges_; }
   bool wantsInterfaceOperator() const override {

@@ -10,6 +10,7 @@
 
 #include "friction/control/Complementarity.hpp"
 #include "friction/control/SlipResponse.hpp"
+#include "friction/core/InputError.hpp"
 #include "friction/core/StopRequest.hpp"
 #include "friction/dict/Dictionary.hpp"
 #include "friction/dict/DictionaryWriter.hpp"
@@ -31,10 +32,16 @@ QuasiDynamic::QuasiDynamic(const Dictionary* d) {
                 : RungeKuttaScheme::bogackiShampine32;
   // faultOperator: a word, or a sub-dictionary with its type and the compression's settings.
   const std::vector<std::string> operators = {"auto", "dense", "hierarchical"};
-  std::string type = "auto";
+  std::string type = "auto", precision = "auto";
   if (d->isDict("faultOperator")) {
     const Dictionary& f = d->subDict("faultOperator");
     type = f.getChoice("type", operators);
+    if (type == "hierarchical" && f.found("precision"))
+      throw InputError(f.location("precision"),
+                       "'precision' applies to a dense S (type dense or auto): the H-matrix's "
+                       "blocks are kept in double");
+    if (type != "hierarchical")
+      precision = f.getChoiceOr("precision", {"auto", "double", "single"}, "auto");
     if (type != "dense") {
       hSettings_.tolerance = f.getScalarOr("tolerance", hSettings_.tolerance, Bounds{1e-14, 1e-1});
       hSettings_.eta = f.getScalarOr("eta", hSettings_.eta, Bounds{0.1, 100});
@@ -49,6 +56,9 @@ QuasiDynamic::QuasiDynamic(const Dictionary* d) {
             : type == "dense" ? OperatorChoice::dense
                               : OperatorChoice::hierarchical;
   hierarchical_ = choice_ == OperatorChoice::hierarchical;
+  precision_ = precision == "auto"     ? Precision::automatic
+               : precision == "double" ? Precision::full
+                                       : Precision::single;
 }
 
 std::string QuasiDynamic::describe() const {
@@ -58,6 +68,11 @@ std::string QuasiDynamic::describe() const {
     << ", relativeTolerance " << relTol_ << ", absoluteSlipTolerance " << absSlip_
     << " m, absoluteStateTolerance " << absState_;
   if (maxStep_ > 0) s << ", maxStep " << maxStep_ << " s";
+  if (precision_ == Precision::single)
+    s << "; S of the right-hand side stored in single precision";
+  else if (precision_ == Precision::automatic && choice_ != OperatorChoice::hierarchical)
+    s << "; a dense S of the right-hand side stored in single precision where it has "
+      << autoSingleFrom << " entries or more";
   if (choice_ != OperatorChoice::dense)
     s << "; S of the right-hand side as an H-matrix"
       << (choice_ == OperatorChoice::automatic
@@ -113,10 +128,11 @@ std::string QuasiDynamic::prepare(StepHost& host) {
       return (built.empty() ? std::string() : built + "; ") +
              "S of the right-hand side dense (faultOperator auto: S_tt " + std::to_string(kn) +
              " x " + std::to_string(kn) + ", below " + std::to_string(autoHierarchicalFrom) +
-             " rows)" + denseKernel;
+             " rows)" + storeDense(S) + denseKernel;
   }
   if (!hierarchical_)
-    return (built.empty() ? std::string("S of the right-hand side dense") : built) + denseKernel;
+    return (built.empty() ? std::string("S of the right-hand side dense") : built) + storeDense(S) +
+           denseKernel;
   // Compressed once per run: rows [τ (k·ns); σ_n (ns)] and columns (k·ns) belong to the moved
   // nodes (all of them unless reduced_).
   std::vector<Eigen::Index> rowPoint(static_cast<std::size_t>(kn + ns)),
@@ -149,9 +165,10 @@ std::string QuasiDynamic::prepare(StepHost& host) {
     s << (built.empty() ? std::string() : built + "; ")
       << "S of the right-hand side dense (faultOperator auto: S_tt " << kn << " rows; an H-matrix "
       << "would store " << std::fixed << std::setprecision(1) << 100 * share
-      << " % of its entries, more than " << 100 * autoHierarchicalShare << " %)" << denseKernel;
+      << " % of its entries, more than " << 100 * autoHierarchicalShare << " %)";
     H_.reset();
     hierarchical_ = false;
+    s << storeDense(S) << denseKernel;
     return s.str();
   }
   // What a product costs either way, measured here in one run (alternating, the best of
@@ -187,6 +204,35 @@ std::string QuasiDynamic::prepare(StepHost& host) {
     << " us (" << denseBest / std::max(hBest, 1e-12) << "x), relative difference "
     << (yD.norm() > 0 ? (yH - yD).norm() / yD.norm() : 0.0);
   Ssolved_.resize(0, 0);  // the H-matrix holds it now
+  return s.str();
+}
+
+std::string QuasiDynamic::storeDense(const InterfaceOperator& S) {
+  const Eigen::Index ns = static_cast<Eigen::Index>(solved_.size());
+  const Eigen::Index k = S.Stt.rows() / std::max<Eigen::Index>(S.Snt.rows(), 1);
+  const long entries = static_cast<long>((k + 1) * ns) * static_cast<long>(k * ns);
+  single_ = precision_ == Precision::single ||
+            (precision_ == Precision::automatic && entries >= autoSingleFrom);
+  Ssingle_.resize(0, 0);
+  if (!single_) return std::string();
+  // [S_tt; S_nt] on the moved nodes, rounded to float once; the double copy of the reduced S
+  // is let go (the case's own S stays: the outputs' rows and the creep's columns read it).
+  if (reduced_) {
+    Ssingle_ = Ssolved_.cast<float>();
+    Ssolved_.resize(0, 0);
+  } else {
+    Ssingle_.resize(S.Stt.rows() + S.Snt.rows(), S.Stt.cols());
+    Ssingle_.topRows(S.Stt.rows()) = S.Stt.cast<float>();
+    Ssingle_.bottomRows(S.Snt.rows()) = S.Snt.cast<float>();
+  }
+  std::ostringstream s;
+  s << std::setprecision(3) << ", stored in single precision ("
+    << (precision_ == Precision::automatic
+            ? "faultOperator's precision auto: " + std::to_string(entries) + " entries, from " +
+                  std::to_string(autoSingleFrom) + "; "
+            : std::string())
+    << static_cast<double>(Ssingle_.size()) * sizeof(float) / 1e6
+    << " MB; each entry within 6e-8 of the double one, the sums in double)";
   return s.str();
 }
 
@@ -242,6 +288,8 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
         x.segment(k * a, k) = ds.segment(k * solved_[static_cast<std::size_t>(a)], k);
       if (H_)
         H_->multiply(x, y);
+      else if (single_)
+        denseProduct(Ssingle_, x, y);
       else
         denseProduct(Ssolved_, x, y);
       y += (t - tA) * creep;
@@ -252,9 +300,12 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
         dtau.segment(k * i, k) = y.segment(k * a, k);
         dsigma[i] = y[k * ns + a];
       }
-    } else if (H_) {
+    } else if (H_ || single_) {
       Eigen::VectorXd y;
-      H_->multiply(ds, y);
+      if (H_)
+        H_->multiply(ds, y);
+      else
+        denseProduct(Ssingle_, ds, y);
       dtau = y.head(kn);
       dsigma = y.tail(n);
     } else {
@@ -356,8 +407,8 @@ void QuasiDynamic::advance(StepHost& host, StepResult& r, const StepResult* /*pr
     // compression's error). Other nodes, and every node with the whole dense S: rows of S.
     Eigen::VectorXd dtau, dsigma;
     smp.traction = [&](Eigen::Index i, Eigen::VectorXd& tau, double& sigmaEff) {
-      const bool product =
-          (H_ || reduced_) && (!reduced_ || solvedIndex_[static_cast<std::size_t>(i)] >= 0);
+      const bool product = (H_ || reduced_ || single_) &&
+                           (!reduced_ || solvedIndex_[static_cast<std::size_t>(i)] >= 0);
       if (product && dtau.size() == 0) {
         if (last.t == t && last.s.size() == s.size() && last.s == s) {
           dtau = last.dtau;  // the same product, made by the step's last stage
@@ -443,7 +494,8 @@ double QuasiDynamic::balanceTolerance(double controlTolerance) const {
   // The integration's tractions are S's product; the written state's come from a solve of the
   // body. With S compressed they differ by the compression's error (block by block within
   // its tolerance), so the balance cannot be judged tighter than that.
-  return hierarchical_ ? std::max(controlTolerance, hSettings_.tolerance) : controlTolerance;
+  if (hierarchical_) return std::max(controlTolerance, hSettings_.tolerance);
+  return single_ ? std::max(controlTolerance, singleBalanceTolerance) : controlTolerance;
 }
 
 std::string QuasiDynamic::balanceNote() const {
@@ -454,6 +506,10 @@ std::string QuasiDynamic::balanceNote() const {
       << hSettings_.tolerance
       << " block by block, the written state's from a solve of the body: they differ by more "
          "than the bound; tighten faultOperator's tolerance or use faultOperator dense";
+  else if (single_)
+    s << "the integration's tractions came from S stored in single precision, the written "
+         "state's from a solve of the body: they differ by more than the bound "
+      << singleBalanceTolerance << "; set faultOperator { type dense; precision double; }";
   else
     s << "the integration's tractions came from S, the written state's from a solve of the "
          "body: they differ by more than round-off; tighten the control's tolerance only if "

@@ -72,6 +72,25 @@ class QuasiDynamic : public TimeIntegrator {
   bool hierarchical_ = false;  ///< decided in prepare() for auto
   HierarchicalSettings hSettings_;
   std::unique_ptr<HierarchicalMatrix> H_;
+  /// faultOperator's precision, for a dense S of the right-hand side: auto (single from
+  /// autoSingleFrom entries), double, or single. In single precision [S_tt; S_nt] on the moved
+  /// nodes is held as floats (Ssingle_) and multiplied with double sums (DenseProduct.hpp): the
+  /// product reads half the bytes, and it is bound by memory bandwidth from a few MB on.
+  enum class Precision { automatic, full, single };
+  Precision precision_ = Precision::automatic;
+  /// auto stores S in single precision from this many entries (2²² = 4.2·10⁶, 33.5 MB in
+  /// double: beyond the processor's caches, where a product waits on memory). Measured in the
+  /// README ("S in single precision"): BP5 at 2 and 1 km.
+  static constexpr long autoSingleFrom = 1L << 22;
+  /// With S in single precision the written state's balance (tractions from a solve of the
+  /// body) is judged against this bound, not tighter: the rounding of S's entries to float
+  /// (6e-8 each) moves the integration's tractions by about 1e-7 of their sum's terms.
+  static constexpr double singleBalanceTolerance = 1e-6;
+  bool single_ = false;      ///< decided in prepare()
+  Eigen::MatrixXf Ssingle_;  ///< [S_tt; S_nt] on the moved nodes, in single precision
+  /// Decides single_ for a dense S of the right-hand side and stores it so; what it did, for
+  /// prepare()'s line (empty in double).
+  std::string storeDense(const InterfaceOperator& S);
   /// The nodes the integration moves (prepare()): free, and not creeping. A creeping node's
   /// slip over an interval is its imposed rate times the time, so its columns of S enter the
   /// right-hand side as one vector per interval (creepResponse) and its rows are never read

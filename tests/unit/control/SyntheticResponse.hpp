@@ -58,9 +58,11 @@ class SyntheticResponse : public SlipResponse {
   void shiftSigmaN(const VectorXd& shift) { sigma0_ += shift; }
   void dual(const VectorXd& qt, const VectorXd& qn, VectorXd& tauDual,
             VectorXd* sigmaNDual) override {
+    ++dualCalls;
     tauDual = Stt_ * qt + Stn_ * qn;
     if (sigmaNDual) *sigmaNDual = Snt_ * qt + w_.cwiseInverse().asDiagonal() * Snn_ * qn;
   }
+  long dualCalls = 0;  ///< dual() calls so far (a product of the krylov variant is one)
   std::mt19937& rng() { return rng_; }
   const MatrixXd& Stt() const { return Stt_; }
   const MatrixXd& Snt() const { return Snt_; }

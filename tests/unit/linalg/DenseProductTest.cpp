@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -80,6 +81,42 @@ TEST_CASE("denseProduct: a strided x, and empty shapes", "[linalg][denseProduct]
   CHECK(y.isZero(0.0));
 }
 
+TEST_CASE("denseProduct: A stored in single precision, summed in double",
+          "[linalg][denseProduct]") {
+  ThreadsRestored restore;
+  const Eigen::Index m = 1541, n = 1031;  // threaded, odd in both shapes
+  REQUIRE(m * n >= denseProductThreadedFrom);
+  Eigen::MatrixXd A(m, n);
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i < m; ++i)
+      A(i, j) = 1e10 / (1.0 + std::abs(static_cast<double>(i) / m - static_cast<double>(j) / n)) *
+                (((i + 3 * j) % 7) - 3.0 + 1e-3 * std::sin(static_cast<double>(i + j)));
+  const Eigen::MatrixXf Af = A.cast<float>();
+  const Eigen::MatrixXd rounded = Af.cast<double>();
+  REQUIRE((rounded - A).norm() > 0);  // the rounding is there to be seen
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, -2.0, 3.0).array().sin();
+  Eigen::VectorXd ySingle, yRounded;
+  setDenseProductThreads(1);
+  denseProduct(Af, x, ySingle);
+  denseProduct(rounded, x, yRounded);
+  REQUIRE(ySingle.size() == m);
+  // The same products and sums as the double kernel on the rounded matrix: only A's rounding
+  // separates it from the double product, never the sums (which a float sum would spoil at
+  // 1e-7 of the largest term, here about 1e-5 of y's norm).
+  CHECK((ySingle - yRounded).norm() <= 1e-13 * yRounded.norm());
+  const Eigen::VectorXd exact = A * x;
+  // Each entry rounded by at most 2^-24 of itself: |y − y_single| ≤ 2^-24 |A| |x| row by row.
+  const Eigen::VectorXd bound = A.cwiseAbs() * x.cwiseAbs() * std::ldexp(1.0, -24);
+  for (Eigen::Index i = 0; i < m; ++i)
+    REQUIRE(std::abs(ySingle[i] - exact[i]) <= bound[i] * (1 + 1e-6) + 1e-12 * exact.norm());
+  for (int threads : {2, 3}) {
+    setDenseProductThreads(threads);
+    Eigen::VectorXd y;
+    denseProduct(Af, x, y);
+    CHECK(std::memcmp(y.data(), ySingle.data(), sizeof(double) * static_cast<std::size_t>(m)) == 0);
+  }
+}
+
 // Not in the default run (hidden tag): what the product costs at the sizes of SEAS BP5's
 // right-hand side (moved nodes ns, rows 3·ns, columns 2·ns; 4 141 moved nodes at 1 km cells),
 // Eigen's own product against denseProduct on one thread and on denseProductThreads(), each
@@ -89,14 +126,15 @@ TEST_CASE("denseProduct: cost against Eigen's product at BP5's sizes",
           "[.][denseProductBenchmark]") {
   ThreadsRestored restore;
   const int threads = denseProductThreads();
-  std::printf("%8s %8s %8s %12s %12s %12s %8s %8s\n", "ns", "rows", "cols", "Eigen [ms]",
-              "1 thread", "threads", "x (1)", "x (all)");
+  std::printf("%8s %8s %8s %12s %12s %12s %12s %8s %8s %8s\n", "ns", "rows", "cols", "Eigen [ms]",
+              "1 thread", "threads", "single", "x (1)", "x (all)", "x single");
   for (const Eigen::Index ns : {1071, 2142, 4141}) {
     const Eigen::Index m = 3 * ns, n = 2 * ns;
     const Eigen::MatrixXd A = Eigen::MatrixXd::Random(m, n);
     const Eigen::VectorXd x = Eigen::VectorXd::Random(n);
-    Eigen::VectorXd y0(m), y1, y2;
-    double eigen = 1e300, one = 1e300, all = 1e300;
+    const Eigen::MatrixXf Af = A.cast<float>();
+    Eigen::VectorXd y0(m), y1, y2, y3;
+    double eigen = 1e300, one = 1e300, all = 1e300, single = 1e300;
     const auto seconds = [](auto&& f) {
       const auto c0 = std::chrono::steady_clock::now();
       f();
@@ -108,11 +146,14 @@ TEST_CASE("denseProduct: cost against Eigen's product at BP5's sizes",
       one = std::min(one, seconds([&] { denseProduct(A, x, y1); }));
       setDenseProductThreads(threads);
       all = std::min(all, seconds([&] { denseProduct(A, x, y2); }));
+      single = std::min(single, seconds([&] { denseProduct(Af, x, y3); }));
     }
     REQUIRE((y1 - y0).norm() <= 1e-12 * y0.norm());
     REQUIRE(y1 == y2);
-    std::printf("%8ld %8ld %8ld %12.2f %12.2f %9.2f (%d) %8.2f %8.2f\n", static_cast<long>(ns),
-                static_cast<long>(m), static_cast<long>(n), 1e3 * eigen, 1e3 * one, 1e3 * all,
-                threads, eigen / one, eigen / all);
+    REQUIRE((y3 - y0).norm() <= 1e-6 * y0.norm());
+    std::printf("%8ld %8ld %8ld %12.2f %12.2f %9.2f (%d) %12.2f %8.2f %8.2f %8.2f\n",
+                static_cast<long>(ns), static_cast<long>(m), static_cast<long>(n), 1e3 * eigen,
+                1e3 * one, 1e3 * all, threads, 1e3 * single, eigen / one, eigen / all,
+                eigen / single);
   }
 }
