@@ -20,9 +20,10 @@
 //   `hierarchical` where S_tt has autoHierarchicalFrom rows or more and `dense` below;
 //   `dense`; or `{ type hierarchical; tolerance 1e-8; eta 2; leafSize 32; }`, compressed as an
 //   H-matrix, HierarchicalMatrix.hpp: a product then costs about (k+1)·n·r·log n instead of
-//   (k+1)·k·n², within `tolerance` of the dense one block by block). Each interval starts from the
-//   step size the last one proposed (the integrator's state, restarted from uniform/frictionState),
-//   so a restarted run steps as an uninterrupted one.
+//   (k+1)·k·n², within `tolerance` of the dense one block by block; a dense S takes `precision
+//   auto|double|single`: auto stores it as floats from autoSingleFrom entries, the sums in double).
+//   Each interval starts from the step size the last one proposed (the integrator's state,
+//   restarted from uniform/frictionState), so a restarted run steps as an uninterrupted one.
 #pragma once
 
 #include <memory>
