@@ -894,7 +894,6 @@ FactorStatus FractureSystem::factorAssembled(bool withInterfaceOperator) {
 }
 
 void FractureSystem::restrictProducts() {
-  restricted_ = {};
   if (B_.cols() == 0 || factor_->iterative()) return;
   Stopwatch clock;
   // A product's right-hand side lives on B's rows, and its tractions read x on Tx's columns:
@@ -908,13 +907,13 @@ void FractureSystem::restrictProducts() {
   std::vector<Eigen::Index> rows;
   for (Eigen::Index i = 0; i < onFree.size(); ++i)
     if (onFree[i] != 0) rows.push_back(i);
-  restricted_ = factor_->restrictSolves(rows);
-  if (restricted_.share < 0 || !phases_) return;
+  const SolveReach reach = factor_->restrictSolves(rows);
+  if (reach.share < 0 || !phases_) return;
   std::ostringstream line;
   line << "the fractures' reach in the factor (" << rows.size()
        << " unknowns at the fractures; a product's back-substitution reads " << std::fixed
-       << std::setprecision(1) << 100 * restricted_.share << " % of the factor's values, "
-       << restricted_.supernodes << " of its " << restricted_.ofSupernodes << " supernodes)";
+       << std::setprecision(1) << 100 * reach.share << " % of the factor's values, "
+       << reach.supernodes << " of its " << reach.ofSupernodes << " supernodes)";
   phases_(line.str(), clock.lap());
 }
 

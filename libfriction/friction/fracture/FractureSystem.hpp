@@ -196,11 +196,6 @@ class FractureSystem : public SlipResponse {
   /// The unsplit dofs x of the last primal solve (for tests: equal to the unsplit linear
   /// solve when no jump is imposed).
   const Eigen::VectorXd& lastUnsplitSolution() const { return x_; }
-  /// What a dual solve's back-substitution visits of the factor: its right-hand side lives on
-  /// the fractures' band of unknowns and only its tractions are read, so the supernodal
-  /// cholmod factor solves on that band's reach (SparseFactor::restrictSolves). A negative
-  /// share where every solve is whole (other backends, a bordered factor, no fractures).
-  const SolveReach& restrictedReach() const { return restricted_; }
 
  private:
   // nodes_ and weights_ (constructor): 2D along each curve, 3D from the fault triangles.
@@ -258,8 +253,8 @@ class FractureSystem : public SlipResponse {
   bool summands_ = false;
   Ordering ordering_ = Ordering::automatic;
   PhaseReport phases_;
-  // Products' solves on the fractures' reach (restrictProducts()).
-  SolveReach restricted_;
+  // After each factorisation: the products' solves restricted to the fractures' reach in the
+  // factor (SparseFactor::restrictSolves), and the log's line saying how much of it they read.
   void restrictProducts();
 
   std::vector<ControlNode> nodes_;
