@@ -69,7 +69,7 @@ std::string QuasiDynamic::describe() const {
     << " m, absoluteStateTolerance " << absState_;
   if (maxStep_ > 0) s << ", maxStep " << maxStep_ << " s";
   if (precision_ == Precision::single)
-    s << "; S of the right-hand side stored in single precision";
+    s << "; a dense S of the right-hand side stored in single precision";
   else if (precision_ == Precision::automatic && choice_ != OperatorChoice::hierarchical)
     s << "; a dense S of the right-hand side stored in single precision where it has "
       << autoSingleFrom << " entries or more";
